@@ -1,1 +1,62 @@
-int main() { return 0; }
+// shadowlab: the explorer window when run without a subcommand, headless tools otherwise.
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "explorer/explorer.h"
+
+#include <cstring>
+#include <iostream>
+
+namespace {
+
+const char* kUsage =
+    "shadowlab - explore, compare and measure shadow-mapping techniques\n"
+    "\n"
+    "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
+    "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
+    "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
+    "  shadowlab list                                           techniques, parameters, views, scenes\n"
+    "\n"
+    "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
+
+int runExplorerCommand(int argc, char** argv) {
+  sl::Args args(argc, argv, 1,
+                {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
+                 "--shaders"});
+  sl::ExplorerOptions o;
+  o.scene = args.get("--scene", o.scene);
+  o.technique = args.get("--technique", o.technique);
+  o.overrides = args.all("--set");
+  o.camera = args.get("--camera");
+  args.getSize("--size", o.width, o.height);
+  o.maxFrames = args.getInt("--frames", 0);
+  o.screenshotOnExit = args.get("--screenshot-on-exit");
+  o.shaderDir = args.get("--shaders");
+  return sl::runExplorer(o);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc >= 2) {
+      std::string cmd = argv[1];
+      if (cmd == "render") return sl::runRenderCommand(argc, argv);
+      if (cmd == "list") return sl::runListCommand(argc, argv);
+      if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (cmd.rfind("--", 0) != 0) {
+        std::cerr << "shadowlab: unknown command '" << cmd << "'\n\n" << kUsage;
+        return 1;
+      }
+    }
+    return runExplorerCommand(argc, argv);
+  } catch (const sl::ArgError& e) {
+    std::cerr << "shadowlab: " << e.what() << "\n\n" << kUsage;
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "shadowlab: " << e.what() << "\n";
+    return 1;
+  }
+}

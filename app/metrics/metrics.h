@@ -1,6 +1,7 @@
 // One implementation of the error metrics, used by tests, `bench` and the explorer.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -24,7 +25,7 @@ ErrorMetrics compareVisibility(const float* technique, const float* reference, c
 // Mean absolute frame-to-frame change of visibility over valid pixels, across a sequence.
 double meanTemporalChange(const std::vector<std::vector<float>>& frames, const uint8_t* valid);
 
-// Error image for the `error` debug view: RGBA8, grey = agree, red = false shadow,
+// Error image for the `error` debug view: RGBA8, grey = agree, orange = false shadow,
 // blue = false light (colours chosen to be told apart by colour-blind viewers too).
 std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid,
                                 size_t count);

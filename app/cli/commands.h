@@ -1,0 +1,6 @@
+#pragma once
+
+namespace sl {
+int runRenderCommand(int argc, char** argv);
+int runListCommand(int argc, char** argv);
+}  // namespace sl

@@ -1,0 +1,56 @@
+// `shadowlab list`: every technique preset, part and parameter, and the builtin scenes — all
+// printed from the same declarations that drive the UI and --set.
+#include "cli/commands.h"
+#include "gl/shader_library.h"
+#include "render/renderer.h"
+#include "technique.h"
+
+#include <iomanip>
+#include <iostream>
+
+namespace sl {
+
+static void printParams(const std::vector<ParamDecl>& decls) {
+  for (const auto& d : decls) {
+    std::cout << "    " << std::left << std::setw(20) << d.key << std::setw(6) << paramTypeName(d.type)
+              << std::setw(24) << describeRange(d) << " default " << std::setw(9) << formatValue(d, d.defaultValue)
+              << " " << d.help << (d.unit.empty() ? "" : " [" + d.unit + "]") << "\n";
+  }
+}
+
+int runListCommand(int, char**) {
+  std::cout << "techniques (--technique ID, any key below with --set key=value):\n";
+  for (const auto& p : allPresets()) {
+    std::cout << "  " << std::left << std::setw(14) << p.id << p.help << "  [" << p.layout << " + "
+              << p.representation << " + " << p.accumulation << "]\n";
+    for (const auto& o : p.overrides) std::cout << "      preset sets " << o << "\n";
+  }
+  std::cout << "\nparameters of every technique:\n";
+  printParams(commonParams());
+  std::cout << "\nlayouts (where texels go):\n";
+  for (const auto& l : allLayouts()) {
+    std::cout << "  " << std::setw(14) << l->id() << l->help() << "\n";
+    printParams(l->params());
+  }
+  std::cout << "\nrepresentations (what a texel stores, how visibility is reconstructed):\n";
+  for (const auto& r : allRepresentations()) {
+    std::cout << "  " << std::setw(14) << r->id() << r->help() << "\n";
+    printParams(r->params());
+  }
+  std::cout << "\naccumulations (screen space over time):\n";
+  for (const auto& a : allAccumulations()) {
+    std::cout << "  " << std::setw(14) << a->id() << a->help() << "\n";
+    printParams(a->params());
+  }
+  std::cout << "\ndebug views (--view NAME):";
+  for (const auto& v : commonViewNames()) std::cout << " " << v;
+  std::cout << "\n\nscenes (--scene ID or a path to .json/.gltf/.glb):\n";
+  try {
+    for (const auto& id : builtinSceneIds(defaultAssetsDir())) std::cout << "  " << id << "\n";
+  } catch (const std::exception& e) {
+    std::cout << "  (cannot list scenes: " << e.what() << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace sl

@@ -1,0 +1,75 @@
+// Small RAII wrappers and debugging helpers over OpenGL 4.5 direct state access.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// Routes KHR_debug messages to stderr and counts errors, so tests can fail on any GL error.
+void enableGlDebugOutput(bool synchronous);
+int glDebugErrorCount();
+void resetGlDebugErrorCount();
+std::string glRendererName();
+bool isSoftwareRenderer();  // llvmpipe/softpipe: timer queries there do not measure the work
+
+// Named scope in a captured frame (RenderDoc, apitrace).
+class GlDebugGroup {
+ public:
+  explicit GlDebugGroup(const std::string& name);
+  ~GlDebugGroup();
+};
+
+class Texture2D {
+ public:
+  Texture2D() = default;
+  Texture2D(GLenum internalFormat, int width, int height, const std::string& label);
+  ~Texture2D();
+  Texture2D(Texture2D&& o) noexcept;
+  Texture2D& operator=(Texture2D&& o) noexcept;
+  Texture2D(const Texture2D&) = delete;
+  Texture2D& operator=(const Texture2D&) = delete;
+
+  GLuint id() const { return id_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLenum format() const { return format_; }
+  explicit operator bool() const { return id_ != 0; }
+  void setFilter(GLenum minFilter, GLenum magFilter);
+  void setClampToEdge();
+  // Readback, rows bottom-up as GL returns them.
+  std::vector<float> readFloats(int channels) const;
+  std::vector<unsigned char> readRgba8() const;
+
+ private:
+  GLuint id_ = 0;
+  int width_ = 0, height_ = 0;
+  GLenum format_ = 0;
+};
+
+class Framebuffer {
+ public:
+  Framebuffer() = default;
+  explicit Framebuffer(const std::string& label);
+  ~Framebuffer();
+  Framebuffer(Framebuffer&& o) noexcept;
+  Framebuffer& operator=(Framebuffer&& o) noexcept;
+  Framebuffer(const Framebuffer&) = delete;
+  Framebuffer& operator=(const Framebuffer&) = delete;
+
+  GLuint id() const { return id_; }
+  // Attaches colour targets in order (COLOR0..n) and an optional depth target; throws if
+  // the driver reports the combination incomplete.
+  void attach(const std::vector<const Texture2D*>& colors, const Texture2D* depth);
+  void bind() const;
+
+ private:
+  GLuint id_ = 0;
+  int width_ = 0, height_ = 0;
+};
+
+void label(GLenum identifier, GLuint name, const std::string& text);
+
+}  // namespace sl

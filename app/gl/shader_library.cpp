@@ -1,0 +1,230 @@
+#include "gl/shader_library.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace sl {
+
+namespace fs = std::filesystem;
+
+std::string ProgramSpec::key() const {
+  std::string k = name + "|";
+  for (const auto& s : stages) k += s.second + ";";
+  return k + "|" + prelude;
+}
+
+std::string defaultShaderDir() {
+  if (const char* env = std::getenv("SHADOWLAB_SHADERS")) return env;
+  return std::string(SHADOWLAB_SOURCE_DIR) + "/shaders";
+}
+
+std::string defaultAssetsDir() {
+  if (const char* env = std::getenv("SHADOWLAB_ASSETS")) return env;
+  return std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+}
+
+GLint Program::location(const std::string& name) const {
+  auto it = locations_.find(name);
+  if (it != locations_.end()) return it->second;
+  GLint loc = id_ ? glGetUniformLocation(id_, name.c_str()) : -1;
+  locations_[name] = loc;
+  return loc;
+}
+
+void Program::set(const std::string& n, float v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniform1f(id_, l, v);
+}
+void Program::set(const std::string& n, int v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniform1i(id_, l, v);
+}
+void Program::set(const std::string& n, const glm::vec2& v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniform2fv(id_, l, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& n, const glm::vec3& v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniform3fv(id_, l, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& n, const glm::vec4& v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniform4fv(id_, l, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& n, const glm::mat4& v) const {
+  if (GLint l = location(n); l >= 0) glProgramUniformMatrix4fv(id_, l, 1, GL_FALSE, glm::value_ptr(v));
+}
+
+ShaderLibrary::ShaderLibrary(std::string shaderDir) : dir_(std::move(shaderDir)) {}
+
+ShaderLibrary::~ShaderLibrary() {
+  for (auto& [key, entry] : programs_)
+    if (entry.second->id_) glDeleteProgram(entry.second->id_);
+}
+
+static std::string readText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error(p.string() + ": cannot read shader file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Each file gets a source-string number in #line so that compiler messages can be mapped back.
+std::string ShaderLibrary::assemble(const std::string& file, const std::string& prelude,
+                                    std::vector<std::string>& fileNames) const {
+  std::set<std::string> included;
+  std::string out = "#version 450 core\n";
+  static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
+
+  std::function<void(const std::string&, const std::string&, const std::string&)> expand =
+      [&](const std::string& name, const std::string& text, const std::string& from) {
+        int index = static_cast<int>(fileNames.size());
+        fileNames.push_back(name);
+        out += "#line 1 " + std::to_string(index) + "\n";
+        std::istringstream lines(text);
+        std::string line;
+        int lineNo = 0;
+        while (std::getline(lines, line)) {
+          ++lineNo;
+          std::smatch m;
+          if (std::regex_match(line, m, includeRe)) {
+            std::string inc = m[1];
+            if (!included.count(inc)) {
+              included.insert(inc);
+              fs::path p = fs::path(dir_) / inc;
+              if (!fs::exists(p))
+                throw std::runtime_error(name + ":" + std::to_string(lineNo) + ": included file '" + inc +
+                                         "' not found in " + dir_);
+              expand(inc, readText(p), name);
+            }
+            out += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+          } else {
+            out += line + "\n";
+          }
+        }
+      };
+  if (!prelude.empty()) expand("<technique prelude>", prelude, "");
+  included.insert(file);
+  expand(file, readText(fs::path(dir_) / file), "");
+  return out;
+}
+
+// Rewrites "0:12(5): error" (Mesa) and "0(12) : error" (NVIDIA) as "file:12: error".
+static std::string mapErrorLog(const std::string& log, const std::vector<std::string>& files) {
+  static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
+  static const std::regex nv(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+  std::istringstream in(log);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nv)) {
+      size_t idx = std::stoul(m[1]);
+      std::string file = idx < files.size() ? files[idx] : "?";
+      out += "shaders/" + file + ":" + std::string(m[2]) + ": " + std::string(m[m.size() - 1]) + "\n";
+    } else if (!line.empty()) {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+void ShaderLibrary::build(const ProgramSpec& spec, Program& program) {
+  ++builds_;
+  std::string error;
+  std::map<std::string, fs::file_time_type> files;
+  std::vector<GLuint> shaders;
+  GLuint prog = 0;
+  try {
+    for (const auto& [stage, file] : spec.stages) {
+      std::vector<std::string> names;
+      std::string src = assemble(file, spec.prelude, names);
+      for (const auto& n : names)
+        if (n[0] != '<') files[n] = fs::last_write_time(fs::path(dir_) / n);
+      GLuint sh = glCreateShader(stage);
+      shaders.push_back(sh);
+      const char* p = src.c_str();
+      glShaderSource(sh, 1, &p, nullptr);
+      glCompileShader(sh);
+      GLint ok = 0;
+      glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+      if (!ok) {
+        GLint len = 0;
+        glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
+        std::string log(static_cast<size_t>(std::max(len, 1)), '\0');
+        glGetShaderInfoLog(sh, len, nullptr, log.data());
+        error += mapErrorLog(log.c_str(), names);
+      }
+    }
+    if (error.empty()) {
+      prog = glCreateProgram();
+      for (GLuint sh : shaders) glAttachShader(prog, sh);
+      glLinkProgram(prog);
+      GLint ok = 0;
+      glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+      if (!ok) {
+        GLint len = 0;
+        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
+        std::string log(static_cast<size_t>(std::max(len, 1)), '\0');
+        glGetProgramInfoLog(prog, len, nullptr, log.data());
+        error = spec.name + ": link failed: " + std::string(log.c_str());
+      }
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  for (GLuint sh : shaders) glDeleteShader(sh);
+  // Remember the files even on failure, so that fixing the file triggers the next rebuild.
+  for (const auto& [n, t] : files) program.files_[n] = t;
+  if (!error.empty()) {
+    if (prog) glDeleteProgram(prog);
+    program.error_ = spec.name + ":\n" + error;
+    return;
+  }
+  if (program.id_) glDeleteProgram(program.id_);
+  program.id_ = prog;
+  program.error_.clear();
+  program.files_ = files;
+  program.locations_.clear();
+  glObjectLabel(GL_PROGRAM, prog, static_cast<GLsizei>(spec.name.size()), spec.name.c_str());
+}
+
+Program& ShaderLibrary::get(const ProgramSpec& spec) {
+  std::string key = spec.key();
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return *it->second.second;
+  auto program = std::make_unique<Program>();
+  build(spec, *program);
+  Program& ref = *program;
+  programs_.emplace(key, std::make_pair(spec, std::move(program)));
+  return ref;
+}
+
+int ShaderLibrary::reloadChanged() {
+  int rebuilt = 0;
+  for (auto& [key, entry] : programs_) {
+    Program& p = *entry.second;
+    bool changed = p.files_.empty();
+    for (const auto& [file, stamp] : p.files_) {
+      std::error_code ec;
+      auto now = fs::last_write_time(fs::path(dir_) / file, ec);
+      if (ec || now != stamp) changed = true;
+    }
+    if (changed) {
+      build(entry.first, p);
+      ++rebuilt;
+    }
+  }
+  return rebuilt;
+}
+
+std::vector<std::string> ShaderLibrary::errors() const {
+  std::vector<std::string> out;
+  for (const auto& [key, entry] : programs_)
+    if (!entry.second->error_.empty()) out.push_back(entry.second->error_);
+  return out;
+}
+
+}  // namespace sl

@@ -1,0 +1,77 @@
+// GLSL programs assembled from modules with `#include "path"` (resolved against the shader
+// folder, each file once, with #line so errors point at the real file and line), rebuilt when
+// any file they use changes on disk, and kept at their last good version when a rebuild fails.
+#pragma once
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace sl {
+
+struct ProgramSpec {
+  std::string name;  // for labels and messages
+  std::vector<std::pair<GLenum, std::string>> stages;  // stage, file relative to the shader folder
+  std::string prelude;  // generated text placed after #version (technique module includes, defines)
+  std::string key() const;
+};
+
+class Program {
+ public:
+  GLuint id() const { return id_; }
+  bool valid() const { return id_ != 0; }
+  const std::string& error() const { return error_; }  // last build error ("" when the last build worked)
+  void use() const { glUseProgram(id_); }
+  GLint location(const std::string& name) const;
+  // Setters ignore uniforms the program does not use, so modules may omit parameters.
+  void set(const std::string& name, float v) const;
+  void set(const std::string& name, int v) const;
+  void set(const std::string& name, const glm::vec2& v) const;
+  void set(const std::string& name, const glm::vec3& v) const;
+  void set(const std::string& name, const glm::vec4& v) const;
+  void set(const std::string& name, const glm::mat4& v) const;
+
+ private:
+  friend class ShaderLibrary;
+  GLuint id_ = 0;
+  std::string error_;
+  std::map<std::string, std::filesystem::file_time_type> files_;
+  mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+class ShaderLibrary {
+ public:
+  explicit ShaderLibrary(std::string shaderDir);
+  ~ShaderLibrary();
+  const std::string& directory() const { return dir_; }
+
+  // Builds on first use; later calls return the cached program (last good build).
+  Program& get(const ProgramSpec& spec);
+  // Rebuilds programs whose files changed; returns how many were rebuilt (successfully or not).
+  int reloadChanged();
+  // Errors of all programs whose latest build failed, each "file:line: message".
+  std::vector<std::string> errors() const;
+  int buildCount() const { return builds_; }
+
+  // Expands includes for a stage; public for tests. Throws std::runtime_error for a missing file.
+  std::string assemble(const std::string& file, const std::string& prelude,
+                       std::vector<std::string>& fileNames) const;
+
+ private:
+  void build(const ProgramSpec& spec, Program& program);
+  std::string dir_;
+  std::map<std::string, std::pair<ProgramSpec, std::unique_ptr<Program>>> programs_;
+  int builds_ = 0;
+};
+
+// Default shader folder: $SHADOWLAB_SHADERS, else <source tree>/shaders.
+std::string defaultShaderDir();
+std::string defaultAssetsDir();
+
+}  // namespace sl

@@ -1,0 +1,123 @@
+// The common debug views. Each is a pass that writes view.<name>[v]; the frame graph culls the
+// ones nobody shows.
+#include "render/gpu_scene.h"
+#include "render/renderer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+void addBox(std::vector<float>& out, const std::vector<glm::vec3>& c, const glm::vec3& color) {
+  // Corner index bits: x = 1, y = 2, z = 4; the 12 edges join corners differing in one bit.
+  for (int a = 0; a < 8; ++a)
+    for (int bit = 1; bit < 8; bit <<= 1) {
+      int b = a | bit;
+      if (b == a) continue;
+      for (int idx : {a, b}) out.insert(out.end(), {c[idx].x, c[idx].y, c[idx].z, color.r, color.g, color.b});
+    }
+}
+
+std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, float farZ) {
+  glm::mat4 inv = glm::inverse(viewProj);
+  std::vector<glm::vec3> out;
+  for (int i = 0; i < 8; ++i) {
+    glm::vec4 p = inv * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? farZ : nearZ, 1.0f);
+    out.emplace_back(glm::vec3(p) / p.w);
+  }
+  return out;
+}
+
+}  // namespace
+
+void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
+  const std::string prelude = techniquePrelude(vp.technique);
+  const std::string sm = "shadowmap" + tag;
+  const std::string visibility = vp.accumulated_ ? "visibility.final" + tag : "visibility.raw" + tag;
+  const Texture2D* visTex = vp.visibilityTexture();
+
+  auto fullscreenView = [&](const std::string& name, const std::string& frag, std::vector<std::string> reads) {
+    if (!vp.views_.count(name)) return;
+    Texture2D* target = vp.views_[name].get();
+    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, prelude, visTex] {
+             ProgramSpec spec{"view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, prelude};
+             Program& p = shaders_.get(spec);
+             if (!p.valid()) return;
+             Framebuffer fbo("view target");
+             fbo.attach({target}, nullptr);
+             fbo.bind();
+             p.use();
+             setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+             glBindTextureUnit(0, gPosition_->id());
+             glBindTextureUnit(1, gNormal_->id());
+             glBindTextureUnit(2, gAlbedo_->id());
+             glBindTextureUnit(3, visTex->id());
+             glBindTextureUnit(4, vp.shadowMap_->id());
+             glBindSampler(4, shadowSampler_);
+             p.set("u_gPosition", 0);
+             p.set("u_gNormal", 1);
+             p.set("u_gAlbedo", 2);
+             p.set("u_visibility", 3);
+             p.set("u_shadowMap", 4);
+             p.set("u_viewSize", glm::vec2(target->width(), target->height()));
+             drawFullscreen();
+             glBindSampler(4, 0);
+           }});
+    g.requestSink("view." + name + tag);
+  };
+  fullscreenView("shadowmap", "views/shadowmap.frag", {sm});
+  fullscreenView("texels", "views/texels.frag", {"gbuffer"});
+  fullscreenView("aliasing", "views/aliasing.frag", {"gbuffer"});
+  fullscreenView("visibility", "views/visibility.frag", {"gbuffer", visibility});
+
+  if (vp.views_.count("lightspace")) {
+    Texture2D* target = vp.views_["lightspace"].get();
+    g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag}, [this, &vp, target, &in] {
+             ProgramSpec sceneSpec{"view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
+             ProgramSpec lineSpec{"view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
+             Program& sp = shaders_.get(sceneSpec);
+             Program& lp = shaders_.get(lineSpec);
+             if (!sp.valid() || !lp.valid()) return;
+             Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
+             Framebuffer fbo("view.lightspace");
+             fbo.attach({target}, &depth);
+             fbo.bind();
+             const float bg[4] = {0.12f, 0.13f, 0.16f, 1.0f};
+             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, bg);
+             glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+             // An overview camera above and behind the scene sees both frusta.
+             Bounds b = scene_->boundsAt(in.time);
+             float radius = glm::length(b.extent()) * 0.5f + 1e-3f;
+             glm::vec3 center = b.center();
+             glm::vec3 eye = center + glm::normalize(glm::vec3(0.7f, 1.2f, 0.9f)) * radius * 2.2f;
+             glm::mat4 overview = glm::perspective(glm::radians(45.0f), float(target->width()) / float(target->height()),
+                                                   radius * 0.05f, radius * 6.0f) *
+                                  glm::lookAt(eye, center, glm::vec3(0, 1, 0));
+             glEnable(GL_DEPTH_TEST);
+             sp.use();
+             sp.set("u_viewProj", overview);
+             sp.set("u_lightDirection", scene_->light.direction);
+             gpu_->draw(sp, in.time, in.time);
+             std::vector<float> lines;
+             // The camera frustum, cut at the scene's extent so that it stays readable.
+             Camera cut = in.camera;
+             cut.farPlane = std::min(cut.farPlane, glm::length(in.camera.position - center) + radius);
+             glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
+             addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f), glm::vec3(1.0f, 0.85f, 0.1f));
+             addBox(lines, unprojectCube(vp.lightSpace.viewProj, -1.0f, 1.0f), glm::vec3(0.2f, 0.9f, 1.0f));
+             glNamedBufferSubData(linesVbo_, 0, static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)), lines.data());
+             lp.use();
+             lp.set("u_viewProj", overview);
+             glDisable(GL_DEPTH_TEST);
+             glBindVertexArray(linesVao_);
+             glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size() / 6));
+             glBindVertexArray(0);
+           }});
+    g.requestSink("view.lightspace" + tag);
+  }
+}
+
+}  // namespace sl

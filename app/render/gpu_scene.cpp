@@ -1,0 +1,94 @@
+#include "render/gpu_scene.h"
+
+#include "gl/gl_util.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+GpuScene::GpuScene(const Scene& s) : scene(s) {
+  for (const Mesh& m : s.meshes) {
+    GpuMesh g;
+    std::vector<float> interleaved;
+    interleaved.reserve(m.positions.size() * 8);
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+      const glm::vec3& p = m.positions[i];
+      glm::vec3 n = i < m.normals.size() ? m.normals[i] : glm::vec3(0, 1, 0);
+      glm::vec2 uv = i < m.uvs.size() ? m.uvs[i] : glm::vec2(0);
+      interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y});
+    }
+    glCreateBuffers(1, &g.vbo);
+    glNamedBufferStorage(g.vbo, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(), 0);
+    glCreateBuffers(1, &g.ibo);
+    glNamedBufferStorage(g.ibo, static_cast<GLsizeiptr>(m.indices.size() * sizeof(uint32_t)), m.indices.data(), 0);
+    glCreateVertexArrays(1, &g.vao);
+    glVertexArrayVertexBuffer(g.vao, 0, g.vbo, 0, 8 * sizeof(float));
+    glVertexArrayElementBuffer(g.vao, g.ibo);
+    const GLuint offsets[3] = {0, 3, 6}, sizes[3] = {3, 3, 2};
+    for (GLuint a = 0; a < 3; ++a) {
+      glEnableVertexArrayAttrib(g.vao, a);
+      glVertexArrayAttribFormat(g.vao, a, static_cast<GLint>(sizes[a]), GL_FLOAT, GL_FALSE, offsets[a] * sizeof(float));
+      glVertexArrayAttribBinding(g.vao, a, 0);
+    }
+    g.indexCount = static_cast<GLsizei>(m.indices.size());
+    std::string name = "mesh " + m.name;
+    label(GL_VERTEX_ARRAY, g.vao, name);
+    label(GL_BUFFER, g.vbo, name + " vertices");
+    label(GL_BUFFER, g.ibo, name + " indices");
+    meshes.push_back(g);
+  }
+  for (const Texture& t : s.textures) {
+    GLuint tex = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+    int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(std::max(t.width, t.height), 1))));
+    glTextureStorage2D(tex, levels, GL_SRGB8_ALPHA8, t.width, t.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(tex, 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+    glGenerateTextureMipmap(tex);
+    glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    label(GL_TEXTURE, tex, "texture " + t.name);
+    textures.push_back(tex);
+  }
+}
+
+GpuScene::~GpuScene() {
+  for (auto& g : meshes) {
+    glDeleteVertexArrays(1, &g.vao);
+    glDeleteBuffers(1, &g.vbo);
+    glDeleteBuffers(1, &g.ibo);
+  }
+  if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+}
+
+void GpuScene::draw(const Program& program, double time, double prevTime, GLenum cullFace) const {
+  for (const Instance& inst : scene.instances) {
+    const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
+    const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
+    const Material& mat = scene.materials[static_cast<size_t>(m.material)];
+    program.set("u_model", inst.transformAt(time));
+    program.set("u_prevModel", inst.transformAt(prevTime));
+    program.set("u_baseColor", mat.baseColor);
+    bool hasTexture = mat.baseColorTexture >= 0;
+    program.set("u_hasTexture", hasTexture ? 1.0f : 0.0f);
+    program.set("u_alphaMask", mat.alphaMask ? 1.0f : 0.0f);
+    program.set("u_alphaCutoff", mat.alphaCutoff);
+    if (hasTexture) glBindTextureUnit(7, textures[static_cast<size_t>(mat.baseColorTexture)]);
+    program.set("u_baseColorTexture", 7);
+    if (cullFace && !mat.doubleSided) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(cullFace);
+    } else {
+      glDisable(GL_CULL_FACE);
+    }
+    glBindVertexArray(g.vao);
+    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+  glDisable(GL_CULL_FACE);
+}
+
+}  // namespace sl

@@ -1,0 +1,327 @@
+#include "render/renderer.h"
+
+#include "render/gpu_scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <cmath>
+
+namespace sl {
+
+const std::vector<std::string>& commonViewNames() {
+  static const std::vector<std::string> names = {"shadowmap", "texels", "aliasing", "visibility", "lightspace"};
+  return names;
+}
+
+Viewport::Viewport(Technique t) : technique(std::move(t)), accumulation(technique.accumulation->createState()) {}
+
+void Viewport::setTechnique(Technique t) {
+  technique = std::move(t);
+  accumulation = technique.accumulation->createState();
+}
+
+const Texture2D* Viewport::viewTexture(const std::string& name) const {
+  auto it = views_.find(name);
+  return it == views_.end() ? nullptr : it->second.get();
+}
+
+std::vector<std::string> Viewport::availableViews() const {
+  std::vector<std::string> v = commonViewNames();
+  for (const auto& extra : accumulation->views()) v.push_back(extra);
+  return v;
+}
+
+Renderer::Renderer(ShaderLibrary& shaders) : shaders_(shaders) {
+  glCreateVertexArrays(1, &emptyVao_);
+  label(GL_VERTEX_ARRAY, emptyVao_, "fullscreen triangle");
+  glCreateSamplers(1, &shadowSampler_);
+  glSamplerParameteri(shadowSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(shadowSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(shadowSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(shadowSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  label(GL_SAMPLER, shadowSampler_, "shadow map: raw depth");
+  glCreateSamplers(1, &compareSampler_);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  label(GL_SAMPLER, compareSampler_, "shadow map: hardware compare");
+  glCreateBuffers(1, &linesVbo_);
+  glNamedBufferData(linesVbo_, 4096 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+  glCreateVertexArrays(1, &linesVao_);
+  glVertexArrayVertexBuffer(linesVao_, 0, linesVbo_, 0, 6 * sizeof(float));
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(linesVao_, a);
+    glVertexArrayAttribFormat(linesVao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+    glVertexArrayAttribBinding(linesVao_, a, 0);
+  }
+  label(GL_VERTEX_ARRAY, linesVao_, "overlay lines");
+  label(GL_BUFFER, linesVbo_, "overlay lines");
+}
+
+Renderer::~Renderer() {
+  glDeleteVertexArrays(1, &emptyVao_);
+  glDeleteVertexArrays(1, &linesVao_);
+  glDeleteBuffers(1, &linesVbo_);
+  glDeleteSamplers(1, &shadowSampler_);
+  glDeleteSamplers(1, &compareSampler_);
+}
+
+void Renderer::setScene(const Scene& scene) {
+  gpu_.reset();
+  gpu_ = std::make_unique<GpuScene>(scene);
+  scene_ = &scene;
+  havePrev_ = false;
+}
+
+void Renderer::ensureTargets(int w, int h) {
+  if (w == width_ && h == height_ && gPosition_) return;
+  width_ = w;
+  height_ = h;
+  gPosition_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.position");
+  gNormal_ = std::make_unique<Texture2D>(GL_RGBA16F, w, h, "gbuffer.normal");
+  gAlbedo_ = std::make_unique<Texture2D>(GL_RGBA8, w, h, "gbuffer.albedo");
+  gMotion_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.motion");
+  gDepth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "gbuffer.depth");
+  gFbo_ = Framebuffer("gbuffer");
+  gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gMotion_.get()}, gDepth_.get());
+  havePrev_ = false;  // a resize is a cut: history no longer matches the screen
+}
+
+void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
+  int size = vp.technique.params.i("shadowmap.size");
+  if (size != vp.shadowSize_ || !vp.shadowMap_) {
+    vp.shadowSize_ = size;
+    vp.shadowMap_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, size, size, "shadow map");
+    vp.shadowFbo_ = Framebuffer("shadow map");
+    vp.shadowFbo_.attach({}, vp.shadowMap_.get());
+  }
+  if (w != vp.targetsW_ || h != vp.targetsH_ || !vp.color_) {
+    vp.targetsW_ = w;
+    vp.targetsH_ = h;
+    vp.rawVisibility_ = std::make_unique<Texture2D>(GL_RG16F, w, h, "visibility.raw");
+    vp.finalVisibility_ = std::make_unique<Texture2D>(GL_RG16F, w, h, "visibility.final");
+    vp.color_ = std::make_unique<Texture2D>(GL_RGBA8, w, h, "color");
+    vp.visibilityFbo_ = Framebuffer("visibility");
+    vp.visibilityFbo_.attach({vp.rawVisibility_.get()}, nullptr);
+    vp.colorFbo_ = Framebuffer("color");
+    vp.colorFbo_.attach({vp.color_.get()}, nullptr);
+    vp.views_.clear();
+    vp.accumulation->reset();
+  }
+  for (const auto& name : vp.shownViews)
+    if (!vp.views_.count(name)) vp.views_[name] = std::make_unique<Texture2D>(GL_RGBA8, w, h, "view." + name);
+}
+
+std::string Renderer::techniquePrelude(const Technique& t) const {
+  return "#include \"" + t.layout->glslModule() + "\"\n#include \"" + t.representation->glslModule() + "\"\n";
+}
+
+void Renderer::drawFullscreen() {
+  glBindVertexArray(emptyVao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+// Every parameter reaches the shaders as a float uniform named after its key, plus the
+// layout's matrices and the light; modules declare only what they use.
+void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light) {
+  for (const auto& d : t.params.decls()) p.set(uniformName(d.key), static_cast<float>(t.params.get(d.key)));
+  p.set("u_lightView", ls.view);
+  p.set("u_lightViewProj", ls.viewProj);
+  p.set("u_lightNear", ls.nearPlane);
+  p.set("u_lightFar", ls.farPlane);
+  p.set("u_lightPerspective", ls.perspective ? 1.0f : 0.0f);
+  p.set("u_lightTexelWorld", ls.texelWorldSize);
+  p.set("u_shadowMapSize", static_cast<float>(ls.size));
+  p.set("u_lightDirection", glm::normalize(light.direction));
+  p.set("u_lightPosition", light.position);
+  p.set("u_lightIsSpot", light.type == Light::Type::Spot ? 1.0f : 0.0f);
+  p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
+}
+
+void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {
+  if (!scene_) throw std::runtime_error("renderer: no scene loaded");
+  ensureTargets(in.width, in.height);
+  view_ = cameraView(in.camera);
+  proj_ = cameraProjection(in.camera, static_cast<float>(in.width) / static_cast<float>(in.height));
+  if (!havePrev_ || in.cut) {
+    prevView_ = view_;
+    prevProj_ = proj_;
+    prevTime_ = in.time;
+    for (Viewport* vp : viewports) vp->accumulation->reset();
+  }
+  bool needMotion = false;
+  for (Viewport* vp : viewports) needMotion |= vp->technique.accumulation->id() != "none";
+
+  FrameGraph graph;
+  graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in, needMotion] {
+               ProgramSpec spec{"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}}, ""};
+               Program& p = shaders_.get(spec);
+               if (!p.valid()) return;
+               gFbo_.bind();
+               const float zero[4] = {0, 0, 0, 0};
+               for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
+               glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+               glEnable(GL_DEPTH_TEST);
+               p.use();
+               p.set("u_viewProj", proj_ * view_);
+               p.set("u_prevViewProj", prevProj_ * prevView_);
+               gpu_->draw(p, in.time, prevTime_);
+               glDisable(GL_DEPTH_TEST);
+               (void)needMotion;
+             }});
+  for (size_t i = 0; i < viewports.size(); ++i) {
+    ensureViewportTargets(*viewports[i], in.width, in.height);
+    addViewportPasses(graph, *viewports[i], i, in);
+  }
+
+  auto useGpuTimer = timePasses && !isSoftwareRenderer();
+  stats_ = FrameStats{};
+  stats_.timer = useGpuTimer ? "gpu-query" : "cpu-fence";
+  std::vector<std::pair<GLuint, GLuint>> queries;
+  auto frameStart = std::chrono::steady_clock::now();
+  graph.execute([&](const Pass& pass, const std::function<void()>& run) {
+    GlDebugGroup group(pass.name);
+    if (!timePasses) {
+      run();
+      stats_.passes.push_back({pass.name, 0.0});
+      return;
+    }
+    if (useGpuTimer) {
+      GLuint q[2];
+      glGenQueries(2, q);
+      glQueryCounter(q[0], GL_TIMESTAMP);
+      run();
+      glQueryCounter(q[1], GL_TIMESTAMP);
+      queries.emplace_back(q[0], q[1]);
+      stats_.passes.push_back({pass.name, 0.0});
+    } else {
+      // llvmpipe's timer queries do not measure the work; a fence with a steady clock does.
+      glFinish();
+      auto t0 = std::chrono::steady_clock::now();
+      run();
+      glFinish();
+      stats_.passes.push_back({pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
+    }
+  });
+  for (size_t k = 0; k < queries.size(); ++k) {
+    GLuint64 a = 0, b = 0;
+    glGetQueryObjectui64v(queries[k].first, GL_QUERY_RESULT, &a);
+    glGetQueryObjectui64v(queries[k].second, GL_QUERY_RESULT, &b);
+    stats_.passes[k].ms = static_cast<double>(b - a) * 1e-6;
+    GLuint q[2] = {queries[k].first, queries[k].second};
+    glDeleteQueries(2, q);
+  }
+  if (timePasses && !useGpuTimer) glFinish();
+  stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+  if (useGpuTimer) {
+    stats_.frameMs = 0;
+    for (const auto& p : stats_.passes) stats_.frameMs += p.ms;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  prevView_ = view_;
+  prevProj_ = proj_;
+  prevTime_ = in.time;
+  havePrev_ = true;
+  ++frameIndex_;
+}
+
+void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
+  const std::string tag = "[" + std::to_string(index) + "]";
+  Technique& t = vp.technique;
+  LayoutInput li;
+  li.scene = scene_;
+  li.time = in.time;
+  li.cameraView = view_;
+  li.cameraProj = proj_;
+  li.params = &t.params;
+  li.jitter = vp.accumulation->jitter(t.params);
+  vp.lightSpace = t.layout->compute(li);
+  const std::string prelude = techniquePrelude(t);
+  const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
+
+  g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, prelude, &in] {
+           Technique& t = vp.technique;
+           ProgramSpec spec{"shadowmap " + t.layout->id(), {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}}, prelude};
+           Program& p = shaders_.get(spec);
+           if (!p.valid()) return;
+           vp.shadowFbo_.bind();
+           glClearNamedFramebufferfi(vp.shadowFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+           glEnable(GL_DEPTH_TEST);
+           p.use();
+           setTechniqueUniforms(p, t, vp.lightSpace, scene_->light);
+           static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
+           gpu_->draw(p, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
+           glDisable(GL_DEPTH_TEST);
+         }});
+  g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude] {
+           Technique& t = vp.technique;
+           ProgramSpec spec{"visibility " + t.layout->id() + "+" + t.representation->id(), {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}}, prelude};
+           Program& p = shaders_.get(spec);
+           if (!p.valid()) return;
+           vp.visibilityFbo_.bind();
+           p.use();
+           setTechniqueUniforms(p, t, vp.lightSpace, scene_->light);
+           glBindTextureUnit(0, gPosition_->id());
+           glBindTextureUnit(1, gNormal_->id());
+           glBindTextureUnit(2, vp.shadowMap_->id());
+           glBindSampler(2, t.representation->compareSampler() ? compareSampler_ : shadowSampler_);
+           p.set("u_gPosition", 0);
+           p.set("u_gNormal", 1);
+           p.set("u_shadowMap", 2);
+           drawFullscreen();
+           glBindSampler(2, 0);
+         }});
+
+  AccumulationContext ctx;
+  ctx.viewportTag = tag;
+  ctx.rawVisibility = raw;
+  ctx.finalVisibility = fin;
+  ctx.rawVisibilityTex = vp.rawVisibility_.get();
+  ctx.finalVisibilityTex = vp.finalVisibility_.get();
+  ctx.gPosition = gPosition_.get();
+  ctx.gNormal = gNormal_.get();
+  ctx.gMotion = gMotion_.get();
+  ctx.shaders = &shaders_;
+  ctx.params = &t.params;
+  ctx.view = view_;
+  ctx.proj = proj_;
+  ctx.prevView = prevView_;
+  ctx.prevProj = prevProj_;
+  ctx.width = in.width;
+  ctx.height = in.height;
+  ctx.cameraMoved = view_ != prevView_ || proj_ != prevProj_;
+  ctx.frameIndex = frameIndex_;
+  for (const auto& name : vp.shownViews)
+    if (vp.views_.count(name)) ctx.viewTargets[name] = vp.views_[name].get();
+  vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
+  const std::string visibility = vp.accumulated_ ? fin : raw;
+  const Texture2D* visTex = vp.accumulated_ ? vp.finalVisibility_.get() : vp.rawVisibility_.get();
+
+  g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex, prelude] {
+           ProgramSpec spec{"shade", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}}, ""};
+           Program& p = shaders_.get(spec);
+           if (!p.valid()) return;
+           vp.colorFbo_.bind();
+           p.use();
+           setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+           glBindTextureUnit(0, gPosition_->id());
+           glBindTextureUnit(1, gNormal_->id());
+           glBindTextureUnit(2, gAlbedo_->id());
+           glBindTextureUnit(3, visTex->id());
+           p.set("u_gPosition", 0);
+           p.set("u_gNormal", 1);
+           p.set("u_gAlbedo", 2);
+           p.set("u_visibility", 3);
+           drawFullscreen();
+         }});
+  g.requestSink("color" + tag);
+  g.requestSink(visibility);
+  addDebugViewPasses(g, vp, tag, in);
+}
+
+}  // namespace sl

@@ -1,0 +1,122 @@
+// One renderer for the explorer window, headless `render`, tests and benchmarks.
+// Deferred: a G-buffer pass feeds every viewport's visibility pass, so techniques and the
+// ray-traced reference shade exactly the same surface points.
+#pragma once
+
+#include "gl/gl_util.h"
+#include "gl/shader_library.h"
+#include "render/frame_graph.h"
+#include "technique.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct GpuScene;
+
+// Uploads every technique parameter as float uniform u_<key> plus layout matrices and light.
+void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
+
+// Names of the debug views every technique offers; accumulations add their own.
+const std::vector<std::string>& commonViewNames();
+
+// Screen-space inputs an accumulation reads and the output it must write.
+struct AccumulationContext {
+  std::string viewportTag;        // unique per viewport, used in pass/resource names
+  std::string rawVisibility;      // resource: RG16F (visibility, confidence)
+  std::string finalVisibility;    // resource the accumulation must write: R channel = visibility
+  const Texture2D* rawVisibilityTex = nullptr;
+  Texture2D* finalVisibilityTex = nullptr;
+  const Texture2D* gPosition = nullptr;  // RGBA32F world position, w = 1 where covered
+  const Texture2D* gNormal = nullptr;    // RGBA16F world normal
+  const Texture2D* gMotion = nullptr;    // RGBA32F: previous frame NDC xyz (per-object motion), w valid
+  ShaderLibrary* shaders = nullptr;
+  const ParamSet* params = nullptr;
+  glm::mat4 view{1.0f}, proj{1.0f}, prevView{1.0f}, prevProj{1.0f};
+  int width = 0, height = 0;
+  bool cameraMoved = false;
+  int frameIndex = 0;
+  // Debug views requested on screen for this viewport, and where to draw them (RGBA8 targets).
+  std::map<std::string, Texture2D*> viewTargets;
+};
+
+// A viewport: one technique with its own state and targets, sharing the camera with the others.
+class Viewport {
+ public:
+  explicit Viewport(Technique technique);
+  Technique technique;
+  std::unique_ptr<AccumulationState> accumulation;
+  std::vector<std::string> shownViews;  // debug views to draw this frame (others are culled)
+  LightSpace lightSpace;                // of the last frame
+  // Outputs of the last frame (owned by the renderer's per-viewport targets).
+  const Texture2D* colorTexture() const { return color_.get(); }
+  // The visibility the shade pass used (after accumulation, if any): R = visibility.
+  const Texture2D* visibilityTexture() const { return accumulated_ ? finalVisibility_.get() : rawVisibility_.get(); }
+  const Texture2D* rawVisibilityTexture() const { return rawVisibility_.get(); }
+  const Texture2D* viewTexture(const std::string& name) const;
+  std::vector<std::string> availableViews() const;
+  void setTechnique(Technique t);  // keeps targets, resets history
+
+ private:
+  friend class Renderer;
+  std::unique_ptr<Texture2D> shadowMap_, rawVisibility_, finalVisibility_, color_;
+  std::map<std::string, std::unique_ptr<Texture2D>> views_;
+  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_;
+  int targetsW_ = 0, targetsH_ = 0, shadowSize_ = 0;
+  bool accumulated_ = false;
+};
+
+struct FrameInput {
+  Camera camera;
+  double time = 0.0;
+  int width = 640, height = 360;
+  bool cut = false;  // camera jumped or scene changed: accumulations forget their history
+};
+
+struct FrameStats {
+  std::vector<PassTiming> passes;  // passes that ran, in order, with their time
+  double frameMs = 0;
+  std::string timer;  // "cpu-fence" (glFinish + steady clock) or "gpu-query"
+};
+
+class Renderer {
+ public:
+  explicit Renderer(ShaderLibrary& shaders);
+  ~Renderer();
+  void setScene(const Scene& scene);  // uploads; throws std::runtime_error on GL failure
+  const Scene* scene() const { return scene_; }
+  void render(const FrameInput& in, const std::vector<Viewport*>& viewports);
+  const FrameStats& stats() const { return stats_; }
+  bool timePasses = true;  // bracket passes with a timer (cheap on GPU, glFinish on llvmpipe)
+
+  // G-buffer of the last frame, for the reference tracer and metrics.
+  const Texture2D& gPosition() const { return *gPosition_; }
+  const Texture2D& gNormal() const { return *gNormal_; }
+
+ private:
+  void ensureTargets(int w, int h);
+  void ensureViewportTargets(Viewport& vp, int w, int h);
+  void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
+  void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  std::string techniquePrelude(const Technique& t) const;
+  void drawFullscreen();
+
+  ShaderLibrary& shaders_;
+  const Scene* scene_ = nullptr;
+  std::unique_ptr<GpuScene> gpu_;
+  std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gMotion_, gDepth_;
+  Framebuffer gFbo_;
+  int width_ = 0, height_ = 0;
+  GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0, shadowSampler_ = 0, compareSampler_ = 0;
+  glm::mat4 prevView_{1.0f}, prevProj_{1.0f};
+  double prevTime_ = 0.0;
+  bool havePrev_ = false;
+  int frameIndex_ = 0;
+  FrameStats stats_;
+  glm::mat4 view_{1.0f}, proj_{1.0f};
+};
+
+}  // namespace sl

@@ -1,0 +1,25 @@
+// Shared depth bias (survey: "bias"). Modes: 0 none, 1 constant, 2 slope-scaled, 3 normal offset.
+uniform float u_bias_mode;
+uniform float u_bias_constant;
+uniform float u_bias_slope;
+uniform float u_bias_normal;
+
+// Receiver position moved along its normal (normal-offset shadows).
+vec3 biasReceiverPosition(vec3 p, vec3 n, float cosTheta) {
+  if (int(u_bias_mode + 0.5) != 3) return p;
+  float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+  return p + n * (u_bias_normal * layoutTexelWorldSize(p) * sinTheta);
+}
+
+// Depth offset subtracted from the receiver before the comparison.
+float biasDepth(vec3 p, float cosTheta) {
+  int mode = int(u_bias_mode + 0.5);
+  if (mode == 0) return 0.0;
+  float bias = u_bias_constant;
+  if (mode == 2) {
+    // A receiver tilted by theta changes depth by tan(theta) per world unit across a texel.
+    float tanTheta = clamp(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4), 0.0, 20.0);
+    bias += u_bias_slope * tanTheta * layoutTexelWorldSize(p) * layoutDepthScale();
+  }
+  return bias;
+}

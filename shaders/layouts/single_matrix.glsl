@@ -1,0 +1,32 @@
+// Layout module for layouts described by one light view and projection (uniform, focused;
+// later warped ones). Stored depth is light-view linear depth in [0,1] over [near, far].
+uniform mat4 u_lightView;
+uniform mat4 u_lightViewProj;
+uniform float u_lightNear;
+uniform float u_lightFar;
+uniform float u_lightPerspective;   // 1 for a spot light
+uniform float u_lightTexelWorld;    // world size of a texel (at unit distance when perspective)
+uniform float u_shadowMapSize;
+
+vec4 layoutClip(vec3 worldPos) { return u_lightViewProj * vec4(worldPos, 1.0); }
+
+float layoutDepth(vec3 worldPos) {
+  float z = -(u_lightView * vec4(worldPos, 1.0)).z;
+  return (z - u_lightNear) / (u_lightFar - u_lightNear);
+}
+
+// xy: shadow-map uv in [0,1]; z: depth in [0,1]; w: 0 when the point is behind a spot light.
+vec4 layoutProject(vec3 worldPos) {
+  vec4 c = layoutClip(worldPos);
+  if (c.w <= 1e-6) return vec4(0.0, 0.0, 0.0, 0.0);
+  return vec4(c.xy / c.w * 0.5 + 0.5, layoutDepth(worldPos), 1.0);
+}
+
+// World size of one texel at this point: what normal offset and slope bias are scaled by.
+float layoutTexelWorldSize(vec3 worldPos) {
+  if (u_lightPerspective > 0.5) return u_lightTexelWorld * max(-(u_lightView * vec4(worldPos, 1.0)).z, 1e-4);
+  return u_lightTexelWorld;
+}
+
+// Depth units per world unit along the light direction.
+float layoutDepthScale() { return 1.0 / (u_lightFar - u_lightNear); }

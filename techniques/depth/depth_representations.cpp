@@ -1,0 +1,53 @@
+// Depth representations: the shadow map stores one depth per texel; they differ only in how
+// visibility is reconstructed from it (survey: "shadow map as signal reconstruction").
+#include "depth/depth_representations.h"
+
+namespace sl {
+
+namespace {
+
+class DepthRepresentation : public Representation {
+ public:
+  DepthRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> params,
+                      bool compare)
+      : id_(std::move(id)), help_(std::move(help)), module_(std::move(module)), params_(std::move(params)),
+        compare_(compare) {}
+  std::string id() const override { return id_; }
+  std::string help() const override { return help_; }
+  std::string glslModule() const override { return module_; }
+  std::vector<ParamDecl> params() const override { return params_; }
+  bool compareSampler() const override { return compare_; }
+
+ private:
+  std::string id_, help_, module_;
+  std::vector<ParamDecl> params_;
+  bool compare_;
+};
+
+}  // namespace
+
+void registerDepthRepresentations(std::vector<std::unique_ptr<Representation>>& out) {
+  out.push_back(std::make_unique<DepthRepresentation>(
+      "depth-nearest", "one depth test at the nearest texel (Williams 1978): hard, blocky edges",
+      "representations/depth_nearest.glsl", std::vector<ParamDecl>{}, false));
+  out.push_back(std::make_unique<DepthRepresentation>(
+      "depth-bilinear", "hardware 2x2 depth compare with bilinear weights of the results (sampler2DShadow)",
+      "representations/depth_bilinear.glsl", std::vector<ParamDecl>{}, true));
+  out.push_back(std::make_unique<DepthRepresentation>(
+      "depth-pcf", "percentage-closer filtering over an NxN box of texels (Reeves et al. 1987)",
+      "representations/depth_pcf.glsl",
+      std::vector<ParamDecl>{{"pcf.kernel", ParamType::Int, 2, 9, 3, "texels",
+                              "box filter width N: N x N depth tests are averaged"}},
+      false));
+  out.push_back(std::make_unique<DepthRepresentation>(
+      "depth-poisson",
+      "PCF over a Poisson disk, rotated per pixel to trade banding for noise (Reeves et al. 1987)",
+      "representations/depth_poisson.glsl",
+      std::vector<ParamDecl>{
+          {"poisson.samples", ParamType::Int, 4, 32, 16, "samples", "number of Poisson-disk depth tests"},
+          {"poisson.radius", ParamType::Float, 0.5, 8, 1.5, "texels", "disk radius"},
+          {"poisson.rotate", ParamType::Bool, 0, 1, 1, "", "rotate the disk per pixel (noise instead of banding)"}},
+      false));
+}
+
+}  // namespace sl

@@ -1,0 +1,59 @@
+// Uniform and focused layouts: one light matrix each, sharing the single-matrix GLSL module.
+#include "layouts/layouts.h"
+
+#include "layouts/light_frame.h"
+
+namespace sl {
+
+namespace {
+
+class UniformLayout : public Layout {
+ public:
+  std::string id() const override { return "uniform"; }
+  std::string help() const override {
+    return "one shadow map over the whole scene's bounds (Williams 1978): simple, wasteful when the view is small";
+  }
+  std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
+  LightSpace compute(const LayoutInput& in) const override {
+    const Light& light = in.scene->light;
+    glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
+    auto corners = boxCorners(in.scene->boundsAt(in.time));
+    int size = in.params->i("shadowmap.size");
+    bool snap = in.params->b("layout.snap");
+    if (light.type == Light::Type::Spot) return fitPerspective(light, view, corners, corners, size, false, snap, in.jitter);
+    return fitOrthographic(view, corners, corners, size, snap, in.jitter);
+  }
+};
+
+// Brabec, Annen, Seidel 2002, "Practical shadow mapping": the light frustum covers only the
+// visible receivers (view frustum ∩ scene bounds); casters are included by pulling the near
+// plane toward the light up to the scene's bounds.
+class FocusedLayout : public Layout {
+ public:
+  std::string id() const override { return "focused"; }
+  std::string help() const override {
+    return "light frustum fitted to view frustum ∩ scene, casters extended toward the light (Brabec et al. 2002)";
+  }
+  std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
+  LightSpace compute(const LayoutInput& in) const override {
+    const Light& light = in.scene->light;
+    Bounds bounds = in.scene->boundsAt(in.time);
+    glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
+    auto casters = boxCorners(bounds);
+    auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
+    if (receivers.empty()) receivers = casters;  // looking away from the scene: nothing to focus on
+    int size = in.params->i("shadowmap.size");
+    bool snap = in.params->b("layout.snap");
+    if (light.type == Light::Type::Spot) return fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter);
+    return fitOrthographic(view, receivers, casters, size, snap, in.jitter);
+  }
+};
+
+}  // namespace
+
+void registerBasicLayouts(std::vector<std::unique_ptr<Layout>>& out) {
+  out.push_back(std::make_unique<UniformLayout>());
+  out.push_back(std::make_unique<FocusedLayout>());
+}
+
+}  // namespace sl

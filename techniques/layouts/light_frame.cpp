@@ -1,0 +1,198 @@
+#include "layouts/light_frame.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+glm::mat4 lightViewMatrix(const Light& light, float roll) {
+  glm::vec3 forward = glm::normalize(light.direction);
+  glm::vec3 up = std::abs(forward.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  glm::vec3 eye = light.type == Light::Type::Spot ? light.position : glm::vec3(0.0f);
+  glm::mat4 view = glm::lookAt(eye, eye + forward, up);
+  if (roll != 0.0f) view = glm::rotate(glm::mat4(1.0f), roll, glm::vec3(0, 0, 1)) * view;
+  return view;
+}
+
+std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj) {
+  glm::mat4 inv = glm::inverse(proj * view);
+  std::vector<glm::vec3> out;
+  for (int z = -1; z <= 1; z += 2)
+    for (int y = -1; y <= 1; y += 2)
+      for (int x = -1; x <= 1; x += 2) {
+        glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
+        out.emplace_back(glm::vec3(p) / p.w);
+      }
+  return out;
+}
+
+std::vector<glm::vec3> boxCorners(const Bounds& b) {
+  std::vector<glm::vec3> out;
+  for (int i = 0; i < 8; ++i)
+    out.emplace_back(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
+  return out;
+}
+
+using Polygon = std::vector<glm::vec3>;
+
+// Sutherland-Hodgman against the half-space dot(n, p) + d >= 0; new points land in `cap`.
+static Polygon clipPolygon(const Polygon& poly, const glm::vec3& n, float d, std::vector<glm::vec3>& cap) {
+  Polygon out;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const glm::vec3& a = poly[i];
+    const glm::vec3& b = poly[(i + 1) % poly.size()];
+    float da = glm::dot(n, a) + d, db = glm::dot(n, b) + d;
+    if (da >= 0) out.push_back(a);
+    if ((da >= 0) != (db >= 0)) {
+      glm::vec3 p = a + (b - a) * (da / (da - db));
+      out.push_back(p);
+      cap.push_back(p);
+    }
+  }
+  return out;
+}
+
+// Orders the cap points around their centroid so they form the convex cap polygon.
+static Polygon orderCap(std::vector<glm::vec3> pts, const glm::vec3& n) {
+  if (pts.size() < 3) return {};
+  glm::vec3 c(0.0f);
+  for (auto& p : pts) c += p;
+  c /= static_cast<float>(pts.size());
+  glm::vec3 u = glm::normalize(std::abs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0)) : glm::cross(n, glm::vec3(0, 1, 0)));
+  glm::vec3 v = glm::cross(n, u);
+  std::sort(pts.begin(), pts.end(), [&](const glm::vec3& a, const glm::vec3& b) {
+    return std::atan2(glm::dot(a - c, v), glm::dot(a - c, u)) < std::atan2(glm::dot(b - c, v), glm::dot(b - c, u));
+  });
+  return pts;
+}
+
+std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& proj, const Bounds& box) {
+  auto c = frustumCorners(view, proj);  // index = x + 2y + 4z (bits)
+  static const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  std::vector<Polygon> body;
+  for (auto& f : faces) body.push_back({c[f[0]], c[f[1]], c[f[2]], c[f[3]]});
+  const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const float offsets[6] = {-box.min.x, box.max.x, -box.min.y, box.max.y, -box.min.z, box.max.z};
+  for (int k = 0; k < 6; ++k) {
+    std::vector<Polygon> next;
+    std::vector<glm::vec3> cap;
+    for (auto& poly : body) {
+      Polygon clipped = clipPolygon(poly, normals[k], offsets[k], cap);
+      if (clipped.size() >= 3) next.push_back(std::move(clipped));
+    }
+    Polygon capPoly = orderCap(cap, normals[k]);
+    if (!capPoly.empty()) next.push_back(std::move(capPoly));
+    body = std::move(next);
+    if (body.empty()) return {};
+  }
+  std::vector<glm::vec3> pts;
+  for (auto& poly : body) pts.insert(pts.end(), poly.begin(), poly.end());
+  return pts;
+}
+
+float quantizeTexelSize(float texel) {
+  float steps = std::ceil(std::log2(texel) * 8.0f);
+  return std::exp2(steps / 8.0f);
+}
+
+LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                           const std::vector<glm::vec3>& casters, int size, bool snap,
+                           const LayoutJitter& jitter) {
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  float zNear = 1e30f, zFar = -1e30f;  // as positive distances along the light direction
+  for (const auto& p : receivers) {
+    glm::vec3 q = glm::vec3(lightView * glm::vec4(p, 1.0f));
+    lo = glm::min(lo, glm::vec2(q));
+    hi = glm::max(hi, glm::vec2(q));
+    zNear = std::min(zNear, -q.z);
+    zFar = std::max(zFar, -q.z);
+  }
+  for (const auto& p : casters) zNear = std::min(zNear, -(lightView * glm::vec4(p, 1.0f)).z);
+  LightSpace ls;
+  ls.size = size;
+  ls.perspective = false;
+  glm::vec2 extent = glm::max(hi - lo, glm::vec2(1e-4f));
+  // Keep texels square so that confidence and texel-grid views mean the same in x and y.
+  float texel = std::max(extent.x, extent.y) / static_cast<float>(size);
+  if (snap) {
+    texel = quantizeTexelSize(texel * (1.0f + 2.0f / size));
+    lo = glm::floor(lo / texel) * texel;
+  } else {
+    lo = (lo + hi) * 0.5f - glm::vec2(texel * size * 0.5f);
+  }
+  lo += jitter.offsetTexels * texel;
+  ls.windowMin = lo;
+  ls.windowMax = lo + glm::vec2(texel * size);
+  float margin = std::max(1e-3f, (zFar - zNear) * 1e-3f);
+  ls.nearPlane = zNear - margin;
+  ls.farPlane = zFar + margin;
+  ls.texelWorldSize = texel;
+  ls.view = lightView;
+  ls.proj = glm::ortho(ls.windowMin.x, ls.windowMax.x, ls.windowMin.y, ls.windowMax.y, ls.nearPlane, ls.farPlane);
+  ls.viewProj = ls.proj * ls.view;
+  return ls;
+}
+
+LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
+                          const LayoutJitter& jitter) {
+  float zNear = 1e30f, zFar = 0.0f;
+  for (const auto* set : {&receivers, &casters})
+    for (const auto& p : *set) {
+      float z = -(lightView * glm::vec4(p, 1.0f)).z;
+      zFar = std::max(zFar, z);
+      zNear = std::min(zNear, z);
+    }
+  float depthSpan = std::max(zFar, 1e-3f);
+  zNear = std::max(zNear, depthSpan * 1e-3f);
+  zFar = std::max(zFar * 1.001f, zNear * 1.01f);
+  float halfTan = std::tan(glm::radians(light.fovDeg) * 0.5f);
+  glm::mat4 proj = glm::perspective(glm::radians(light.fovDeg), 1.0f, zNear, zFar);
+  glm::vec2 lo(-1.0f), hi(1.0f);
+  if (crop) {
+    glm::vec2 clo(1e30f), chi(-1e30f);
+    for (const auto& p : receivers) {
+      glm::vec4 c = proj * lightView * glm::vec4(p, 1.0f);
+      if (c.w <= 1e-6f) { clo = glm::vec2(-1.0f); chi = glm::vec2(1.0f); break; }
+      glm::vec2 ndc = glm::vec2(c) / c.w;
+      clo = glm::min(clo, ndc);
+      chi = glm::max(chi, ndc);
+    }
+    if (clo.x <= chi.x) {
+      lo = glm::max(clo, glm::vec2(-1.0f));
+      hi = glm::min(chi, glm::vec2(1.0f));
+    }
+  }
+  float extent = std::max(std::max(hi.x - lo.x, hi.y - lo.y), 1e-4f);
+  float texel = extent / size;  // in NDC units
+  if (snap) {
+    texel = quantizeTexelSize(texel);
+    lo = glm::floor(lo / texel) * texel;
+  } else {
+    lo = (lo + hi) * 0.5f - glm::vec2(texel * size * 0.5f);
+  }
+  lo += jitter.offsetTexels * texel;
+  float span = texel * size;
+  // Crop: map NDC [lo, lo+span] to [-1, 1].
+  glm::mat4 cropM(1.0f);
+  cropM[0][0] = 2.0f / span;
+  cropM[1][1] = 2.0f / span;
+  cropM[3][0] = -1.0f - 2.0f * lo.x / span;
+  cropM[3][1] = -1.0f - 2.0f * lo.y / span;
+  LightSpace ls;
+  ls.size = size;
+  ls.perspective = true;
+  ls.nearPlane = zNear;
+  ls.farPlane = zFar;
+  ls.windowMin = lo;
+  ls.windowMax = lo + glm::vec2(span);
+  ls.texelWorldSize = halfTan * texel;  // world size per texel at unit distance
+  ls.view = lightView;
+  ls.proj = cropM * proj;
+  ls.viewProj = ls.proj * ls.view;
+  return ls;
+}
+
+}  // namespace sl

@@ -1,0 +1,39 @@
+// Geometry shared by the layouts: the light's view basis and the convex body of points a
+// focused shadow map must cover (Brabec et al. 2002: view frustum clipped to the scene).
+#pragma once
+
+#include "technique.h"
+
+#include <vector>
+
+namespace sl {
+
+// Light view matrix: fixed basis for a directional light (independent of the camera so that
+// snapping can keep texels still), apex at the light for a spot; rotated by `roll` about the
+// light's forward axis (pixel-correct jitter).
+glm::mat4 lightViewMatrix(const Light& light, float roll);
+
+// The 8 world-space corners of the camera frustum.
+std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj);
+
+// Vertices of (camera frustum ∩ box); empty when they do not intersect.
+std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& proj, const Bounds& box);
+
+std::vector<glm::vec3> boxCorners(const Bounds& b);
+
+// Orthographic fit: window and depth range in light view space, snapping, jitter, matrices.
+// `receivers` bound the window; `casters` extend the near plane toward the light.
+LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                           const std::vector<glm::vec3>& casters, int size, bool snap,
+                           const LayoutJitter& jitter);
+
+// Perspective (spot) fit: the cone, optionally cropped to the receivers' projection.
+LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
+                          const LayoutJitter& jitter);
+
+// Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
+// while the fitted extent changes a little, and the window origin on whole texels.
+float quantizeTexelSize(float texel);
+
+}  // namespace sl

@@ -1,0 +1,116 @@
+// The one list of technique families. A new paper adds its register call here and nothing else.
+#include "technique.h"
+
+#include "depth/depth_representations.h"
+#include "layouts/layouts.h"
+
+namespace sl {
+
+void registerAccumulations(std::vector<std::unique_ptr<Accumulation>>& out);
+
+const std::vector<ParamDecl>& commonParams() {
+  static const std::vector<ParamDecl> decls = {
+      {"shadowmap.size", ParamType::Int, 64, 8192, 2048, "texels", "shadow-map texels per side", {}, true},
+      {"shadowmap.cull", ParamType::Enum, 0, 0, 0, "",
+       "faces stored in the shadow map: front (standard), back (second-depth shadow mapping, Wang & Molnar "
+       "1994), or both",
+       {"front", "back", "both"}},
+      {"bias.mode", ParamType::Enum, 0, 0, 2, "",
+       "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
+       "(+constant)",
+       {"none", "constant", "slope", "normal-offset"}},
+      {"bias.constant", ParamType::Float, 0, 0.05, 0.0005, "depth [0,1]", "constant depth offset", {}, true},
+      {"bias.slope", ParamType::Float, 0, 8, 1.0, "texels",
+       "slope-scaled bias: depth change across this many texels of a tilted receiver"},
+      {"bias.normal", ParamType::Float, 0, 8, 1.0, "texels",
+       "normal offset: receiver moved along its normal by this many texel sizes (times sin of the light angle)"},
+      {"layout.snap", ParamType::Bool, 0, 1, 1, "",
+       "move the light frustum by whole texels and keep the texel size on a fixed ladder (less flicker)"},
+  };
+  return decls;
+}
+
+const std::vector<std::unique_ptr<Layout>>& allLayouts() {
+  static const auto list = [] {
+    std::vector<std::unique_ptr<Layout>> v;
+    registerBasicLayouts(v);
+    return v;
+  }();
+  return list;
+}
+
+const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
+  static const auto list = [] {
+    std::vector<std::unique_ptr<Representation>> v;
+    registerDepthRepresentations(v);
+    return v;
+  }();
+  return list;
+}
+
+const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
+  static const auto list = [] {
+    std::vector<std::unique_ptr<Accumulation>> v;
+    registerAccumulations(v);
+    return v;
+  }();
+  return list;
+}
+
+const std::vector<Preset>& allPresets() {
+  static const std::vector<Preset> presets = {
+      {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
+      {"uniform", "one shadow map over the whole scene, nearest depth test", "uniform", "depth-nearest", "none", {}},
+      {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
+      {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
+      {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
+  };
+  return presets;
+}
+
+template <typename T>
+static const T* findById(const std::vector<std::unique_ptr<T>>& list, const std::string& id) {
+  for (const auto& p : list)
+    if (p->id() == id) return p.get();
+  return nullptr;
+}
+
+const Layout* findLayout(const std::string& id) { return findById(allLayouts(), id); }
+const Representation* findRepresentation(const std::string& id) { return findById(allRepresentations(), id); }
+const Accumulation* findAccumulation(const std::string& id) { return findById(allAccumulations(), id); }
+const Preset* findPreset(const std::string& id) {
+  for (const auto& p : allPresets())
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+std::string Technique::label() const {
+  std::string s = presetId + " (" + layout->id() + " + " + representation->id();
+  if (accumulation->id() != "none") s += " + " + accumulation->id();
+  return s + ")";
+}
+
+Technique makeTechnique(const std::string& presetId, const std::vector<std::string>& overrides) {
+  const Preset* preset = findPreset(presetId);
+  if (!preset) {
+    std::string ids;
+    for (const auto& p : allPresets()) ids += (ids.empty() ? "" : ", ") + p.id;
+    throw ParamError("unknown technique '" + presetId + "' (available: " + ids + ")");
+  }
+  Technique t;
+  t.presetId = presetId;
+  t.layout = findLayout(preset->layout);
+  t.representation = findRepresentation(preset->representation);
+  t.accumulation = findAccumulation(preset->accumulation);
+  if (!t.layout || !t.representation || !t.accumulation)
+    throw ParamError("preset '" + presetId + "' names a part that is not registered");
+  std::vector<ParamDecl> decls = commonParams();
+  for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
+    decls.insert(decls.end(), part.begin(), part.end());
+  t.params = ParamSet(std::move(decls));
+  for (const auto& o : preset->overrides) t.params.setAssignment(o);
+  for (const auto& o : overrides) t.params.setAssignment(o);
+  return t;
+}
+
+}  // namespace sl
