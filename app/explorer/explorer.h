@@ -1,0 +1,31 @@
+// The interactive window: one or more viewports comparing shadow techniques on the same scene
+// and camera, with a parameter panel generated from each technique's declarations.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct ExplorerOptions {
+  std::string scene = "basic";          // builtin id or path to a .json/.gltf/.glb
+  std::string technique = "standard";   // preset id for the first viewport
+  std::vector<std::string> overrides;   // "key=value" applied to the first viewport's technique
+  std::string camera;                   // named scene camera to start from ("" = the first one)
+  int width = 1280, height = 720;       // window size in screen coordinates
+  int maxFrames = 0;                    // 0 = until the window is closed
+  std::string screenshotOnExit;         // PNG of the whole window written before exiting, or ""
+  std::string shaderDir, assetsDir;     // "" = defaultShaderDir() / defaultAssetsDir()
+  // Start-up state of the window, so a comparison can be scripted (slides, smoke tests).
+  std::vector<std::string> compareTechniques;  // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
+  std::vector<std::string> debugViews;         // debug views shown as thumbnails from the start
+  bool magnifier = false;                      // lens on without holding M
+};
+
+// Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the
+// process exit code: 0 after a clean exit, 1 for bad options (unknown scene, preset, camera or
+// override) or a failed last frame in --frames mode, 2 when there is no display to open a
+// window on (the message then says how to render headless instead).
+int runExplorer(const ExplorerOptions& options);
+
+}  // namespace sl

@@ -1,0 +1,333 @@
+// Window, context and frame loop of the explorer. Panels, the viewport area, the camera and the
+// magnifier live in their own files; this one wires them to GLFW, ImGui and the renderer.
+#include "explorer/explorer.h"
+
+#include "explorer/explorer_state.h"
+#include "explorer/magnifier.h"
+#include "explorer/screenshot.h"
+#include "explorer/side_panel.h"
+#include "explorer/viewport_area.h"
+#include "gl/gl_util.h"
+#include "gl/shader_library.h"
+#include "render/renderer.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+namespace sl {
+
+namespace {
+
+constexpr double kShaderPollSeconds = 0.25;  // hot reload shows an edit within half a second
+constexpr float kMaxFrameSeconds = 0.1f;     // a stall (breakpoint, resize) must not fling the camera
+constexpr float kFontPixels = 16.0f;         // readable on a projector at 1280x720
+
+const char* const kNoDisplayMessage =
+    "shadowlab: no display found (DISPLAY unset or X server unreachable); run headless:\n"
+    "  shadowlab render --scene basic --technique standard --out out.png\n";
+
+std::string g_lastGlfwError;
+void rememberGlfwError(int code, const char* description) {
+  g_lastGlfwError = description ? description : ("GLFW error " + std::to_string(code));
+}
+
+bool displayConfigured() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
+}
+
+GLFWwindow* createWindow(const ExplorerOptions& options) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);  // the renderer writes display-ready colours
+  return glfwCreateWindow(std::max(320, options.width), std::max(240, options.height),
+                          "shadowlab explorer", nullptr, nullptr);
+}
+
+void setUpImGui(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the layout is fixed; do not litter the working directory
+  const char* fontCandidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+                                  "/usr/share/fonts/TTF/DejaVuSans.ttf"};
+  bool fontLoaded = false;
+  for (const char* path : fontCandidates) {
+    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, kFontPixels)) {
+      fontLoaded = true;
+      break;
+    }
+  }
+  if (!fontLoaded) io.Fonts->AddFontDefault();
+
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.FrameRounding = 3.0f;
+  style.GrabRounding = 3.0f;
+  style.ItemSpacing = ImVec2(8, 5);
+  style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.62f, 0.95f, 1.0f);  // timing bars
+
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450");
+}
+
+void shutDownImGui() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool keyDown(GLFWwindow* window, int key) { return glfwGetKey(window, key) == GLFW_PRESS; }
+
+// Fly controls apply while the mouse is over a viewport image (or a look drag that started
+// there is still held), never while a text field has the keyboard.
+FlyInput readFlyInput(GLFWwindow* window, ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool overViewport = state.hoveredViewport >= 0;
+  if (overViewport && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) state.looking = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.looking = false;
+
+  FlyInput input;
+  if ((overViewport || state.looking) && !io.WantTextInput) {
+    auto axis = [window](int negative, int positive) {
+      return float(keyDown(window, positive)) - float(keyDown(window, negative));
+    };
+    input.move = glm::vec3(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E),
+                           axis(GLFW_KEY_S, GLFW_KEY_W));
+    input.fast = keyDown(window, GLFW_KEY_LEFT_SHIFT) || keyDown(window, GLFW_KEY_RIGHT_SHIFT);
+  }
+  if (state.looking) input.lookPixels = glm::vec2(io.MouseDelta.x, io.MouseDelta.y);
+  if (overViewport) input.scrollSteps = io.MouseWheel;
+  return input;
+}
+
+void advanceCameraAndTime(GLFWwindow* window, ExplorerState& state, float dt) {
+  const FlyInput input = readFlyInput(window, state);
+  // Touching the controls during path playback hands the camera back to the user.
+  if (state.playingPath && (input.move != glm::vec3(0.0f) || input.lookPixels != glm::vec2(0.0f)))
+    state.playingPath = nullptr;
+  if (state.playingPath) {
+    if (!state.paused) state.pathTime += dt;
+    const CameraPath& path = *state.playingPath;
+    state.camera.setPose(path.sample(float(state.pathTime), state.scene->cameras.front()));
+    if (state.pathTime >= path.duration()) state.playingPath = nullptr;
+  } else {
+    state.camera.update(input, dt);
+  }
+  if (!state.paused) state.sceneTime += dt;
+}
+
+// The renderer leaves its own framebuffer, masks and tests bound; the ImGui backend restores
+// only what it changes itself, so give it the default framebuffer in a neutral state.
+void prepareDefaultFramebuffer(int width, int height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glClearColor(0.07f, 0.07f, 0.08f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+void renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLayout& layout) {
+  FrameInput in;
+  in.camera = state.camera.camera();
+  in.time = state.sceneTime;
+  in.width = layout.renderWidth;
+  in.height = layout.renderHeight;
+  in.cut = state.cutPending;
+  try {
+    renderer.render(in, shownViewports(state));
+    state.cutPending = false;
+    state.renderError.clear();
+  } catch (const std::exception& e) {
+    // Keep the window alive: the panel shows the message and the next frame tries again.
+    if (state.renderError != e.what()) std::cerr << "shadowlab: render failed: " << e.what() << "\n";
+    state.renderError = e.what();
+  }
+}
+
+// Owns everything holding GL objects, so it all goes before the context does.
+int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> techniques) {
+  ShaderLibrary shaders(state.shaderDir);
+  Renderer renderer(shaders);
+  renderer.setScene(*state.scene);
+  state.slots.resize(kMaxViewports);
+  for (size_t i = 0; i < techniques.size() && i < state.slots.size(); ++i)
+    state.slots[i].viewport = std::make_unique<Viewport>(std::move(techniques[i]));
+  state.viewportCount = techniques.size() <= 1 ? 1 : techniques.size() == 2 ? 2 : 4;
+  ensureViewportSlots(state);
+  const std::vector<std::string> offered = availableViewNames(state);
+  for (const std::string& view : state.options.debugViews) {
+    if (std::find(offered.begin(), offered.end(), view) == offered.end()) {
+      std::cerr << "shadowlab: no debug view '" << view << "'; these techniques offer:";
+      for (const std::string& name : offered) std::cerr << " " << name;
+      std::cerr << "\n";
+      return 1;
+    }
+    state.selectedViews.insert(view);
+  }
+  state.magnifierPinned = state.options.magnifier;
+  state.cutPending = true;
+
+  const int maxFrames = state.options.maxFrames;
+  glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
+  double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
+  for (int frame = 0;; ++frame) {
+    glfwPollEvents();
+    // A close request still draws one more frame, so --screenshot-on-exit has something to read.
+    const bool lastFrame = glfwWindowShouldClose(window) || (maxFrames > 0 && frame + 1 >= maxFrames);
+    int fbWidth = 0, fbHeight = 0;
+    glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+    if ((fbWidth == 0 || fbHeight == 0) && !lastFrame) {  // minimized
+      glfwWaitEventsTimeout(0.1);
+      continue;
+    }
+    const double now = glfwGetTime();
+    const float dt = std::min(float(now - lastTime), kMaxFrameSeconds);
+    lastTime = now;
+    state.smoothedFrameMs += (dt * 1000.0f - state.smoothedFrameMs) * 0.1f;
+    if (now - lastShaderPoll >= kShaderPollSeconds) {
+      shaders.reloadChanged();
+      lastShaderPoll = now;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    drawSidePanel(state, renderer, shaders);
+    ensureViewportSlots(state);
+    applySelectedViews(state);
+
+    const ImGuiIO& io = ImGui::GetIO();
+    const float panelWidth = std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
+    const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
+    const MainAreaLayout layout =
+        layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
+                       state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+    advanceCameraAndTime(window, state, dt);
+    renderViewports(renderer, state, layout);
+
+    // Drawn after rendering so the images reference this frame's textures (a resize may have
+    // replaced them).
+    const MainAreaResult area = drawMainArea(layout, state);
+    state.hoveredViewport = area.hoveredViewport;
+    const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
+    if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
+      drawMagnifier(area.hoveredImage, io.MousePos);
+
+    ImGui::Render();
+    prepareDefaultFramebuffer(fbWidth, fbHeight);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    if (state.screenshotRequested) {
+      state.screenshotRequested = false;
+      const std::string path = timestampedScreenshotName();
+      const std::string error = writeWindowPng(fbWidth, fbHeight, path);
+      state.statusLine = error.empty() ? "saved " + path : error;
+    }
+    if (lastFrame && !state.options.screenshotOnExit.empty()) {
+      const std::string error = writeWindowPng(fbWidth, fbHeight, state.options.screenshotOnExit);
+      if (!error.empty()) {
+        std::cerr << "shadowlab: " << error << "\n";
+        return 1;
+      }
+    }
+    glfwSwapBuffers(window);
+    if (lastFrame) break;
+  }
+  // In --frames mode a failing renderer must not look like success to scripts and tests.
+  if (maxFrames > 0 && !state.renderError.empty()) return 1;
+  return 0;
+}
+
+// Everything that can be checked without a window, so a typo fails fast with a clear message.
+bool prepareState(const ExplorerOptions& options, ExplorerState& state, std::vector<Technique>& techniques) {
+  state.options = options;
+  state.shaderDir = options.shaderDir.empty() ? defaultShaderDir() : options.shaderDir;
+  state.assetsDir = options.assetsDir.empty() ? defaultAssetsDir() : options.assetsDir;
+  try {
+    state.sceneIds = builtinSceneIds(state.assetsDir);
+    state.scene = std::make_unique<Scene>(loadScene(options.scene, state.assetsDir));
+    state.sceneLabel = options.scene;
+    techniques.push_back(makeTechnique(options.technique, options.overrides));
+    for (size_t i = 0; i < options.compareTechniques.size() && techniques.size() < size_t(kMaxViewports); ++i)
+      techniques.push_back(makeTechnique(options.compareTechniques[i]));
+  } catch (const std::exception& e) {
+    std::cerr << "shadowlab: " << e.what() << "\n";
+    return false;
+  }
+  const Camera* start = &state.scene->cameras.front();
+  if (!options.camera.empty()) {
+    start = state.scene->findCamera(options.camera);
+    if (!start) {
+      std::cerr << "shadowlab: scene '" << state.scene->name << "' has no camera '" << options.camera
+                << "'; it has:";
+      for (const Camera& c : state.scene->cameras) std::cerr << " " << c.name;
+      std::cerr << "\n";
+      return false;
+    }
+  }
+  jumpToCamera(state, *start);
+  return true;
+}
+
+}  // namespace
+
+int runExplorer(const ExplorerOptions& options) {
+  if (!displayConfigured()) {
+    std::cerr << kNoDisplayMessage;
+    return 2;
+  }
+  ExplorerState state;
+  std::vector<Technique> techniques;  // one per viewport shown at start
+  if (!prepareState(options, state, techniques)) return 1;
+
+  glfwSetErrorCallback(rememberGlfwError);
+  if (!glfwInit()) {
+    std::cerr << kNoDisplayMessage << "  (GLFW: " << g_lastGlfwError << ")\n";
+    return 2;
+  }
+  GLFWwindow* window = createWindow(options);
+  if (!window) {
+    std::cerr << kNoDisplayMessage << "  (GLFW could not open an OpenGL 4.5 core window: "
+              << g_lastGlfwError << ")\n";
+    glfwTerminate();
+    return 2;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSetWindowTitle(window, ("shadowlab explorer - " + state.sceneLabel).c_str());
+  enableGlDebugOutput(false);
+  setUpImGui(window);
+
+  int exitCode = 0;
+  try {
+    exitCode = runFrames(window, state, std::move(techniques));
+  } catch (const std::exception& e) {
+    std::cerr << "shadowlab: " << e.what() << "\n";
+    exitCode = 1;
+  }
+  state.slots.clear();  // viewports own GL textures: free them while the context still exists
+  shutDownImGui();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exitCode;
+}
+
+}  // namespace sl

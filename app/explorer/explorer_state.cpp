@@ -1,0 +1,112 @@
+#include "explorer/explorer_state.h"
+
+#include <algorithm>
+
+namespace sl {
+
+float sceneDiagonal(const Scene& scene) {
+  Bounds b = scene.boundsAt(0.0);
+  return b.empty() ? 10.0f : glm::length(b.extent());
+}
+
+bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& idOrPath) {
+  std::unique_ptr<Scene> loaded;
+  try {
+    loaded = std::make_unique<Scene>(loadScene(idOrPath, state.assetsDir));
+    renderer.setScene(*loaded);
+  } catch (const std::exception& e) {
+    // The renderer may have been handed the new scene before failing; give it back the old one.
+    if (state.scene && renderer.scene() != state.scene.get()) {
+      try {
+        renderer.setScene(*state.scene);
+      } catch (const std::exception&) {
+      }
+    }
+    state.sceneError = e.what();
+    return false;
+  }
+  state.scene = std::move(loaded);
+  state.sceneLabel = idOrPath;
+  state.sceneError.clear();
+  state.sceneTime = 0.0;
+  jumpToCamera(state, state.scene->cameras.front());
+  return true;
+}
+
+void jumpToCamera(ExplorerState& state, const Camera& camera) {
+  state.camera.jumpTo(camera, state.scene ? sceneDiagonal(*state.scene) : 10.0f);
+  state.cameraName = camera.name;
+  state.playingPath = nullptr;
+  state.cutPending = true;
+}
+
+void startCameraPath(ExplorerState& state, const CameraPath& path) {
+  state.playingPath = &path;
+  state.pathTime = 0.0;
+  state.cameraName = path.name;
+  state.cutPending = true;  // jumping to the first key is a cut; following the path is not
+}
+
+void setViewportPreset(ExplorerState& state, int slot, const std::string& presetId) {
+  ViewportSlot& s = state.slots.at(size_t(slot));
+  try {
+    Technique t = makeTechnique(presetId);
+    if (s.viewport)
+      s.viewport->setTechnique(std::move(t));
+    else
+      s.viewport = std::make_unique<Viewport>(std::move(t));
+    s.error.clear();
+    s.enlargedView.clear();
+  } catch (const std::exception& e) {
+    s.error = e.what();
+  }
+}
+
+void ensureViewportSlots(ExplorerState& state) {
+  state.slots.resize(kMaxViewports);
+  for (int i = 0; i < state.viewportCount; ++i) {
+    if (state.slots[size_t(i)].viewport) continue;
+    std::set<std::string> used;
+    for (const ViewportSlot& s : state.slots)
+      if (s.viewport) used.insert(s.viewport->technique.presetId);
+    std::string preset = state.options.technique;
+    for (const Preset& p : allPresets()) {
+      if (!used.count(p.id)) {
+        preset = p.id;
+        break;
+      }
+    }
+    setViewportPreset(state, i, preset);
+  }
+}
+
+std::vector<Viewport*> shownViewports(const ExplorerState& state) {
+  std::vector<Viewport*> result;
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i)
+    if (state.slots[size_t(i)].viewport) result.push_back(state.slots[size_t(i)].viewport.get());
+  return result;
+}
+
+std::vector<std::string> availableViewNames(const ExplorerState& state) {
+  std::vector<std::string> names;
+  auto addUnique = [&names](const std::string& n) {
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  };
+  for (Viewport* vp : shownViewports(state))
+    for (const std::string& n : vp->availableViews()) addUnique(n);
+  return names;
+}
+
+void applySelectedViews(ExplorerState& state) {
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
+    ViewportSlot& slot = state.slots[size_t(i)];
+    if (!slot.viewport) continue;
+    slot.viewport->shownViews.clear();
+    for (const std::string& name : slot.viewport->availableViews())
+      if (state.selectedViews.count(name)) slot.viewport->shownViews.push_back(name);
+    if (!slot.enlargedView.empty() && !state.selectedViews.count(slot.enlargedView))
+      slot.enlargedView.clear();
+  }
+}
+
+}  // namespace sl

@@ -1,0 +1,79 @@
+// Everything the explorer window remembers between frames, and the actions the panels take
+// on it. Kept free of GLFW so panels and the app loop share one vocabulary.
+#pragma once
+
+#include "explorer/explorer.h"
+#include "explorer/fly_camera.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+constexpr int kMaxViewports = 4;
+
+struct ViewportSlot {
+  std::unique_ptr<Viewport> viewport;
+  std::string enlargedView;  // debug view shown in the big image instead of the colour ("" = colour)
+  std::string error;         // last rejected parameter value or preset
+};
+
+struct ExplorerState {
+  ExplorerOptions options;
+  std::string shaderDir, assetsDir;
+
+  // Scene. The renderer keeps a pointer to it, so it is only ever replaced, never moved.
+  std::vector<std::string> sceneIds;
+  std::unique_ptr<Scene> scene;
+  std::string sceneLabel;      // builtin id or the path it was loaded from
+  std::string scenePathInput;  // text field for loading a file
+  std::string sceneError;      // last failed load; the previous scene stays
+  double sceneTime = 0.0;
+  bool paused = false;
+
+  // Camera. `cutPending` tells the renderer that history from earlier frames is invalid.
+  FlyCamera camera;
+  std::string cameraName;  // scene camera last jumped to (for the panel)
+  const CameraPath* playingPath = nullptr;
+  double pathTime = 0.0;
+  bool cutPending = true;
+  bool looking = false;  // right mouse button went down over a viewport and is still held
+
+  // Viewports: slots beyond viewportCount keep their technique for when they come back.
+  std::vector<ViewportSlot> slots;
+  int viewportCount = 1;
+  std::set<std::string> selectedViews;  // debug views drawn as thumbnails under each viewport
+
+  // Tools and status.
+  bool magnifierPinned = false;  // checkbox; holding M shows it too
+  bool screenshotRequested = false;
+  std::string statusLine;   // last screenshot written, etc.
+  std::string renderError;  // exception from the last frame, shown until a frame works again
+  float smoothedFrameMs = 0.0f;
+  int hoveredViewport = -1;  // viewport image under the mouse in the previous frame
+};
+
+// Loads a scene (id or path) and hands it to the renderer; on failure the current scene stays
+// and the message goes to state.sceneError. Returns true on success.
+bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& idOrPath);
+// Camera cut to a named scene camera (stops path playback).
+void jumpToCamera(ExplorerState& state, const Camera& camera);
+void startCameraPath(ExplorerState& state, const CameraPath& path);
+// Replaces a viewport's technique by a preset with its default overrides.
+void setViewportPreset(ExplorerState& state, int slot, const std::string& presetId);
+// Makes sure the first viewportCount slots exist; new ones get presets not shown yet, so
+// going from 1 to 2 viewports immediately compares two different techniques.
+void ensureViewportSlots(ExplorerState& state);
+// Union of the debug views the shown viewports offer, in a stable order (common ones first).
+std::vector<std::string> availableViewNames(const ExplorerState& state);
+// Copies the selection into each viewport's shownViews (only the views it has), and drops an
+// enlarged view that is no longer selected.
+void applySelectedViews(ExplorerState& state);
+std::vector<Viewport*> shownViewports(const ExplorerState& state);
+float sceneDiagonal(const Scene& scene);
+
+}  // namespace sl

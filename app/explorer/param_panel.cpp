@@ -1,0 +1,101 @@
+#include "explorer/param_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+std::string tooltipText(const ParamDecl& decl) {
+  std::string text = decl.help.empty() ? decl.key : decl.help;
+  text += "\n\nkey:   " + decl.key;
+  if (!decl.unit.empty()) text += "\nunit:  " + decl.unit;
+  text += "\nrange: " + describeRange(decl);
+  text += "\ndefault: " + formatValue(decl, decl.defaultValue);
+  return text;
+}
+
+// "%.4g" keeps both 0.0005 and 4096 readable without a per-parameter format.
+constexpr const char* kFloatFormat = "%.4g";
+
+bool drawWidget(const ParamDecl& decl, ParamSet& params, double& newValue) {
+  const double current = params.get(decl.key);
+  const char* label = decl.key.c_str();
+  switch (decl.type) {
+    case ParamType::Float: {
+      float v = static_cast<float>(current);
+      ImGuiSliderFlags flags = decl.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+      flags |= ImGuiSliderFlags_AlwaysClamp;  // typed-in values beyond the range would be rejected
+      if (!ImGui::SliderFloat(label, &v, float(decl.min), float(decl.max), kFloatFormat, flags))
+        return false;
+      newValue = v;
+      return true;
+    }
+    case ParamType::Int: {
+      int v = static_cast<int>(std::lround(current));
+      ImGuiSliderFlags flags = decl.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+      flags |= ImGuiSliderFlags_AlwaysClamp;
+      if (!ImGui::SliderInt(label, &v, int(std::lround(decl.min)), int(std::lround(decl.max)), "%d",
+                            flags))
+        return false;
+      newValue = v;
+      return true;
+    }
+    case ParamType::Bool: {
+      bool v = current != 0.0;
+      if (!ImGui::Checkbox(label, &v)) return false;
+      newValue = v ? 1.0 : 0.0;
+      return true;
+    }
+    case ParamType::Enum: {
+      int index = static_cast<int>(std::lround(current));
+      const char* preview = (index >= 0 && index < int(decl.choices.size()))
+                                ? decl.choices[size_t(index)].c_str()
+                                : "?";
+      bool changed = false;
+      if (ImGui::BeginCombo(label, preview)) {
+        for (int i = 0; i < int(decl.choices.size()); ++i) {
+          const bool selected = i == index;
+          if (ImGui::Selectable(decl.choices[size_t(i)].c_str(), selected) && !selected) {
+            newValue = i;
+            changed = true;
+          }
+          if (selected) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+      }
+      return changed;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool drawParamPanel(ParamSet& params, std::string& error) {
+  bool changed = false;
+  // Widgets take a bit over half the width; the rest shows the key, which is also the --set name.
+  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+  for (const ParamDecl& decl : params.decls()) {
+    ImGui::PushID(decl.key.c_str());
+    double newValue = 0.0;
+    const bool edited = drawWidget(decl, params, newValue);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltipText(decl).c_str());
+    if (edited) {
+      try {
+        params.set(decl.key, newValue);
+        error.clear();
+        changed = true;
+      } catch (const ParamError& e) {
+        error = e.what();
+      }
+    }
+    ImGui::PopID();
+  }
+  ImGui::PopItemWidth();
+  return changed;
+}
+
+}  // namespace sl

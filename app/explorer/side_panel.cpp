@@ -1,0 +1,241 @@
+#include "explorer/side_panel.h"
+
+#include "explorer/param_panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace sl {
+
+namespace {
+
+const ImVec4 kErrorColor(1.0f, 0.38f, 0.35f, 1.0f);
+const ImVec4 kDimColor(0.65f, 0.65f, 0.68f, 1.0f);
+
+void errorText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+// Buttons laid out left to right, wrapping onto a new row when the next one would not fit.
+// `first` starts a new flow (the previous item is then not a button of this row).
+bool flowButton(const std::string& label, bool highlighted, bool& first) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(label.c_str()).x + style.FramePadding.x * 2.0f;
+  const float rowEnd = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (!first && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= rowEnd) ImGui::SameLine();
+  first = false;
+  if (highlighted) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool clicked = ImGui::Button(label.c_str());
+  if (highlighted) ImGui::PopStyleColor();
+  return clicked;
+}
+
+void drawStatusHeader(ExplorerState& state, Renderer& renderer, const ShaderLibrary& shaders) {
+  const float ms = state.smoothedFrameMs;
+  ImGui::Text("%.0f fps   %.1f ms/frame", ms > 0 ? 1000.0f / ms : 0.0f, ms);
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  ImGui::TextWrapped("%s", glRendererName().c_str());
+  ImGui::PopStyleColor();
+  // Errors first: a shader typo must be noticed even with every section collapsed.
+  // Several viewports can share a broken module; one line per distinct message is enough.
+  std::vector<std::string> errors = shaders.errors();
+  std::sort(errors.begin(), errors.end());
+  errors.erase(std::unique(errors.begin(), errors.end()), errors.end());
+  if (!state.renderError.empty()) errors.push_back("render: " + state.renderError);
+  if (errors.empty()) return;
+  // A broken shared module can produce pages of messages: keep them in a scrolling box so the
+  // rest of the panel stays reachable.
+  const float wrapWidth = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize - 8.0f;
+  float textHeight = 0.0f;
+  for (const std::string& e : errors)
+    textHeight += ImGui::CalcTextSize(e.c_str(), nullptr, false, wrapWidth).y + ImGui::GetStyle().ItemSpacing.y;
+  const float boxHeight = std::min(textHeight + 12.0f, ImGui::GetIO().DisplaySize.y * 0.3f);
+  ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.22f, 0.05f, 0.05f, 1.0f));
+  ImGui::BeginChild("errors", ImVec2(0, boxHeight), true);
+  for (const std::string& e : errors) errorText(e);
+  ImGui::EndChild();
+  ImGui::PopStyleColor();
+}
+
+void drawScenePanel(ExplorerState& state, Renderer& renderer) {
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##scene", state.sceneLabel.c_str())) {
+    for (const std::string& id : state.sceneIds)
+      if (ImGui::Selectable(id.c_str(), id == state.sceneLabel) && id != state.sceneLabel)
+        switchScene(state, renderer, id);
+    ImGui::EndCombo();
+  }
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - ImGui::GetStyle().FramePadding.x * 2 -
+                          ImGui::GetStyle().ItemSpacing.x);
+  const bool entered = ImGui::InputTextWithHint("##scenePath", ".json / .gltf / .glb path",
+                                                &state.scenePathInput, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Load") || entered) && !state.scenePathInput.empty())
+    switchScene(state, renderer, state.scenePathInput);
+  if (!state.sceneError.empty()) errorText(state.sceneError);
+  if (state.scene) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+    ImGui::Text("%zu triangles, %zu instances", state.scene->triangleCount(), state.scene->instances.size());
+    ImGui::PopStyleColor();
+  }
+  ImGui::Checkbox("Pause time", &state.paused);
+  ImGui::SameLine();
+  ImGui::Text("t = %.2f s", state.sceneTime);
+}
+
+void drawCameraPanel(ExplorerState& state) {
+  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen) || !state.scene) return;
+  bool first = true;
+  for (const Camera& c : state.scene->cameras) {
+    ImGui::PushID(&c);
+    if (flowButton(c.name.empty() ? "camera" : c.name, !state.playingPath && c.name == state.cameraName, first))
+      jumpToCamera(state, c);
+    ImGui::PopID();
+  }
+  if (!state.scene->paths.empty()) {
+    ImGui::TextUnformatted("Paths:");
+    first = true;
+    for (const CameraPath& p : state.scene->paths) {
+      ImGui::PushID(&p);
+      if (flowButton("> " + p.name, state.playingPath == &p, first)) {
+        if (state.playingPath == &p)
+          state.playingPath = nullptr;  // second click stops, camera stays where it is
+        else
+          startCameraPath(state, p);
+      }
+      ImGui::PopID();
+    }
+  }
+  ImGui::TextDisabled("speed %.2f units/s   controls (?)", state.camera.speed());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("With the mouse over a viewport:\n"
+                      "  right-drag   look around\n"
+                      "  W A S D      move\n"
+                      "  Q / E        down / up\n"
+                      "  Shift        4x faster\n"
+                      "  wheel        change speed\n"
+                      "  hold M       magnifier (8x, unfiltered)\n"
+                      "Camera buttons jump (a cut: accumulated history is reset).");
+}
+
+void drawViewportPanels(ExplorerState& state) {
+  ImGui::Separator();
+  ImGui::TextUnformatted("Viewports");
+  for (int n : {1, 2, 4}) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton(std::to_string(n).c_str(), state.viewportCount == n)) state.viewportCount = n;
+  }
+  ensureViewportSlots(state);
+
+  for (int i = 0; i < state.viewportCount; ++i) {
+    ViewportSlot& slot = state.slots[size_t(i)];
+    if (!slot.viewport) {
+      if (!slot.error.empty()) errorText(slot.error);
+      continue;
+    }
+    Technique& technique = slot.viewport->technique;
+    ImGui::PushID(i);
+    const std::string header = std::to_string(i + 1) + ": " + technique.label() + "###viewport";
+    if (ImGui::CollapsingHeader(header.c_str(), i == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+      if (ImGui::BeginCombo("preset", technique.presetId.c_str())) {
+        for (const Preset& p : allPresets()) {
+          if (ImGui::Selectable(p.id.c_str(), p.id == technique.presetId) && p.id != technique.presetId)
+            setViewportPreset(state, i, p.id);
+          if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
+        }
+        ImGui::EndCombo();
+      }
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Reset")) setViewportPreset(state, i, technique.presetId);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the preset's values");
+      if (slot.viewport->accumulation) {
+        const std::string status = slot.viewport->accumulation->status();
+        if (!status.empty()) ImGui::TextDisabled("%s", status.c_str());
+      }
+      // setViewportPreset may have replaced the technique: read it again.
+      drawParamPanel(slot.viewport->technique.params, slot.error);
+      if (!slot.error.empty()) errorText(slot.error);
+    }
+    ImGui::PopID();
+  }
+}
+
+void drawDebugViewPanel(ExplorerState& state) {
+  if (!ImGui::CollapsingHeader("Debug views")) return;
+  const std::vector<std::string> names = availableViewNames(state);
+  if (names.empty()) ImGui::TextDisabled("(none offered by these techniques)");
+  // Two columns of checkboxes keep the list short enough to stay on screen.
+  ImGui::Columns(2, "views", false);
+  for (const std::string& name : names) {
+    bool selected = state.selectedViews.count(name) > 0;
+    if (ImGui::Checkbox(name.c_str(), &selected)) {
+      if (selected)
+        state.selectedViews.insert(name);
+      else
+        state.selectedViews.erase(name);
+    }
+    ImGui::NextColumn();
+  }
+  ImGui::Columns(1);
+}
+
+void drawTimingPanel(Renderer& renderer) {
+  if (!ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const FrameStats& stats = renderer.stats();
+  ImGui::Checkbox("Time passes", &renderer.timePasses);
+  ImGui::SameLine();
+  ImGui::TextDisabled("timer: %s", stats.timer.empty() ? "-" : stats.timer.c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("gpu-query: GL timer queries.\ncpu-fence: glFinish around each pass "
+                      "(software GL, where queries measure nothing); slows the frame down.");
+  double total = 0.0;
+  for (const PassTiming& p : stats.passes) total += p.ms;
+  ImGui::Text("frame %.2f ms, passes %.2f ms", stats.frameMs, total);
+  const double scale = std::max({stats.frameMs, total, 1e-6});
+  const float nameWidth = ImGui::GetContentRegionAvail().x * 0.45f;
+  for (const PassTiming& p : stats.passes) {
+    ImGui::TextUnformatted(p.name.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.name.c_str());
+    ImGui::SameLine(nameWidth);
+    char overlay[32];
+    std::snprintf(overlay, sizeof overlay, "%.2f ms", p.ms);
+    ImGui::ProgressBar(float(p.ms / scale), ImVec2(-1, ImGui::GetTextLineHeight()), overlay);
+  }
+}
+
+void drawToolsPanel(ExplorerState& state) {
+  ImGui::Separator();
+  ImGui::Checkbox("Magnifier (hold M)", &state.magnifierPinned);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) state.screenshotRequested = true;
+  if (!state.statusLine.empty()) ImGui::TextWrapped("%s", state.statusLine.c_str());
+}
+
+}  // namespace
+
+void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary& shaders) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(std::min(kSidePanelWidth, display.x), display.y));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+  ImGui::Begin("shadowlab explorer", nullptr, flags);
+  drawStatusHeader(state, renderer, shaders);
+  drawScenePanel(state, renderer);
+  drawCameraPanel(state);
+  drawViewportPanels(state);
+  drawDebugViewPanel(state);
+  drawTimingPanel(renderer);
+  drawToolsPanel(state);
+  ImGui::End();
+}
+
+}  // namespace sl

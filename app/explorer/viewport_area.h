@@ -1,0 +1,40 @@
+// The main area right of the side panel: 1, 2 or 4 tiles, each with a technique label, the
+// rendered image and a strip of debug-view thumbnails.
+#pragma once
+
+#include "explorer/explorer_state.h"
+#include "explorer/magnifier.h"
+
+#include <imgui.h>
+
+#include <vector>
+
+namespace sl {
+
+struct ViewportTile {
+  ImVec2 headerMin, headerSize;  // technique label
+  ImVec2 imageMin, imageSize;    // rendered image (ImGui coordinates)
+  ImVec2 thumbsMin, thumbsSize;  // debug-view thumbnails (zero height when none are selected)
+};
+
+struct MainAreaLayout {
+  ImVec2 areaMin, areaSize;
+  std::vector<ViewportTile> tiles;
+  int renderWidth = 0, renderHeight = 0;  // image size in framebuffer pixels: what to render at
+};
+
+// Tiles the area: 1 = full, 2 = side by side, 4 = 2x2. All images get the same size because
+// the renderer draws every viewport of a frame at one resolution.
+MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount,
+                              bool withThumbnails, ImVec2 framebufferScale);
+
+struct MainAreaResult {
+  int hoveredViewport = -1;    // image under the mouse, -1 = none
+  MagnifierTarget hoveredImage;  // what the magnifier would enlarge there
+};
+
+// Draws the tiles with the textures of the frame just rendered. Clicking a thumbnail shows that
+// view in the big image; clicking it again goes back to the colour image.
+MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state);
+
+}  // namespace sl
