@@ -38,7 +38,7 @@ void drawMagnifier(const MagnifierTarget& target, ImVec2 mouse) {
   // Keep the lens on screen: flip to the other side of the mouse near the right/bottom edge.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float lensW = kLensPixels + 2.0f * ImGui::GetStyle().WindowPadding.x;
-  const float lensH = kLensPixels + ImGui::GetTextLineHeightWithSpacing() * 2.0f +
+  const float lensH = kLensPixels + ImGui::GetTextLineHeightWithSpacing() * 3.0f +
                       2.0f * ImGui::GetStyle().WindowPadding.y;
   ImVec2 pos(mouse.x + kOffsetFromMouse, mouse.y + kOffsetFromMouse);
   if (pos.x + lensW > display.x) pos.x = mouse.x - kOffsetFromMouse - lensW;
@@ -62,8 +62,11 @@ void drawMagnifier(const MagnifierTarget& target, ImVec2 mouse) {
                   IM_COL32(0, 0, 0, 255));
     draw->AddRect(cellMin, cellMax, IM_COL32(255, 60, 200, 255));
     // Texel coordinates in GL convention (y up) so they match shader gl_FragCoord values.
+    // Wrapped to the lens width: a long technique label must not widen the window.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + kLensPixels);
     ImGui::Text("%dx  texel %d, %d", kZoom, texelX, texH - 1 - texelY);
     ImGui::TextDisabled("%s", target.label.c_str());
+    ImGui::PopTextWrapPos();
   }
   ImGui::End();
 }
