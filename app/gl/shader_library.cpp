@@ -76,7 +76,9 @@ static std::string readText(const fs::path& p) {
 std::string ShaderLibrary::assemble(const std::string& file, const std::string& prelude,
                                     std::vector<std::string>& fileNames) const {
   std::set<std::string> included;
-  std::string out = "#version 450 core\n";
+  // Modules can keep stage-specific code (gl_FragCoord, derivatives) behind these defines.
+  bool vertex = file.size() > 5 && file.compare(file.size() - 5, 5, ".vert") == 0;
+  std::string out = std::string("#version 450 core\n") + (vertex ? "#define SL_VERTEX\n" : "#define SL_FRAGMENT\n");
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
 
   std::function<void(const std::string&, const std::string&, const std::string&)> expand =

@@ -117,7 +117,9 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
 }
 
 std::string Renderer::techniquePrelude(const Technique& t) const {
-  return "#include \"" + t.layout->glslModule() + "\"\n#include \"" + t.representation->glslModule() + "\"\n";
+  // Representations reconstruct visibility per fragment; vertex stages only need the layout.
+  return "#include \"" + t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
+         t.representation->glslModule() + "\"\n#endif\n";
 }
 
 void Renderer::drawFullscreen() {

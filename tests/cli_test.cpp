@@ -1,0 +1,101 @@
+// The command line as a user meets it: list, render with stats, and clear errors for bad input.
+#include "gl_test_util.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+namespace sl {
+
+struct RunResult {
+  int code = -1;
+  std::string output;
+};
+
+static RunResult run(const std::string& args) {
+  std::string cmd = std::string(SHADOWLAB_BINARY) + " " + args + " 2>&1";
+  RunResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+TEST(Cli, ListShowsEveryPresetParameterAndScene) {
+  RunResult r = run("list");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const auto& p : allPresets()) EXPECT_NE(r.output.find(p.id), std::string::npos) << p.id;
+  for (const auto& d : commonParams()) EXPECT_NE(r.output.find(d.key), std::string::npos) << d.key;
+  EXPECT_NE(r.output.find("64..8192"), std::string::npos);
+  EXPECT_NE(r.output.find("pcf.kernel"), std::string::npos);
+  for (const std::string s : {"basic", "columns", "dueling-frusta", "terrain", "thin-casters"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s;
+}
+
+TEST(Cli, RenderWritesPngAndStats) {
+  std::string png = ::testing::TempDir() + "cli_render.png", stats = ::testing::TempDir() + "cli_render.json";
+  RunResult r = run("render --scene basic --technique pcf --set shadowmap.size=512 --size 96x64 --frames 3 --out " +
+                    png + " --stats " + stats);
+  ASSERT_EQ(r.code, 0) << r.output;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["technique"], "pcf");
+  EXPECT_EQ(j["params"]["shadowmap.size"], "512");
+  EXPECT_EQ(j["nonfinite_pixels"], 0);
+  EXPECT_TRUE(j["shader_errors"].empty());
+  EXPECT_GT(j["ms_per_frame"].get<double>(), 0.0);
+  EXPECT_EQ(j["passes"].size(), 4u);
+  EXPECT_EQ(j["gl_errors"], 0);
+  EXPECT_TRUE(std::ifstream(png).good());
+}
+
+TEST(Cli, RenderViewAddsItsPass) {
+  std::string png = ::testing::TempDir() + "cli_view.png", stats = ::testing::TempDir() + "cli_view.json";
+  RunResult r = run("render --scene basic --view aliasing --size 64x40 --out " + png + " --stats " + stats);
+  ASSERT_EQ(r.code, 0) << r.output;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["passes"].back(), "view.aliasing[0]");
+  r = run("render --scene basic --view nosuch --size 64x40 --out " + png);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("unknown view 'nosuch'"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadInputGetsAClearErrorNamingTheFile) {
+  std::string out = " --size 32x32 --out " + ::testing::TempDir() + "bad.png";
+  struct Case {
+    std::string file, text, expect;
+  };
+  std::vector<Case> cases = {
+      {"malformed.json", "{\"objects\": [", "malformed.json"},
+      {"unknown_key.json", R"({"objetcs": []})", "objetcs"},
+      {"near_far.json",
+       R"({"objects":[{"shape":"box","size":[1,1,1]}],"cameras":[{"name":"c","position":[0,0,5],"target":[0,0,0],"near":5,"far":1}]})",
+       "near"},
+      {"missing_gltf.json", R"({"models":[{"file":"nowhere.gltf"}]})", "nowhere.gltf"},
+      {"empty.json", R"({"objects": []})", "empty.json"},
+      {"zero_size.json", R"({"objects":[{"shape":"box","size":[1,0,1]}]})", "size"},
+  };
+  for (const auto& c : cases) {
+    std::string path = test::writeTempFile(c.file, c.text);
+    RunResult r = run("render --scene " + path + out);
+    EXPECT_EQ(r.code, 1) << c.file << ": " << r.output;
+    EXPECT_NE(r.output.find(c.file), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("Segmentation"), std::string::npos);
+  }
+  RunResult r = run("render --scene basic --set shadowmap.size=99999" + out);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("shadowmap.size"), std::string::npos) << r.output;
+  r = run("render --scene basic --technique nosuch" + out);
+  EXPECT_NE(r.output.find("unknown technique 'nosuch'"), std::string::npos) << r.output;
+  r = run("render --scene basic --size 0x10 --out " + ::testing::TempDir() + "bad.png");
+  EXPECT_NE(r.output.find("WIDTHxHEIGHT"), std::string::npos) << r.output;
+  r = run("render --scene nosuchscene" + out);
+  EXPECT_NE(r.output.find("nosuchscene"), std::string::npos) << r.output;
+}
+
+}  // namespace sl

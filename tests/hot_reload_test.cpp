@@ -1,0 +1,84 @@
+// Hot reload: a changed shader is rebuilt; a broken one keeps the last good program and the
+// error names the file and line.
+#include "gl_test_util.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace sl {
+
+namespace fs = std::filesystem;
+
+static std::string copyShaders(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(dir);
+  fs::copy(defaultShaderDir(), dir, fs::copy_options::recursive);
+  return dir.string();
+}
+
+static void rewrite(const fs::path& p, const std::string& from, const std::string& to) {
+  std::stringstream s;
+  s << std::ifstream(p).rdbuf();
+  std::string text = s.str();
+  auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  // Make sure the modification time moves even on coarse-grained file systems.
+  auto before = fs::last_write_time(p);
+  std::ofstream(p, std::ios::trunc) << text;
+  if (fs::last_write_time(p) == before) fs::last_write_time(p, before + std::chrono::seconds(1));
+}
+
+TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram) {
+  std::string dir = copyShaders("hot_reload_shaders");
+  test::GlHarness h(dir);
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("standard", {"shadowmap.size=256"}));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 64;
+  in.height = 40;
+  h.renderer.render(in, {&vp});
+  ASSERT_TRUE(h.shaders.errors().empty());
+  EXPECT_EQ(h.shaders.reloadChanged(), 0);
+
+  // An included module changes: every program using it is rebuilt, the others are not.
+  int before = h.shaders.buildCount();
+  rewrite(fs::path(dir) / "common/bias.glsl", "float biasDepth(", "// edited\nfloat biasDepth(");
+  int rebuilt = h.shaders.reloadChanged();
+  EXPECT_GE(rebuilt, 1);
+  EXPECT_LT(rebuilt, 4);  // gbuffer/shadow/shade do not include bias.glsl
+  EXPECT_EQ(h.shaders.buildCount(), before + rebuilt);
+  EXPECT_TRUE(h.shaders.errors().empty());
+
+  // A syntax error: the error names file:line, the old program keeps rendering.
+  rewrite(fs::path(dir) / "passes/shade.frag", "o_color = vec4(pow(linear", "o_color = vec4(pow(linear +* ;");
+  h.shaders.reloadChanged();
+  auto errors = h.shaders.errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("shaders/passes/shade.frag:"), std::string::npos) << errors[0];
+  std::ifstream broken(fs::path(dir) / "passes/shade.frag");
+  std::string line;
+  int lineNo = 0, badLine = 0;
+  while (std::getline(broken, line)) {
+    ++lineNo;
+    if (line.find("+* ;") != std::string::npos) badLine = lineNo;
+  }
+  EXPECT_NE(errors[0].find("shade.frag:" + std::to_string(badLine) + ":"), std::string::npos) << errors[0];
+  h.renderer.render(in, {&vp});
+  auto pixels = vp.colorTexture()->readRgba8();
+  int nonBlack = 0;
+  for (size_t i = 0; i < pixels.size(); i += 4) nonBlack += pixels[i] + pixels[i + 1] + pixels[i + 2] > 30;
+  EXPECT_GT(nonBlack, 64 * 40 / 2);  // the last good shade program still draws the scene
+
+  // Fixed again: the error goes away.
+  rewrite(fs::path(dir) / "passes/shade.frag", "o_color = vec4(pow(linear +* ;", "o_color = vec4(pow(linear");
+  h.shaders.reloadChanged();
+  EXPECT_TRUE(h.shaders.errors().empty());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+}  // namespace sl

@@ -1,0 +1,49 @@
+#include "technique.h"
+
+#include <gtest/gtest.h>
+
+namespace sl {
+
+TEST(Params, PresetsResolveAndOverridesValidate) {
+  Technique t = makeTechnique("pcf", {"shadowmap.size=512", "bias.mode=normal-offset"});
+  EXPECT_EQ(t.layout->id(), "focused");
+  EXPECT_EQ(t.representation->id(), "depth-pcf");
+  EXPECT_EQ(t.params.i("shadowmap.size"), 512);
+  EXPECT_EQ(t.params.choice("bias.mode"), "normal-offset");
+  EXPECT_EQ(t.params.i("pcf.kernel"), 3);
+}
+
+TEST(Params, BadValuesAreNamed) {
+  auto message = [](const std::string& preset, const std::string& kv) {
+    try {
+      makeTechnique(preset, {kv});
+    } catch (const ParamError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("standard", "shadowmap.size=20").find("outside 64..8192"), std::string::npos);
+  EXPECT_NE(message("standard", "shadowmap.size=abc").find("not a number"), std::string::npos);
+  EXPECT_NE(message("standard", "bias.mode=huge").find("none|constant|slope|normal-offset"), std::string::npos);
+  EXPECT_NE(message("standard", "pcf.kernel=3").find("unknown parameter 'pcf.kernel'"), std::string::npos);
+  EXPECT_NE(message("standard", "noequals").find("key=value"), std::string::npos);
+  EXPECT_NE(message("standard", "bias.slope=nan").find("finite"), std::string::npos);
+  EXPECT_NE(message("nosuch", "a=b").find("unknown technique"), std::string::npos);
+}
+
+TEST(Params, EveryDeclarationIsComplete) {
+  for (const auto& preset : allPresets()) {
+    Technique t = makeTechnique(preset.id);
+    for (const auto& d : t.params.decls()) {
+      EXPECT_FALSE(d.help.empty()) << d.key;
+      if (d.type == ParamType::Float || d.type == ParamType::Int) {
+        EXPECT_LE(d.min, d.defaultValue) << d.key;
+        EXPECT_GE(d.max, d.defaultValue) << d.key;
+      }
+      if (d.type == ParamType::Enum) EXPECT_LT(d.defaultValue, d.choices.size()) << d.key;
+      EXPECT_EQ(uniformName(d.key).find('.'), std::string::npos);
+    }
+  }
+}
+
+}  // namespace sl

@@ -1,0 +1,213 @@
+// GPU tests of the foundation on llvmpipe at small sizes: analytic shadows, bias, culling,
+// every scene x preset free of NaN and GL errors.
+#include "gl_test_util.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace sl {
+
+using test::Frame;
+using test::GlHarness;
+
+namespace {
+
+const char* kBoxScene = R"({
+  "objects": [
+    {"name": "ground", "shape": "plane", "size": [20, 20], "subdivisions": 4},
+    {"name": "box", "shape": "box", "size": [1, 1, 1], "transform": {"translate": [0, 0.5, 0]}}
+  ],
+  "light": {"type": "directional", "direction": [%LIGHT%]},
+  "cameras": [{"name": "c", "position": [-3.5, 4, 2.5], "target": [-0.6, 0, -0.4], "fov_deg": 60, "near": 0.1, "far": 60}]
+})";
+
+Scene boxScene(const std::string& light) {
+  std::string text = kBoxScene;
+  text.replace(text.find("%LIGHT%"), 7, light);
+  return loadScene(test::writeTempFile("box_" + std::to_string(std::hash<std::string>()(light)) + ".json", text),
+                   defaultAssetsDir());
+}
+
+// The exact shadow of the unit box on y = 0: the convex hull of its corners projected along d.
+std::vector<glm::vec2> analyticShadow(const glm::vec3& dIn) {
+  glm::vec3 d = glm::normalize(dIn);
+  std::vector<glm::vec2> pts;
+  for (int i = 0; i < 8; ++i) {
+    glm::vec3 p(i & 1 ? 0.5f : -0.5f, i & 2 ? 1.0f : 0.0f, i & 4 ? 0.5f : -0.5f);
+    glm::vec3 q = p - d * (p.y / d.y);
+    pts.emplace_back(q.x, q.z);
+  }
+  std::sort(pts.begin(), pts.end(), [](auto a, auto b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<glm::vec2> hull(16);
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  return hull;  // counter-clockwise
+}
+
+// Signed distance to the polygon: negative inside.
+float signedDistance(const std::vector<glm::vec2>& poly, glm::vec2 p) {
+  float dist = 1e30f;
+  bool inside = true;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    glm::vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+    glm::vec2 e = b - a;
+    float t = glm::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0f, 1.0f);
+    dist = std::min(dist, glm::length(p - (a + e * t)));
+    if (e.x * (p.y - a.y) - e.y * (p.x - a.x) < 0) inside = false;
+  }
+  return inside ? -dist : dist;
+}
+
+struct GroundCount {
+  long long ground = 0, insideWrong = 0, outsideWrong = 0, inside = 0, outside = 0;
+};
+
+GroundCount compareGround(const Frame& f, const std::vector<glm::vec2>& poly, float band) {
+  GroundCount c;
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      size_t i = static_cast<size_t>(y) * f.width + x;
+      if (f.position[4 * i + 3] < 0.5f || std::abs(f.position[4 * i + 1]) > 1e-3f) continue;
+      ++c.ground;
+      float sd = signedDistance(poly, glm::vec2(f.position[4 * i], f.position[4 * i + 2]));
+      bool lit = f.at(x, y) > 0.5f;
+      if (sd < -band) {
+        ++c.inside;
+        c.insideWrong += lit;
+      } else if (sd > band) {
+        ++c.outside;
+        c.outsideWrong += !lit;
+      }
+    }
+  return c;
+}
+
+Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset, std::vector<std::string> sets,
+                 int w, int hgt, Viewport** keep = nullptr) {
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique(preset, sets));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = w;
+  in.height = hgt;
+  h.renderer.render(in, {&vp});
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return test::readFrame(h.renderer, vp, w, hgt);
+}
+
+}  // namespace
+
+TEST(Render, StandardMatchesTheAnalyticBoxShadowExceptWithinOneTexel) {
+  GlHarness h;
+  const glm::vec3 d(-0.5f, -1.0f, -0.35f);
+  Scene scene = boxScene("-0.5, -1, -0.35");
+  Frame f = renderOnce(h, scene, "standard", {"shadowmap.size=2048"}, 320, 180);
+  Technique t = makeTechnique("standard", {"shadowmap.size=2048"});
+  LayoutInput li{&scene, 0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f), &t.params, {}};
+  LightSpace ls = t.layout->compute(li);
+  // One texel of the map, as it lands on the ground (stretched by 1/cos of the light angle).
+  float band = ls.texelWorldSize / std::abs(glm::normalize(d).y);
+  GroundCount c = compareGround(f, analyticShadow(d), band);
+  EXPECT_GT(c.inside, 200);
+  EXPECT_GT(c.outside, 5000);
+  EXPECT_EQ(c.insideWrong, 0);
+  EXPECT_EQ(c.outsideWrong, 0);
+  EXPECT_EQ(f.nonfinite(), 0);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(Render, BiasRemovesAcneAtGrazingLightWithoutLosingContactShadow) {
+  GlHarness h;
+  const glm::vec3 d(-1.0f, -0.27f, -0.25f);  // about 15 degrees above the ground
+  Scene scene = boxScene("-1, -0.27, -0.25");
+  auto poly = analyticShadow(d);
+  std::map<std::string, GroundCount> counts;
+  for (const std::string mode : {"none", "constant", "slope", "normal-offset"}) {
+    Frame f = renderOnce(h, scene, "standard", {"shadowmap.size=1024", "bias.mode=" + mode}, 320, 180);
+    Technique t = makeTechnique("standard", {"shadowmap.size=1024"});
+    LayoutInput li{&scene, 0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f), &t.params, {}};
+    float band = 2.0f * t.layout->compute(li).texelWorldSize / std::abs(glm::normalize(d).y);
+    counts[mode] = compareGround(f, poly, band);
+    EXPECT_EQ(f.nonfinite(), 0);
+  }
+  auto acne = [&](const std::string& m) { return double(counts[m].outsideWrong) / double(counts[m].outside); };
+  auto leak = [&](const std::string& m) { return double(counts[m].insideWrong) / double(counts[m].inside); };
+  std::printf("acne: none %.4f constant %.4f slope %.4f normal-offset %.4f\n", acne("none"), acne("constant"),
+              acne("slope"), acne("normal-offset"));
+  std::printf("lost contact shadow: slope %.4f normal-offset %.4f\n", leak("slope"), leak("normal-offset"));
+  EXPECT_GT(acne("none"), 0.2);  // the grazing plane shadows itself all over
+  EXPECT_LT(acne("slope"), acne("none") * 0.05);
+  EXPECT_LT(acne("slope"), 0.005);
+  EXPECT_LT(acne("normal-offset"), 0.005);
+  EXPECT_LT(leak("slope"), 0.01);  // the shadow under the box stays
+  EXPECT_LT(leak("normal-offset"), 0.01);
+  EXPECT_GT(counts["slope"].inside, 200);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(Render, OnlyShownViewsCostAPass) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("standard", {"shadowmap.size=256"}));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 96;
+  in.height = 64;
+  auto passNames = [&] {
+    std::vector<std::string> n;
+    for (const auto& p : h.renderer.stats().passes) n.push_back(p.name);
+    return n;
+  };
+  h.renderer.render(in, {&vp});
+  EXPECT_EQ(passNames(), (std::vector<std::string>{"gbuffer", "shadowmap[0]", "visibility[0]", "shade[0]"}));
+  vp.shownViews = {"texels", "lightspace"};
+  h.renderer.render(in, {&vp});
+  auto names = passNames();
+  EXPECT_EQ(names.size(), 6u);
+  EXPECT_NE(std::find(names.begin(), names.end(), "view.texels[0]"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "view.lightspace[0]"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "view.aliasing[0]"), names.end());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(Render, EveryBuiltinSceneAndPresetIsFiniteAndErrorFree) {
+  GlHarness h;
+  for (const auto& id : builtinSceneIds(defaultAssetsDir())) {
+    Scene scene;
+    try {
+      scene = loadScene(id, defaultAssetsDir());
+    } catch (const SceneError& e) {
+      // Scenes built on shared/scenes-real are absent on machines without that folder.
+      if (std::string(e.what()).find("scenes-real") != std::string::npos) continue;
+      throw;
+    }
+    h.renderer.setScene(scene);
+    for (const auto& preset : allPresets()) {
+      Viewport vp(makeTechnique(preset.id, {"shadowmap.size=256"}));
+      vp.shownViews = vp.availableViews();
+      for (const auto& cam : scene.cameras) {
+        FrameInput in;
+        in.camera = cam;
+        in.width = 64;
+        in.height = 40;
+        h.renderer.render(in, {&vp});
+        Frame f = test::readFrame(h.renderer, vp, 64, 40);
+        EXPECT_EQ(f.nonfinite(), 0) << id << " " << preset.id << " " << cam.name;
+      }
+    }
+  }
+  EXPECT_TRUE(h.shaders.errors().empty());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+}  // namespace sl
