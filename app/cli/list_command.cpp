@@ -21,7 +21,7 @@ static void printParams(const std::vector<ParamDecl>& decls) {
 int runListCommand(int, char**) {
   std::cout << "techniques (--technique ID, any key below with --set key=value):\n";
   for (const auto& p : allPresets()) {
-    std::cout << "  " << std::left << std::setw(14) << p.id << p.help << "  [" << p.layout << " + "
+    std::cout << "  " << std::left << std::setw(18) << p.id << " " << p.help << "  [" << p.layout << " + "
               << p.representation << " + " << p.accumulation << "]\n";
     for (const auto& o : p.overrides) std::cout << "      preset sets " << o << "\n";
   }
@@ -29,17 +29,17 @@ int runListCommand(int, char**) {
   printParams(commonParams());
   std::cout << "\nlayouts (where texels go):\n";
   for (const auto& l : allLayouts()) {
-    std::cout << "  " << std::setw(14) << l->id() << l->help() << "\n";
+    std::cout << "  " << std::setw(16) << l->id() << " " << l->help() << "\n";
     printParams(l->params());
   }
   std::cout << "\nrepresentations (what a texel stores, how visibility is reconstructed):\n";
   for (const auto& r : allRepresentations()) {
-    std::cout << "  " << std::setw(14) << r->id() << r->help() << "\n";
+    std::cout << "  " << std::setw(16) << r->id() << " " << r->help() << "\n";
     printParams(r->params());
   }
   std::cout << "\naccumulations (screen space over time):\n";
   for (const auto& a : allAccumulations()) {
-    std::cout << "  " << std::setw(14) << a->id() << a->help() << "\n";
+    std::cout << "  " << std::setw(16) << a->id() << " " << a->help() << "\n";
     printParams(a->params());
   }
   std::cout << "\ndebug views (--view NAME):";
