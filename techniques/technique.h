@@ -95,6 +95,9 @@ class Accumulation {
   virtual std::string help() const = 0;
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual std::unique_ptr<AccumulationState> createState() const = 0;
+  // True when every frame stands alone (no passes), so the renderer may fuse the visibility
+  // and shading passes.
+  virtual bool passesThrough() const { return false; }
 };
 
 struct Preset {

@@ -39,11 +39,13 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
   const std::string visibility = vp.accumulated_ ? "visibility.final" + tag : "visibility.raw" + tag;
   const Texture2D* visTex = vp.visibilityTexture();
 
-  auto fullscreenView = [&](const std::string& name, const std::string& frag, std::vector<std::string> reads) {
+  auto fullscreenView = [&](const std::string& name, const std::string& frag, std::vector<std::string> reads,
+                            bool needsTechnique) {
     if (!vp.views_.count(name)) return;
+    const std::string modules = needsTechnique ? prelude : "";
     Texture2D* target = vp.views_[name].get();
-    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, prelude, visTex] {
-             ProgramSpec spec{"view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, prelude};
+    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, modules, visTex] {
+             ProgramSpec spec{"view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
              Program& p = shaders_.get(spec);
              if (!p.valid()) return;
              Framebuffer fbo("view target");
@@ -68,10 +70,10 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
            }});
     g.requestSink("view." + name + tag);
   };
-  fullscreenView("shadowmap", "views/shadowmap.frag", {sm});
-  fullscreenView("texels", "views/texels.frag", {"gbuffer"});
-  fullscreenView("aliasing", "views/aliasing.frag", {"gbuffer"});
-  fullscreenView("visibility", "views/visibility.frag", {"gbuffer", visibility});
+  fullscreenView("shadowmap", "views/shadowmap.frag", {sm}, false);
+  fullscreenView("texels", "views/texels.frag", {"gbuffer"}, true);
+  fullscreenView("aliasing", "views/aliasing.frag", {"gbuffer"}, true);
+  fullscreenView("visibility", "views/visibility.frag", {"gbuffer", visibility}, false);
 
   if (vp.views_.count("lightspace")) {
     Texture2D* target = vp.views_["lightspace"].get();

@@ -77,8 +77,9 @@ void Renderer::setScene(const Scene& scene) {
   havePrev_ = false;
 }
 
-void Renderer::ensureTargets(int w, int h) {
-  if (w == width_ && h == height_ && gPosition_) return;
+void Renderer::ensureTargets(int w, int h, bool withMotion) {
+  if (w == width_ && h == height_ && gPosition_ && withMotion == gHasMotion_) return;
+  gHasMotion_ = withMotion;
   width_ = w;
   height_ = h;
   gPosition_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.position");
@@ -87,7 +88,11 @@ void Renderer::ensureTargets(int w, int h) {
   gMotion_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.motion");
   gDepth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "gbuffer.depth");
   gFbo_ = Framebuffer("gbuffer");
-  gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gMotion_.get()}, gDepth_.get());
+  // Per-pixel motion costs a fourth target; only accumulations read it.
+  if (withMotion)
+    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gMotion_.get()}, gDepth_.get());
+  else
+    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get()}, gDepth_.get());
   havePrev_ = false;  // a resize is a cut: history no longer matches the screen
 }
 
@@ -109,6 +114,8 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
     vp.visibilityFbo_.attach({vp.rawVisibility_.get()}, nullptr);
     vp.colorFbo_ = Framebuffer("color");
     vp.colorFbo_.attach({vp.color_.get()}, nullptr);
+    vp.colorAndVisibilityFbo_ = Framebuffer("color + visibility");
+    vp.colorAndVisibilityFbo_.attach({vp.color_.get(), vp.rawVisibility_.get()}, nullptr);
     vp.views_.clear();
     vp.accumulation->reset();
   }
@@ -147,7 +154,9 @@ void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace
 
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {
   if (!scene_) throw std::runtime_error("renderer: no scene loaded");
-  ensureTargets(in.width, in.height);
+  bool needMotion = false;
+  for (Viewport* vp : viewports) needMotion |= !vp->technique.accumulation->passesThrough();
+  ensureTargets(in.width, in.height, needMotion);
   view_ = cameraView(in.camera);
   proj_ = cameraProjection(in.camera, static_cast<float>(in.width) / static_cast<float>(in.height));
   if (!havePrev_ || in.cut) {
@@ -156,17 +165,15 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     prevTime_ = in.time;
     for (Viewport* vp : viewports) vp->accumulation->reset();
   }
-  bool needMotion = false;
-  for (Viewport* vp : viewports) needMotion |= vp->technique.accumulation->id() != "none";
-
   FrameGraph graph;
   graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in, needMotion] {
-               ProgramSpec spec{"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}}, ""};
+               ProgramSpec spec{"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+                                needMotion ? "#define SL_WRITE_MOTION\n" : ""};
                Program& p = shaders_.get(spec);
                if (!p.valid()) return;
                gFbo_.bind();
                const float zero[4] = {0, 0, 0, 0};
-               for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
+               for (int i = 0; i < (needMotion ? 4 : 3); ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
                glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                glEnable(GL_DEPTH_TEST);
                p.use();
@@ -174,7 +181,6 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
                p.set("u_prevViewProj", prevProj_ * prevView_);
                gpu_->draw(p, in.time, prevTime_);
                glDisable(GL_DEPTH_TEST);
-               (void)needMotion;
              }});
   for (size_t i = 0; i < viewports.size(); ++i) {
     ensureViewportTargets(*viewports[i], in.width, in.height);
@@ -246,9 +252,10 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const std::string prelude = techniquePrelude(t);
   const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
-  g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, prelude, &in] {
+  const std::string shadowPrelude = prelude + (vp.lightSpace.perspective ? "#define SL_WRITE_LINEAR_DEPTH\n" : "");
+  g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, shadowPrelude, &in] {
            Technique& t = vp.technique;
-           ProgramSpec spec{"shadowmap " + t.layout->id(), {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}}, prelude};
+           ProgramSpec spec{"shadowmap " + t.layout->id(), {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}}, shadowPrelude};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
            vp.shadowFbo_.bind();
@@ -260,21 +267,51 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
            gpu_->draw(p, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
            glDisable(GL_DEPTH_TEST);
          }});
-  g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude] {
+  // Binds the G-buffer, shadow map and sampler a visibility-computing program reads.
+  auto bindVisibilityInputs = [this, &vp](const Program& p) {
+    setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+    glBindTextureUnit(0, gPosition_->id());
+    glBindTextureUnit(1, gNormal_->id());
+    glBindTextureUnit(2, vp.shadowMap_->id());
+    glBindSampler(2, vp.technique.representation->compareSampler() ? compareSampler_ : shadowSampler_);
+    glBindTextureUnit(3, gAlbedo_->id());
+    p.set("u_gPosition", 0);
+    p.set("u_gNormal", 1);
+    p.set("u_shadowMap", 2);
+    p.set("u_gAlbedo", 3);
+  };
+
+  if (t.accumulation->passesThrough()) {
+    // No accumulation: visibility and colour in one pass (one G-buffer read fewer).
+    vp.accumulated_ = false;
+    g.add({"shade" + tag, {"gbuffer", sm}, {"color" + tag, raw}, [this, &vp, prelude, bindVisibilityInputs] {
+             Technique& t = vp.technique;
+             ProgramSpec spec{"shade+visibility " + t.layout->id() + "+" + t.representation->id(),
+                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade_visibility.frag"}},
+                              prelude};
+             Program& p = shaders_.get(spec);
+             if (!p.valid()) return;
+             vp.colorAndVisibilityFbo_.bind();
+             p.use();
+             bindVisibilityInputs(p);
+             drawFullscreen();
+             glBindSampler(2, 0);
+           }});
+    g.requestSink("color" + tag);
+    g.requestSink(raw);
+    addDebugViewPasses(g, vp, tag, in);
+    return;
+  }
+
+  g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude, bindVisibilityInputs] {
            Technique& t = vp.technique;
-           ProgramSpec spec{"visibility " + t.layout->id() + "+" + t.representation->id(), {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}}, prelude};
+           ProgramSpec spec{"visibility " + t.layout->id() + "+" + t.representation->id(),
+                            {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}}, prelude};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
            vp.visibilityFbo_.bind();
            p.use();
-           setTechniqueUniforms(p, t, vp.lightSpace, scene_->light);
-           glBindTextureUnit(0, gPosition_->id());
-           glBindTextureUnit(1, gNormal_->id());
-           glBindTextureUnit(2, vp.shadowMap_->id());
-           glBindSampler(2, t.representation->compareSampler() ? compareSampler_ : shadowSampler_);
-           p.set("u_gPosition", 0);
-           p.set("u_gNormal", 1);
-           p.set("u_shadowMap", 2);
+           bindVisibilityInputs(p);
            drawFullscreen();
            glBindSampler(2, 0);
          }});
@@ -304,7 +341,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const std::string visibility = vp.accumulated_ ? fin : raw;
   const Texture2D* visTex = vp.accumulated_ ? vp.finalVisibility_.get() : vp.rawVisibility_.get();
 
-  g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex, prelude] {
+  g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
            ProgramSpec spec{"shade", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}}, ""};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;

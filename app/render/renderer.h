@@ -64,7 +64,7 @@ class Viewport {
   friend class Renderer;
   std::unique_ptr<Texture2D> shadowMap_, rawVisibility_, finalVisibility_, color_;
   std::map<std::string, std::unique_ptr<Texture2D>> views_;
-  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_;
+  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_, colorAndVisibilityFbo_;
   int targetsW_ = 0, targetsH_ = 0, shadowSize_ = 0;
   bool accumulated_ = false;
 };
@@ -97,7 +97,7 @@ class Renderer {
   const Texture2D& gNormal() const { return *gNormal_; }
 
  private:
-  void ensureTargets(int w, int h);
+  void ensureTargets(int w, int h, bool withMotion);
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
@@ -109,6 +109,7 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gMotion_, gDepth_;
   Framebuffer gFbo_;
+  bool gHasMotion_ = false;
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0, shadowSampler_ = 0, compareSampler_ = 0;
   glm::mat4 prevView_{1.0f}, prevProj_{1.0f};

@@ -4,6 +4,10 @@ in vec2 v_uv;
 
 void main() {
   materialAlphaTest(v_uv);
-  // Linear light-view depth, identical in every layout, so biases mean the same everywhere.
+#ifdef SL_WRITE_LINEAR_DEPTH
+  // Perspective maps store light-view linear depth like orthographic ones do, so biases mean
+  // the same everywhere. (Orthographic depth is already linear: no per-fragment write, which
+  // keeps the shadow pass cheap on a software rasterizer.)
   gl_FragDepth = clamp(layoutDepth(v_world), 0.0, 1.0);
+#endif
 }

@@ -9,6 +9,7 @@ class NoAccumulation : public Accumulation {
   std::string id() const override { return "none"; }
   std::string help() const override { return "no screen-space accumulation: every frame stands alone"; }
   std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<AccumulationState>(); }
+  bool passesThrough() const override { return true; }
 };
 }  // namespace
 
@@ -16,6 +17,7 @@ void registerPixelCorrect(std::vector<std::unique_ptr<Accumulation>>& out);
 
 void registerAccumulations(std::vector<std::unique_ptr<Accumulation>>& out) {
   out.push_back(std::make_unique<NoAccumulation>());
+  registerPixelCorrect(out);
 }
 
 }  // namespace sl
