@@ -17,9 +17,11 @@ float biasDepth(vec3 p, float cosTheta) {
   if (mode == 0) return 0.0;
   float bias = u_bias_constant;
   if (mode == 2) {
-    // A receiver tilted by theta changes depth by tan(theta) per world unit across a texel.
+    // A receiver tilted by theta changes depth by tan(theta) per world unit; a filter that
+    // reads texels r away from the receiver sees that change over r more texels.
     float tanTheta = clamp(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4), 0.0, 20.0);
-    bias += u_bias_slope * tanTheta * layoutTexelWorldSize(p) * layoutDepthScale();
+    float texels = u_bias_slope + representationFilterRadius();
+    bias += texels * tanTheta * layoutTexelWorldSize(p) * layoutDepthScale();
   }
   return bias;
 }

@@ -13,3 +13,6 @@ float representationVisibility(vec2 uv, float receiverDepth) {
       lit += receiverDepth <= texture(u_shadowMap, start + vec2(x, y) * texel).r ? 1.0 : 0.0;
   return lit / float(n * n);
 }
+
+// How far from the receiver (in texels) the filter reads: scales the slope bias.
+float representationFilterRadius() { return 0.5 * (u_pcf_kernel - 1.0); }

@@ -30,3 +30,6 @@ float representationVisibility(vec2 uv, float receiverDepth) {
   }
   return lit / float(n);
 }
+
+// How far from the receiver (in texels) the filter reads: scales the slope bias.
+float representationFilterRadius() { return u_poisson_radius; }
