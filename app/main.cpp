@@ -15,6 +15,8 @@ const char* kUsage =
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
+    "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
+    "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 
@@ -42,6 +44,8 @@ int main(int argc, char** argv) {
       std::string cmd = argv[1];
       if (cmd == "render") return sl::runRenderCommand(argc, argv);
       if (cmd == "list") return sl::runListCommand(argc, argv);
+      if (cmd == "reference") return sl::runReferenceCommand(argc, argv);
+      if (cmd == "bench") return sl::runBenchCommand(argc, argv);
       if (cmd == "help" || cmd == "--help" || cmd == "-h") {
         std::cout << kUsage;
         return 0;

@@ -3,4 +3,6 @@
 namespace sl {
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
+int runReferenceCommand(int argc, char** argv);
+int runBenchCommand(int argc, char** argv);
 }  // namespace sl

@@ -1,0 +1,86 @@
+// `shadowlab bench`: every technique x sweep point from a fresh viewport on the same camera
+// (or camera path), timed with the renderer's pass timers and compared with the ray-traced
+// reference. Results go to JSON, and optionally to a self-contained HTML report.
+#pragma once
+
+#include "bench/reference_cache.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sl {
+
+struct BenchOptions {
+  std::string scene = "basic";
+  std::vector<std::string> techniques;  // preset ids
+  std::vector<std::string> sets;        // "key=value", applied to every technique that has the key
+  std::vector<std::string> sweeps;      // "key=v1,v2,...": cartesian product over all of them
+  std::string camera;                   // camera name ("" = the scene's first), or
+  std::string path;                     // a camera path name: frames advance along it at 30 fps
+  int frames = 10;
+  int warmup = 3;
+  int width = 640, height = 360;
+  int samples = 64;       // reference light samples
+  bool useCache = true;   // reference disk cache
+  double time = 0.0;      // scene time (start time with --path)
+  std::string shaderDir;  // "" = defaultShaderDir()
+  std::string commandLine;
+};
+
+// One technique with one sweep point, before running.
+struct BenchPlanEntry {
+  Technique technique;
+  std::vector<std::pair<std::string, std::string>> sweepPoint;  // key, value as given
+};
+
+struct PassMs {
+  std::string name;
+  double ms = 0;  // median over the measured frames
+};
+
+struct BenchEntry {
+  std::string technique;  // preset id
+  std::string label;      // "pcf shadowmap.size=1024"
+  std::vector<std::pair<std::string, std::string>> params;      // every resolved value
+  std::vector<std::pair<std::string, std::string>> sweepPoint;
+  int frames = 0;
+  std::string timer;
+  double msMedian = 0, msP95 = 0;
+  std::vector<PassMs> passes;
+  ErrorMetrics error;                 // last frame vs its reference
+  std::vector<double> convergence;    // wrong_pixel_pct per measured frame
+  bool hasFlicker = false;
+  double flicker = 0, flickerTechnique = 0, flickerReference = 0;
+  long long nonfinite = 0;            // NaN/Inf visibility pixels in the last frame
+  std::vector<float> lastVisibility;  // for the report's images
+};
+
+struct BenchResult {
+  BenchOptions options;
+  std::string sceneName, renderer, timer, date, cpu;
+  unsigned cores = 0;
+  int referenceSamples = 0;
+  int referencesTraced = 0, referencesCached = 0;
+  double referenceTraceMs = 0;  // total, over the references traced in this run
+  double referenceFlicker = 0;
+  ReferenceImage lastReference;  // reference of the last frame (the one `error` compares with)
+  std::vector<BenchEntry> entries;
+  std::vector<std::string> shaderErrors;  // any: the affected entries measured a broken shader
+};
+
+// Validates techniques, --set and --sweep (throws ArgError/ParamError with a clear message:
+// an unknown key, a key no technique has, a value out of range) and lists the entries.
+std::vector<BenchPlanEntry> planBench(const BenchOptions& options);
+// Runs the plan headless; progress lines go to `log`.
+BenchResult runBench(const BenchOptions& options, std::ostream& log);
+
+nlohmann::json benchToJson(const BenchResult& result);
+void writeBenchCsv(const BenchResult& result, const std::string& file);
+// index.html (inline CSS + SVG), results.csv and per-entry PNGs in `dir` (created).
+void writeBenchReport(const BenchResult& result, const std::string& dir);
+
+}  // namespace sl

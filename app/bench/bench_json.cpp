@@ -1,0 +1,87 @@
+// JSON and CSV output of `shadowlab bench`; see bench.h and docs/benchmarks.md.
+#include "bench/bench.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace sl {
+
+nlohmann::json benchToJson(const BenchResult& r) {
+  using nlohmann::json;
+  json j;
+  j["scene"] = r.sceneName;
+  j["size"] = {r.options.width, r.options.height};
+  if (!r.options.path.empty()) {
+    j["path"] = r.options.path;
+    j["camera"] = nullptr;
+  } else {
+    j["camera"] = r.options.camera;
+    j["path"] = nullptr;
+  }
+  j["time"] = r.options.time;
+  j["renderer"] = r.renderer;
+  j["timer"] = r.timer;
+  j["machine"] = {{"cores", r.cores}, {"cpu", r.cpu}};
+  j["date"] = r.date;
+  j["command"] = r.options.commandLine;
+  j["warmup"] = r.options.warmup;
+  j["reference"] = {{"samples_per_pixel", r.referenceSamples},
+                    {"traced", r.referencesTraced},
+                    {"cached", r.referencesCached},
+                    {"trace_ms_total", r.referenceTraceMs}};
+  if (!r.options.path.empty()) j["reference"]["flicker"] = r.referenceFlicker;
+  j["shader_errors"] = r.shaderErrors;
+  j["entries"] = json::array();
+  for (const auto& e : r.entries) {
+    json x;
+    x["technique"] = e.technique;
+    x["label"] = e.label;
+    x["params"] = json::object();
+    for (const auto& [k, v] : e.params) x["params"][k] = v;
+    x["sweep"] = json::object();
+    for (const auto& [k, v] : e.sweepPoint) x["sweep"][k] = v;
+    x["frames"] = e.frames;
+    x["timer"] = e.timer;
+    x["ms_per_frame"] = {{"median", e.msMedian}, {"p95", e.msP95}};
+    x["passes"] = json::array();
+    for (const auto& p : e.passes) x["passes"].push_back({{"name", p.name}, {"ms", p.ms}});
+    x["error"] = {{"wrong_pixel_pct", e.error.wrongPixelPct},
+                  {"false_shadow_pct", e.error.falseShadowPct},
+                  {"false_light_pct", e.error.falseLightPct},
+                  {"rmse", e.error.rmse},
+                  {"valid_pixels", e.error.validPixels}};
+    x["convergence"] = e.convergence;
+    if (e.hasFlicker)
+      x["flicker"] = {{"excess", e.flicker}, {"technique", e.flickerTechnique}, {"reference", e.flickerReference}};
+    else
+      x["flicker"] = nullptr;
+    x["nonfinite_pixels"] = e.nonfinite;
+    j["entries"].push_back(std::move(x));
+  }
+  return j;
+}
+
+static std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+void writeBenchCsv(const BenchResult& r, const std::string& file) {
+  std::ofstream f(file);
+  if (!f) throw std::runtime_error(file + ": cannot write");
+  std::string sweepKeys;
+  f << "label,technique,sweep,ms_median,ms_p95,wrong_pixel_pct,false_shadow_pct,false_light_pct,rmse,"
+       "flicker_excess,nonfinite_pixels,frames,timer\n";
+  for (const auto& e : r.entries) {
+    std::string sweep;
+    for (const auto& [k, v] : e.sweepPoint) sweep += (sweep.empty() ? "" : " ") + k + "=" + v;
+    f << csvField(e.label) << "," << csvField(e.technique) << "," << csvField(sweep) << "," << e.msMedian << ","
+      << e.msP95 << "," << e.error.wrongPixelPct << "," << e.error.falseShadowPct << "," << e.error.falseLightPct
+      << "," << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << ","
+      << e.nonfinite << "," << e.frames << "," << e.timer << "\n";
+  }
+}
+
+}  // namespace sl

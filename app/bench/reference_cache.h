@@ -1,0 +1,78 @@
+// Ray-traced reference visibility for a rendered frame, with an on-disk cache.
+// Shared by `shadowlab reference`, `shadowlab bench` and the explorer's error panel:
+// the renderer draws the G-buffer (exactly what techniques shade), the ReferenceTracer traces
+// shadow rays from it, and the float result is stored under $XDG_CACHE_HOME/shadowlab
+// (or ~/.cache/shadowlab) keyed on everything that changes it.
+#pragma once
+
+#include "metrics/metrics.h"
+#include "reference/reference.h"
+#include "render/renderer.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// Reference visibility of one frame; rows bottom-up like every GL readback.
+struct ReferenceImage {
+  int width = 0, height = 0;
+  std::vector<float> visibility;  // width*height, 1 = lit, 0 for background
+  std::vector<uint8_t> valid;     // width*height, 1 where geometry covers the pixel
+  bool cached = false;            // true when it came from the disk cache
+  double traceMs = 0;             // time spent tracing (0 when cached)
+  std::string cacheFile;          // where it is (or would be) stored
+  std::string key;                // the cache key text (for reports and debugging)
+};
+
+struct ReferenceSettings {
+  int samples = 64;           // light samples per pixel (area lights only)
+  bool useCache = true;       // read and write the disk cache
+  std::string cacheDir;       // "" = referenceCacheDir()
+  int threads = 0;            // 0 = hardware concurrency
+};
+
+// $XDG_CACHE_HOME/shadowlab, else $HOME/.cache/shadowlab (created on first write).
+std::string referenceCacheDir();
+// FNV-1a 64 of the scene file's bytes plus its loaded geometry, light and motion, as hex.
+std::string sceneContentHash(const Scene& scene);
+
+// Computes (or loads) references for one scene. Keeps one tracer per scene time, so a path
+// or a moving scene traces without rebuilding the BVH every frame.
+class ReferenceCache {
+ public:
+  ReferenceCache(const Scene& scene, ReferenceSettings settings);
+  ~ReferenceCache();
+
+  // Reference for the frame the renderer drew last (its G-buffer must be `in`'s frame).
+  ReferenceImage forLastFrame(const Renderer& renderer, const FrameInput& in);
+  // Reference for `in`: on a cache miss draws the G-buffer first with a private viewport
+  // (technique `standard`), so the caller's viewports keep their history.
+  ReferenceImage forFrame(Renderer& renderer, const FrameInput& in);
+  // Only the cache lookup; false when absent or unreadable.
+  bool lookup(const FrameInput& in, ReferenceImage& out) const;
+  std::string keyText(const FrameInput& in) const;
+
+ private:
+  const ReferenceTracer& tracerAt(double time);
+  const Scene& scene_;
+  ReferenceSettings settings_;
+  std::string sceneHash_;
+  std::map<double, std::unique_ptr<ReferenceTracer>> tracers_;
+  std::unique_ptr<Viewport> gbufferViewport_;
+};
+
+// Visibility channel (R) of a viewport's last frame, bottom-up rows.
+std::vector<float> viewportVisibility(const Viewport& viewport);
+// Metrics of a viewport's last frame against a reference of the same frame and size
+// (the explorer's live error panel calls this).
+ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage& reference);
+// The `error` debug view (RGBA8, bottom-up): grey = agree, orange = false shadow, blue = false light.
+std::vector<uint8_t> viewportErrorImage(const Viewport& viewport, const ReferenceImage& reference);
+// Grey RGBA8 (bottom-up) of a visibility buffer, for PNGs.
+std::vector<uint8_t> visibilityToRgba(const std::vector<float>& visibility);
+
+}  // namespace sl

@@ -1,0 +1,233 @@
+// `shadowlab bench` and `shadowlab reference`: the JSON has every documented field, the
+// instrument sees shadow-map resolution, the reference cache is exact, bad keys fail clearly.
+// Runs the built program (SHADOWLAB_BINARY) headless on llvmpipe at small sizes.
+#include "bench/reference_cache.h"
+#include "gl/headless_context.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder per test, also used as XDG_CACHE_HOME so tests never share a cache.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path = fs::temp_directory_path() / ("shadowlab-bench-test-" + std::string(info->name()) + "-" +
+                                        std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+    ::setenv("XDG_CACHE_HOME", (path / "cache").c_str(), 1);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+std::string readFile(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+struct RunResult {
+  int code = -1;
+  std::string out;  // stdout + stderr
+};
+
+RunResult run(const std::string& args, const fs::path& dir) {
+  const fs::path log = dir / "log.txt";
+  std::string cmd = std::string("'") + SHADOWLAB_BINARY + "' " + args + " > '" + log.string() + "' 2>&1";
+  int status = std::system(cmd.c_str());
+  RunResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readFile(log);
+  return r;
+}
+
+nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(readFile(p)); }
+
+TEST(Bench, JsonHasEveryFieldAndReport) {
+  TempDir t;
+  const fs::path json = t.path / "b.json", report = t.path / "report";
+  RunResult r = run("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
+                    "--frames 3 --warmup 1 --json '" + json.string() + "' --report '" + report.string() + "'",
+                    t.path);
+  ASSERT_EQ(r.code, 0) << r.out;
+  nlohmann::json j = readJson(json);
+  for (const char* k : {"scene", "size", "camera", "renderer", "timer", "machine", "date", "command", "entries"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(j["scene"], "basic");
+  EXPECT_EQ(j["size"], nlohmann::json({160, 90}));
+  EXPECT_EQ(j["camera"], "default");
+  EXPECT_GE(j["machine"]["cores"].get<int>(), 1);
+  EXPECT_NE(j["command"].get<std::string>().find("--techniques standard,pcf"), std::string::npos);
+  ASSERT_EQ(j["entries"].size(), 4u);  // 2 techniques x 2 sweep points
+  for (const auto& e : j["entries"]) {
+    for (const char* k : {"technique", "params", "frames", "timer", "ms_per_frame", "passes", "error", "convergence",
+                          "flicker", "nonfinite_pixels"})
+      EXPECT_TRUE(e.contains(k)) << k;
+    EXPECT_EQ(e["frames"], 3);
+    EXPECT_TRUE(e["params"].contains("shadowmap.size"));
+    EXPECT_TRUE(e["params"].contains("bias.mode"));  // all resolved values, not only the swept one
+    EXPECT_GT(e["ms_per_frame"]["median"].get<double>(), 0.0);
+    EXPECT_GE(e["ms_per_frame"]["p95"].get<double>(), e["ms_per_frame"]["median"].get<double>());
+    ASSERT_FALSE(e["passes"].empty());
+    for (const auto& p : e["passes"]) {
+      EXPECT_TRUE(p["name"].is_string());
+      EXPECT_GE(p["ms"].get<double>(), 0.0);
+    }
+    for (const char* k : {"wrong_pixel_pct", "false_shadow_pct", "false_light_pct", "rmse"}) {
+      ASSERT_TRUE(e["error"].contains(k)) << k;
+      EXPECT_TRUE(std::isfinite(e["error"][k].get<double>())) << k;
+    }
+    EXPECT_EQ(e["convergence"].size(), 3u);
+    EXPECT_DOUBLE_EQ(e["convergence"].back().get<double>(), e["error"]["wrong_pixel_pct"].get<double>());
+    EXPECT_TRUE(e["flicker"].is_null());  // only with --path
+    EXPECT_EQ(e["nonfinite_pixels"], 0);
+  }
+  EXPECT_EQ(j["entries"][0]["params"]["shadowmap.size"], "256");
+  EXPECT_EQ(j["entries"][1]["params"]["shadowmap.size"], "512");
+  EXPECT_EQ(j["entries"][2]["technique"], "pcf");
+
+  const std::string html = readFile(report / "index.html");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("Pareto"), std::string::npos);
+  EXPECT_EQ(html.find("http"), std::string::npos) << "the report must not load anything from the network";
+  EXPECT_TRUE(fs::exists(report / "results.csv"));
+  EXPECT_TRUE(fs::exists(report / "reference.png"));
+  EXPECT_TRUE(fs::exists(report / "01-standard-256-error.png"));
+  EXPECT_TRUE(fs::exists(report / "04-pcf-512-visibility.png"));
+}
+
+TEST(Bench, PathMeasuresFlicker) {
+  TempDir t;
+  const fs::path json = t.path / "b.json";
+  RunResult r = run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
+                    "--json '" + json.string() + "'", t.path);
+  ASSERT_EQ(r.code, 0) << r.out;
+  nlohmann::json j = readJson(json);
+  EXPECT_EQ(j["path"], "orbit");
+  ASSERT_EQ(j["entries"].size(), 1u);
+  const auto& f = j["entries"][0]["flicker"];
+  ASSERT_TRUE(f.is_object()) << f;
+  EXPECT_GT(f["reference"].get<double>(), 0.0);  // the camera moves: the image changes
+  EXPECT_NEAR(f["excess"].get<double>(), f["technique"].get<double>() - f["reference"].get<double>(), 1e-12);
+  EXPECT_EQ(j["reference"]["traced"].get<int>() + j["reference"]["cached"].get<int>(), 4);
+  // The per-frame references are cached: a second run traces nothing.
+  r = run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 --json '" +
+              json.string() + "'", t.path);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(readJson(json)["reference"]["cached"], 4);
+}
+
+TEST(Bench, SeesShadowMapResolution) {
+  TempDir t;
+  const fs::path json = t.path / "b.json";
+  RunResult r = run("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
+                    "--frames 1 --warmup 1 --json '" + json.string() + "'", t.path);
+  ASSERT_EQ(r.code, 0) << r.out;
+  nlohmann::json j = readJson(json);
+  ASSERT_EQ(j["entries"].size(), 2u);
+  const double low = j["entries"][0]["error"]["wrong_pixel_pct"];
+  const double high = j["entries"][1]["error"]["wrong_pixel_pct"];
+  EXPECT_LT(high, 1.0);
+  EXPECT_GT(low, 3.0 * high) << "256: " << low << " %, 4096: " << high << " %";
+  EXPECT_GT(low - high, 0.02);
+}
+
+TEST(Bench, BadKeysFailClearly) {
+  TempDir t;
+  const std::string base = "bench --scene basic --techniques standard,pcf --size 64x36 --frames 1 --json '" +
+                           (t.path / "b.json").string() + "' ";
+  RunResult r = run(base + "--sweep no.such.key=1,2", t.path);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.out.find("no.such.key"), std::string::npos) << r.out;
+  r = run(base + "--set bogus=3", t.path);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.out.find("bogus"), std::string::npos) << r.out;
+  r = run(base + "--sweep shadowmap.size=256,99999", t.path);  // out of range
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.out.find("shadowmap.size"), std::string::npos) << r.out;
+  r = run(base + "--sweep shadowmap.size", t.path);  // no values
+  EXPECT_NE(r.code, 0);
+  r = run(std::string("bench --scene basic --techniques nosuchtechnique --json '") + (t.path / "b.json").string() + "'",
+          t.path);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.out.find("nosuchtechnique"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(t.path / "b.json"));
+}
+
+TEST(ReferenceCache, CommandCachesItsResult) {
+  TempDir t;
+  const std::string args = "reference --scene basic --size 96x54 --out '";
+  RunResult a = run(args + (t.path / "a.png").string() + "'", t.path);
+  ASSERT_EQ(a.code, 0) << a.out;
+  EXPECT_NE(a.out.find("traced in"), std::string::npos) << a.out;
+  RunResult b = run(args + (t.path / "b.png").string() + "'", t.path);
+  ASSERT_EQ(b.code, 0) << b.out;
+  EXPECT_NE(b.out.find("reference: cached"), std::string::npos) << b.out;
+  EXPECT_EQ(readFile(t.path / "a.png"), readFile(t.path / "b.png"));
+  // Another camera is another key.
+  RunResult c = run("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'",
+                    t.path);
+  ASSERT_EQ(c.code, 0) << c.out;
+  EXPECT_NE(c.out.find("traced in"), std::string::npos) << c.out;
+}
+
+TEST(ReferenceCache, CacheReturnsIdenticalValuesInProcess) {
+  TempDir t;
+  HeadlessContext context;
+  ShaderLibrary shaders(defaultShaderDir());
+  Renderer renderer(shaders);
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  renderer.setScene(scene);
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 80;
+  in.height = 45;
+  ReferenceSettings s;
+  s.cacheDir = (t.path / "refcache").string();
+  ReferenceImage first = ReferenceCache(scene, s).forFrame(renderer, in);
+  ReferenceImage second = ReferenceCache(scene, s).forFrame(renderer, in);
+  EXPECT_FALSE(first.cached);
+  EXPECT_TRUE(second.cached);
+  EXPECT_EQ(first.key, second.key);
+  ASSERT_EQ(first.visibility.size(), 80u * 45u);
+  EXPECT_EQ(first.visibility, second.visibility);  // bit-identical floats
+  EXPECT_EQ(first.valid, second.valid);
+  long long lit = 0, covered = 0;
+  for (size_t i = 0; i < first.valid.size(); ++i) {
+    covered += first.valid[i];
+    lit += first.visibility[i] > 0.5f;
+  }
+  EXPECT_GT(covered, 0);
+  EXPECT_GT(lit, 0);
+  EXPECT_LT(lit, covered);  // some shadow in view
+
+  // A viewport compared with the reference of its own frame: the explorer's error panel path.
+  Viewport vp(makeTechnique("standard", {"shadowmap.size=4096"}));
+  renderer.render(in, {&vp});
+  ErrorMetrics m = viewportErrorMetrics(vp, second);
+  EXPECT_EQ(m.validPixels, covered);
+  EXPECT_LT(m.wrongPixelPct, 5.0);
+  EXPECT_EQ(viewportErrorImage(vp, second).size(), 80u * 45u * 4u);
+
+  // A changed camera misses the cache.
+  in.camera.position.x += 0.01f;
+  ReferenceImage moved;
+  EXPECT_FALSE(ReferenceCache(scene, s).lookup(in, moved));
+}
+
+}  // namespace
+}  // namespace sl
