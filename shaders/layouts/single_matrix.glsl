@@ -19,7 +19,9 @@ float layoutDepth(vec3 worldPos) {
 vec4 layoutProject(vec3 worldPos) {
   vec4 c = layoutClip(worldPos);
   if (c.w <= 1e-6) return vec4(0.0, 0.0, 0.0, 0.0);
-  return vec4(c.xy / c.w * 0.5 + 0.5, layoutDepth(worldPos), 1.0);
+  // Orthographic clip depth is already the linear depth; only perspective maps need the view.
+  float depth = u_lightPerspective > 0.5 ? layoutDepth(worldPos) : c.z * 0.5 + 0.5;
+  return vec4(c.xy / c.w * 0.5 + 0.5, depth, 1.0);
 }
 
 // World size of one texel at this point: what normal offset and slope bias are scaled by.
