@@ -19,6 +19,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <vector>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -189,6 +191,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   const int maxFrames = state.options.maxFrames;
   glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
+  std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   for (int frame = 0;; ++frame) {
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
@@ -201,6 +204,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     }
     const double now = glfwGetTime();
     const float dt = std::min(float(now - lastTime), kMaxFrameSeconds);
+    if (frame > 5) frameSeconds.push_back(now - lastTime);  // skip start-up and shader builds
     lastTime = now;
     state.smoothedFrameMs += (dt * 1000.0f - state.smoothedFrameMs) * 0.1f;
     if (now - lastShaderPoll >= kShaderPollSeconds) {
@@ -251,6 +255,14 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     }
     glfwSwapBuffers(window);
     if (lastFrame) break;
+  }
+  if (maxFrames > 0 && !frameSeconds.empty()) {
+    std::sort(frameSeconds.begin(), frameSeconds.end());
+    int w = 0, h = 0;
+    glfwGetWindowSize(window, &w, &h);
+    std::printf("explorer: %zu frames timed, median frame %.1f ms (%.1f fps), window %dx%d, %s\n", frameSeconds.size(),
+                frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
+                glRendererName().c_str());
   }
   // In --frames mode a failing renderer must not look like success to scripts and tests.
   if (maxFrames > 0 && !state.renderError.empty()) return 1;
