@@ -8,6 +8,7 @@
 #include <ctime>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <sstream>
 #include <thread>
@@ -219,6 +220,19 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     r.referenceFlicker = meanTemporalChange(refFrames, commonValid.data());
   }
   r.lastReference = refs.back();
+
+  // Global warm-up: build every entry's shaders and let the driver settle (llvmpipe spins up its
+  // threads and JIT caches) before anything is timed, so the first entries are not penalised.
+  {
+    std::vector<std::unique_ptr<Viewport>> vps;
+    for (const auto& p : plan) vps.push_back(std::make_unique<Viewport>(p.technique));
+    for (int w = 0; w < std::max(1, o.warmup); ++w)
+      for (auto& vp : vps) {
+        FrameInput in = inputs.front();
+        in.cut = w == 0;
+        renderer.render(in, {vp.get()});
+      }
+  }
 
   for (size_t e = 0; e < plan.size(); ++e) {
     const BenchPlanEntry& p = plan[e];
