@@ -64,6 +64,10 @@ const std::vector<Preset>& allPresets() {
       {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
       {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
       {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
+      {"pixel-correct", "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
+       "focused", "depth-nearest", "pixel-correct", {}},
+      {"pixel-correct-pcf", "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging", "focused",
+       "depth-pcf", "pixel-correct", {"pcf.kernel=3"}},
   };
   return presets;
 }

@@ -1,6 +1,6 @@
 // Pixel-correct shadow maps (Scherzer et al. 2007): history lookup shared by the update pass
 // and its debug views. The history buffer holds r = s(n-1), g = linear view depth of the
-// previous frame (0 = nothing there).
+// previous frame (0 = nothing there), b = accumulated confidence weight W (for pc.warmup).
 uniform sampler2D u_gPosition;  // world position, w = 1 covered
 uniform sampler2D u_gMotion;    // previous-frame NDC of this pixel's surface point, w = 1 valid
 uniform sampler2D u_raw;        // r = f(n) (this frame's test), g = confidence (eq. 5)
@@ -21,6 +21,7 @@ const int PC_REJECTED = 4;     // history disagrees with an unambiguous current 
 
 struct PcHistory {
   float s;    // s(n-1), bilinear over the accepted taps
+  float W;    // accumulated weight, min(sum of w, 1)
   int state;  // PC_*
 };
 
@@ -34,6 +35,7 @@ float pcLinearDepth(vec3 world) { return -(u_view * vec4(world, 1.0)).z; }
 PcHistory pcLookup(ivec2 pixel) {
   PcHistory h;
   h.s = 0.0;
+  h.W = 0.0;
   h.state = PC_NONE;
   if (u_hasHistory < 0.5) return h;
   h.state = PC_OFFSCREEN;
@@ -53,21 +55,23 @@ PcHistory pcLookup(ivec2 pixel) {
   vec2 fr = pos - base;
   vec2 snapped = round(fr);
   fr = mix(fr, snapped, vec2(lessThan(abs(fr - snapped), vec2(1e-3))));
-  float sum = 0.0, weight = 0.0;
+  float sum = 0.0, sumW = 0.0, weight = 0.0;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
       ivec2 t = ivec2(base) + ivec2(i, j);
       float wt = (i == 0 ? 1.0 - fr.x : fr.x) * (j == 0 ? 1.0 - fr.y : fr.y);
       if (wt <= 0.0 || any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, ivec2(size)))) continue;
-      vec2 tap = texelFetch(u_history, t, 0).rg;
-      if (!pcFinite(tap.x) || !pcFinite(tap.y) || tap.y <= 0.0) continue;
+      vec3 tap = texelFetch(u_history, t, 0).rgb;
+      if (!pcFinite(tap.x) || !pcFinite(tap.y) || !pcFinite(tap.z) || tap.y <= 0.0) continue;
       if (abs(tap.y - expected) > u_pc_disocclusion * expected) continue;
       sum += wt * tap.x;
+      sumW += wt * tap.z;
       weight += wt;
     }
   h.state = PC_DISOCCLUDED;
   if (weight < 0.05) return h;
   h.s = clamp(sum / weight, 0.0, 1.0);
+  h.W = clamp(sumW / weight, 0.0, 1.0);
   h.state = PC_VALID;
   return h;
 }

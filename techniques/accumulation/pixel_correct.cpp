@@ -1,0 +1,237 @@
+// Pixel-correct shadow maps (Scherzer et al. 2007): parameters, per-viewport history state,
+// Halton jitter and the accumulation / debug-view passes. See techniques/accumulation/README.md.
+#include "accumulation/pixel_correct.h"
+
+#include "render/frame_graph.h"
+#include "render/renderer.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace sl {
+
+float halton(int index, int base) {
+  float f = 1.0f, r = 0.0f;
+  for (int i = index; i > 0; i /= base) {
+    f /= static_cast<float>(base);
+    r += f * static_cast<float>(i % base);
+  }
+  return r;
+}
+
+LayoutJitter pixelCorrectJitter(const ParamSet& params, int index) {
+  LayoutJitter j;
+  const int i = index + 1;  // Halton index 0 is (0,0,0): skip it
+  if (params.b("pc.jitter")) {
+    const float a = params.f("pc.jitter_amplitude");
+    j.offsetTexels = glm::vec2(halton(i, 2) - 0.5f, halton(i, 3) - 0.5f) * a;
+  }
+  if (params.b("pc.rotate"))
+    j.rotationRad = (2.0f * halton(i, 5) - 1.0f) * glm::radians(params.f("pc.rotation_deg"));
+  return j;
+}
+
+float pixelCorrectNextExponent(const ParamSet& params, float previous, bool moving, bool haveHistory) {
+  const float mMax = params.f("pc.m");
+  if (!params.b("pc.adaptive")) return mMax;
+  const float mLow = std::min(params.f("pc.m_moving"), mMax);
+  // A fresh history (cut, first frame) needs no responsiveness: with warm-up it converges at
+  // full m; without, the paper's schedule starts low.
+  if (!haveHistory) return params.b("pc.warmup") ? mMax : mLow;
+  if (moving) return mLow;
+  return std::clamp(previous + params.f("pc.m_step"), mLow, mMax);
+}
+
+LayoutJitter PixelCorrectState::jitter(const ParamSet& params) const { return pixelCorrectJitter(params, jitterIndex_); }
+
+void PixelCorrectState::reset() {
+  hasHistory_ = false;
+  frames_ = 0;
+  m_ = 0.0f;
+}
+
+std::string PixelCorrectState::status() const {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "m = %.1f (%s), frame %d", m_, adaptive_ ? "adaptive" : "fixed", frames_);
+  return buf;
+}
+
+void PixelCorrectState::ensureHistory(int w, int h, GLenum format) {
+  if (history_[0] && history_[0]->width() == w && history_[0]->height() == h && history_[0]->format() == format) return;
+  for (int i = 0; i < 2; ++i) {
+    history_[i] = std::make_unique<Texture2D>(format, w, h, "pixel-correct history " + std::to_string(i));
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(history_[i]->id(), 0, GL_RGBA, GL_FLOAT, zero);
+    fboFinal_[i] = nullptr;
+  }
+  hasHistory_ = false;
+}
+
+namespace {
+
+// Every parameter as u_<key> (as setTechniqueUniforms does) plus the reprojection inputs.
+void setAccumulationUniforms(const Program& p, const ParamSet& params, const glm::mat4& view, const glm::mat4& prevProj,
+                             bool hasHistory, float m) {
+  for (const auto& d : params.decls()) p.set(uniformName(d.key), static_cast<float>(params.get(d.key)));
+  p.set("u_view", view);
+  p.set("u_invPrevProj", glm::inverse(prevProj));
+  p.set("u_hasHistory", hasHistory ? 1.0f : 0.0f);
+  p.set("u_m", m);
+  p.set("u_gPosition", 0);
+  p.set("u_gMotion", 1);
+  p.set("u_raw", 2);
+  p.set("u_history", 3);
+  p.set("u_gNormal", 4);
+}
+
+void bindInputs(const AccumulationContext& ctx, const Texture2D* history) {
+  glBindTextureUnit(0, ctx.gPosition->id());
+  glBindTextureUnit(1, ctx.gMotion->id());
+  glBindTextureUnit(2, ctx.rawVisibilityTex->id());
+  glBindTextureUnit(3, history->id());
+  glBindTextureUnit(4, ctx.gNormal->id());
+}
+
+// The fullscreen triangle has no attributes; a core profile still wants a vertex array bound.
+// A throwaway one keeps this file free of per-context GL state (tests open several contexts).
+void drawTriangle() {
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vao);
+}
+
+}  // namespace
+
+bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
+  const ParamSet& params = *ctx.params;
+  adaptive_ = params.b("pc.adaptive");
+  const GLenum format = params.choice("pc.history_format") == "fp32" ? GL_RGBA32F : GL_RGBA16F;
+  ensureHistory(ctx.width, ctx.height, format);
+  m_ = pixelCorrectNextExponent(params, m_, ctx.cameraMoved, hasHistory_);
+
+  const int read = current_, write = 1 - current_;
+  const bool hasHistory = hasHistory_;
+  const float m = m_;
+  const std::string tag = ctx.viewportTag;
+  const std::string prevRes = "pc.history.prev" + tag, nextRes = "pc.history" + tag;
+  graph.importResource(prevRes);
+  const AccumulationContext c = ctx;  // passes run after this returns: keep a copy
+  Texture2D* prevTex = history_[read].get();
+  Texture2D* nextTex = history_[write].get();
+  if (fboFinal_[write] != ctx.finalVisibilityTex) {
+    fbo_[write] = Framebuffer("pixel-correct update");
+    fbo_[write].attach({ctx.finalVisibilityTex, nextTex}, nullptr);
+    fboFinal_[write] = ctx.finalVisibilityTex;
+  }
+  Framebuffer* fbo = &fbo_[write];
+
+  graph.add({"pixel-correct" + tag, {"gbuffer", ctx.rawVisibility, prevRes}, {ctx.finalVisibility, nextRes},
+             [c, prevTex, nextTex, fbo, hasHistory, m] {
+               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, ""};
+               Program& p = c.shaders->get(spec);
+               if (!p.valid()) {
+                 // Never built: show the raw test and leave no history behind.
+                 glCopyImageSubData(c.rawVisibilityTex->id(), GL_TEXTURE_2D, 0, 0, 0, 0, c.finalVisibilityTex->id(),
+                                    GL_TEXTURE_2D, 0, 0, 0, 0, c.width, c.height, 1);
+                 const float zero[4] = {0, 0, 0, 0};
+                 glClearTexImage(nextTex->id(), 0, GL_RGBA, GL_FLOAT, zero);
+                 return;
+               }
+               fbo->bind();
+               glViewport(0, 0, c.width, c.height);
+               p.use();
+               setAccumulationUniforms(p, *c.params, c.view, c.prevProj, hasHistory, m);
+               bindInputs(c, prevTex);
+               drawTriangle();
+             }});
+
+  static const char* kViews[] = {"confidence", "history", "disocclusion"};
+  for (const char* name : kViews) {
+    auto it = ctx.viewTargets.find(name);
+    if (it == ctx.viewTargets.end() || !it->second) continue;
+    Texture2D* target = it->second;
+    const std::string res = std::string("view.") + name + tag;
+    const std::string file = std::string("accumulation/views_") + name + ".frag";
+    graph.add({res, {"gbuffer", ctx.rawVisibility, prevRes}, {res}, [c, prevTex, target, file, hasHistory, m] {
+                 ProgramSpec spec{"view " + file, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}}, ""};
+                 Program& p = c.shaders->get(spec);
+                 if (!p.valid()) return;
+                 Framebuffer fb("view target");
+                 fb.attach({target}, nullptr);
+                 fb.bind();
+                 glViewport(0, 0, target->width(), target->height());
+                 p.use();
+                 setAccumulationUniforms(p, *c.params, c.view, c.prevProj, hasHistory, m);
+                 bindInputs(c, prevTex);
+                 drawTriangle();
+               }});
+    graph.requestSink(res);
+  }
+
+  current_ = write;
+  hasHistory_ = true;
+  ++frames_;
+  if (!params.b("pc.pause_jitter")) ++jitterIndex_;
+  return true;
+}
+
+namespace {
+
+class PixelCorrectAccumulation : public Accumulation {
+ public:
+  std::string id() const override { return "pixel-correct"; }
+  std::string help() const override {
+    return "screen-space history with confidence-weighted updates and jittered shadow maps (Scherzer, Jeschke, "
+           "Wimmer 2007): shadow edges converge to pixel-correct over ~10-60 still frames";
+  }
+  std::vector<ParamDecl> params() const override {
+    return {
+        {"pc.m", ParamType::Float, 1, 30, 15, "",
+         "confidence exponent m (w = conf^m, eq. 6): high = slow, noise-free, pixel-exact; low = fast, noisy", {}},
+        {"pc.adaptive", ParamType::Bool, 0, 1, 1, "",
+         "adaptive m: pc.m_moving while the camera moves, then + pc.m_step per still frame up to pc.m (after a "
+         "cut: pc.m with pc.warmup, else pc.m_moving)", {}},
+        {"pc.m_moving", ParamType::Float, 1, 30, 3, "", "exponent m while the camera moves (adaptive; also after a cut without pc.warmup)", {}},
+        {"pc.m_step", ParamType::Float, 0, 2, 0.1, "per frame", "increase of m per still frame (adaptive)", {}},
+        {"pc.warmup", ParamType::Bool, 0, 1, 1, "",
+         "beyond the paper: update weight w / max(W + w, 1) with W the pixel's accumulated weight, so a fresh "
+         "history converges as a confidence-weighted mean; off = eq. 2 with w = conf^m from the first frame", {}},
+        {"pc.jitter", ParamType::Bool, 0, 1, 1, "", "sub-texel translation of the light window, Halton(2,3) per frame", {}},
+        {"pc.jitter_amplitude", ParamType::Float, 0, 2, 1, "texels",
+         "translation range: offsets in [-0.5,0.5] x amplitude texels", {}},
+        {"pc.rotate", ParamType::Bool, 0, 1, 1, "",
+         "in-plane rotation of the light window, Halton(5) per frame (translation alone repeats edge patterns)", {}},
+        {"pc.rotation_deg", ParamType::Float, 0, 45, 10, "degrees", "rotation range: angles in [-a, a]", {}},
+        {"pc.pause_jitter", ParamType::Bool, 0, 1, 0, "",
+         "keep the current jitter (the history still updates); render one frame to single-step", {}},
+        {"pc.disocclusion", ParamType::Float, 0.001, 0.5, 0.02, "relative depth",
+         "history tap rejected when |expected - stored view depth| > this x expected depth",
+         {}, true},
+        {"pc.history_format", ParamType::Enum, 0, 0, 0, "",
+         "history buffer precision (s, depth, W): fp16 as in the paper, or fp32", {"fp16", "fp32"}},
+        {"pc.reject", ParamType::Float, 0, 1, 0.5, "visibility",
+         "moving casters (beyond the paper): history replaced by the current test when they differ by more than "
+         "this and the test is unambiguous (confident, or its whole neighbourhood agrees); 1 = off", {}},
+        {"pc.reject_confidence", ParamType::Float, 0, 1, 0.9, "",
+         "confidence above which a disagreeing test replaces the history (with pc.reject)", {}},
+        {"pc.reject_radius", ParamType::Int, 0, 8, 2, "pixels",
+         "a test whose raw neighbours within this radius all agree with it replaces a disagreeing history "
+         "(with pc.reject); 0 = confidence rule only", {}},
+    };
+  }
+  std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<PixelCorrectState>(); }
+};
+
+}  // namespace
+
+void registerPixelCorrect(std::vector<std::unique_ptr<Accumulation>>& out) {
+  out.push_back(std::make_unique<PixelCorrectAccumulation>());
+}
+
+}  // namespace sl

@@ -1,0 +1,376 @@
+// Pixel-correct shadow maps (Scherzer et al. 2007) on llvmpipe at small sizes: convergence to the
+// ray-traced reference, history reset on cuts, NaN safety under violent camera motion, no ghost
+// shadows behind a moving caster, debug views culled unless shown, hot reload of the update shader.
+#include "gl_test_util.h"
+
+#include "accumulation/pixel_correct.h"
+#include "metrics/metrics.h"
+#include "reference/reference.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace sl {
+
+using test::Frame;
+using test::GlHarness;
+
+namespace {
+
+struct Comparison {
+  ErrorMetrics metrics;
+  std::vector<float> reference;
+  std::vector<uint8_t> valid;
+};
+
+Comparison compareToReference(const Scene& scene, const Frame& f, double time) {
+  Comparison c;
+  ReferenceTracer tracer(scene, time);
+  ReferenceOptions opts;
+  opts.time = time;
+  c.reference = tracer.visibility(GBufferView{f.width, f.height, f.position.data(), f.normal.data()}, opts);
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<float> vis(n);
+  c.valid.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    vis[i] = f.visibility[2 * i];
+    c.valid[i] = f.position[4 * i + 3] > 0.5f;
+  }
+  c.metrics = compareVisibility(vis.data(), c.reference.data(), c.valid.data(), n);
+  return c;
+}
+
+FrameInput frameInput(const Camera& cam, int w, int h, double time = 0.0, bool cut = false) {
+  FrameInput in;
+  in.camera = cam;
+  in.width = w;
+  in.height = h;
+  in.time = time;
+  in.cut = cut;
+  return in;
+}
+
+bool hasPass(const Renderer& r, const std::string& name) {
+  for (const auto& p : r.stats().passes)
+    if (p.name == name) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(PixelCorrect, RegisteredWithItsParametersPresetsAndViews) {
+  Technique t = makeTechnique("pixel-correct");
+  EXPECT_EQ(t.accumulation->id(), "pixel-correct");
+  EXPECT_EQ(t.representation->id(), "depth-nearest");
+  EXPECT_EQ(t.layout->id(), "focused");
+  for (const char* key : {"pc.m", "pc.adaptive", "pc.m_moving", "pc.m_step", "pc.jitter", "pc.jitter_amplitude",
+                          "pc.rotate", "pc.rotation_deg", "pc.pause_jitter", "pc.disocclusion", "pc.history_format",
+                          "pc.reject", "pc.reject_confidence", "pc.reject_radius", "pc.warmup"})
+    EXPECT_TRUE(t.params.has(key)) << key;
+  EXPECT_EQ(t.params.choice("pc.history_format"), "fp16");
+  Technique pcf = makeTechnique("pixel-correct-pcf", {"pc.history_format=fp32"});
+  EXPECT_EQ(pcf.representation->id(), "depth-pcf");
+  EXPECT_EQ(pcf.params.choice("pc.history_format"), "fp32");
+  EXPECT_THROW(makeTechnique("pixel-correct", {"pc.m=0"}), ParamError);
+
+  Viewport vp(t);
+  auto views = vp.availableViews();
+  for (const char* v : {"confidence", "history", "disocclusion"})
+    EXPECT_NE(std::find(views.begin(), views.end(), v), views.end()) << v;
+
+  // Halton: radical inverse; the jitter stays inside the declared ranges and never repeats early.
+  EXPECT_FLOAT_EQ(halton(1, 2), 0.5f);
+  EXPECT_FLOAT_EQ(halton(3, 2), 0.75f);
+  EXPECT_FLOAT_EQ(halton(2, 3), 2.0f / 3.0f);
+  t.params.set("pc.jitter_amplitude", 2.0);
+  t.params.set("pc.rotation_deg", 20.0);
+  for (int i = 0; i < 64; ++i) {
+    LayoutJitter j = pixelCorrectJitter(t.params, i);
+    EXPECT_LE(std::abs(j.offsetTexels.x), 1.0f);
+    EXPECT_LE(std::abs(j.offsetTexels.y), 1.0f);
+    EXPECT_LE(std::abs(j.rotationRad), glm::radians(20.0f) + 1e-6f);
+    LayoutJitter k = pixelCorrectJitter(t.params, i + 1);
+    EXPECT_NE(j.offsetTexels, k.offsetTexels);
+  }
+  t.params.set("pc.jitter", 0);
+  t.params.set("pc.rotate", 0);
+  EXPECT_EQ(pixelCorrectJitter(t.params, 5).offsetTexels, glm::vec2(0.0f));
+  EXPECT_EQ(pixelCorrectJitter(t.params, 5).rotationRad, 0.0f);
+
+  // Adaptive exponent: low while moving or without history, +step per still frame, capped.
+  ParamSet& p = t.params;
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 0.0f, false, false), 15.0f);  // warm-up: fresh history at full m
+  p.set("pc.warmup", 0);
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 0.0f, false, false), 3.0f);
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 3.0f, false, true), 3.1f);
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 14.95f, false, true), 15.0f);
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 9.0f, true, true), 3.0f);
+  p.set("pc.adaptive", 0);
+  EXPECT_FLOAT_EQ(pixelCorrectNextExponent(p, 3.0f, true, true), 15.0f);
+}
+
+// The paper's claim: with a still camera the history converges to pixel-correct shadows. Empty
+// history, 60 frames, 512^2 focused map at 320x180 on `basic`, against the Embree reference.
+TEST(PixelCorrect, ConvergesToTheReferenceWithAStillCamera) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 320, hgt = 180;
+  FrameInput in = frameInput(scene.cameras.front(), w, hgt);
+
+  Viewport standard(makeTechnique("standard", {"shadowmap.size=512"}));
+  h.renderer.render(in, {&standard});
+  Comparison ref = compareToReference(scene, test::readFrame(h.renderer, standard, w, hgt), 0.0);
+
+  Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=512"}));
+  std::vector<double> wrong;
+  for (int f = 0; f < 60; ++f) {
+    h.renderer.render(in, {&pc});
+    if (f == 0 || f % 10 == 9) {
+      Frame fr = test::readFrame(h.renderer, pc, w, hgt);
+      wrong.push_back(compareToReference(scene, fr, 0.0).metrics.wrongPixelPct);
+    }
+  }
+  Frame last = test::readFrame(h.renderer, pc, w, hgt);
+  Comparison c = compareToReference(scene, last, 0.0);
+  std::printf("[pixel-correct] basic 320x180, 512^2: standard wrong %.3f%% | pixel-correct frame 1..60:", ref.metrics.wrongPixelPct);
+  for (double x : wrong) std::printf(" %.3f%%", x);
+  std::printf(" | final wrong %.3f%% (false shadow %.3f%%, false light %.3f%%), rmse %.4f, %s\n", c.metrics.wrongPixelPct,
+              c.metrics.falseShadowPct, c.metrics.falseLightPct, c.metrics.rmse, pc.accumulation->status().c_str());
+  EXPECT_EQ(last.nonfinite(), 0);
+  EXPECT_LT(c.metrics.wrongPixelPct, 0.1);
+  EXPECT_LT(c.metrics.wrongPixelPct, ref.metrics.wrongPixelPct);
+  EXPECT_LT(c.metrics.rmse, ref.metrics.rmse);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+  EXPECT_TRUE(h.shaders.errors().empty());
+}
+
+// A cut forgets everything: the first frame after it shows this frame's raw test exactly.
+TEST(PixelCorrect, CameraCutResetsTheHistory) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 160, hgt = 90;
+  Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=256"}));
+  Camera cam = scene.cameras.front();
+  for (int f = 0; f < 12; ++f) h.renderer.render(frameInput(cam, w, hgt), {&pc});
+  // Accumulated: the shown visibility is not the raw test any more.
+  auto acc = pc.visibilityTexture()->readFloats(2), raw = pc.rawVisibilityTexture()->readFloats(2);
+  int differ = 0;
+  for (size_t i = 0; i < acc.size(); i += 2) differ += acc[i] != raw[i];
+  EXPECT_GT(differ, 0);
+
+  cam.position += glm::vec3(0.7f, 0.3f, -0.4f);
+  h.renderer.render(frameInput(cam, w, hgt, 0.0, true), {&pc});
+  acc = pc.visibilityTexture()->readFloats(2);
+  raw = pc.rawVisibilityTexture()->readFloats(2);
+  differ = 0;
+  for (size_t i = 0; i < acc.size(); i += 2) differ += acc[i] != raw[i];
+  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(pc.accumulation->status().find("frame 1") != std::string::npos, true) << pc.accumulation->status();
+
+  // And accumulation starts again on the next frame.
+  h.renderer.render(frameInput(cam, w, hgt), {&pc});
+  EXPECT_NE(pc.accumulation->status().find("frame 2"), std::string::npos) << pc.accumulation->status();
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Violent motion: spins, jumps through geometry, a far plane that cuts the scene. History taps
+// land off-screen, behind the previous camera and beyond its far plane: never NaN or Inf.
+TEST(PixelCorrect, NoNonFiniteValuesUnderFastCameraMotion) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 160, hgt = 90;
+  for (const char* format : {"fp16", "fp32"}) {
+    Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=256", std::string("pc.history_format=") + format}));
+    Camera base = scene.cameras.front();
+    glm::vec3 center = base.target;
+    float radius = glm::length(base.position - base.target);
+    long long nonfinite = 0;
+    for (int f = 0; f < 24; ++f) {
+      Camera cam = base;
+      float a = f * 1.7f;  // ~100 degrees per frame around the target
+      float r = (f % 3 == 0) ? radius * 0.05f : radius * (0.5f + 0.25f * (f % 4));
+      cam.position = center + glm::vec3(std::cos(a) * r, 0.3f + (f % 5) * 0.8f, std::sin(a) * r);
+      if (f % 4 == 1) cam.target = cam.position + (cam.position - center);  // looking away
+      cam.farPlane = (f % 2) ? radius * 0.8f : 100.0f;                     // far plane through the scene
+      cam.nearPlane = (f % 3 == 2) ? 1.0f : 0.1f;
+      h.renderer.render(frameInput(cam, w, hgt), {&pc});
+      nonfinite += test::readFrame(h.renderer, pc, w, hgt).nonfinite();
+    }
+    EXPECT_EQ(nonfinite, 0) << format;
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+  EXPECT_TRUE(h.shaders.errors().empty());
+}
+
+// A moving caster must not leave a ghost shadow where it was: scene `moving` at 30 frames per
+// second, compared with the reference at the last frame, in particular where the box's shadow
+// was some frames earlier and the ground is now lit.
+TEST(PixelCorrect, MovingBoxLeavesNoGhostShadow) {
+  GlHarness h;
+  Scene scene = loadScene("moving", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 320, hgt = 180;
+  Camera cam = scene.cameras.front();
+  cam.position = glm::vec3(1.0f, 6.0f, 6.0f);  // looking down on the box and its shadow
+  cam.target = glm::vec3(0.5f, 0.0f, 0.5f);
+  Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=512"}));
+  Viewport standard(makeTechnique("standard", {"shadowmap.size=512"}));
+  Viewport noReject(makeTechnique("pixel-correct", {"shadowmap.size=512", "pc.reject=1"}));
+  const int frames = 48;
+  const std::vector<int> gaps = {2, 4, 8, 16};
+  std::map<int, std::vector<float>> earlierRef;
+  Comparison pcCmp, stdCmp, nrCmp;
+  double t = 0;
+  for (int f = 0; f < frames; ++f) {
+    t = 1.0 + f / 30.0;  // the box accelerates through the middle of its swing (t = 2)
+    h.renderer.render(frameInput(cam, w, hgt, t), {&pc, &standard, &noReject});
+    for (int g : gaps)
+      if (f == frames - 1 - g) earlierRef[g] = compareToReference(scene, test::readFrame(h.renderer, pc, w, hgt), t).reference;
+    if (f == frames - 1) {
+      pcCmp = compareToReference(scene, test::readFrame(h.renderer, pc, w, hgt), t);
+      stdCmp = compareToReference(scene, test::readFrame(h.renderer, standard, w, hgt), t);
+      nrCmp = compareToReference(scene, test::readFrame(h.renderer, noReject, w, hgt), t);
+    }
+  }
+  // The area the box's shadow left: in shadow `gap` frames ago, lit now (the ground is static).
+  auto leftArea = [&](const Viewport& vp, int gap) {
+    auto vis = vp.visibilityTexture()->readFloats(2);
+    long long area = 0, wrong = 0;
+    for (size_t i = 0; i < pcCmp.reference.size(); ++i) {
+      if (!pcCmp.valid[i] || earlierRef[gap][i] > 0.5f || pcCmp.reference[i] < 0.5f) continue;
+      ++area;
+      wrong += std::abs(vis[2 * i] - pcCmp.reference[i]) > kWrongThreshold;
+    }
+    return std::make_pair(area, wrong);
+  };
+  std::printf("[pixel-correct] moving 320x180, 512^2, t=%.2f: wrong standard %.3f%%, pixel-correct %.3f%%, "
+              "without rejection %.3f%%\n", t, stdCmp.metrics.wrongPixelPct, pcCmp.metrics.wrongPixelPct,
+              nrCmp.metrics.wrongPixelPct);
+  for (int g : gaps) {
+    auto [area, ghost] = leftArea(pc, g);
+    auto [area2, ghostNoReject] = leftArea(noReject, g);
+    auto [area3, ghostStandard] = leftArea(standard, g);
+    std::printf("  area the shadow left in the last %2d frames: %5lld px, wrong there: standard %lld, "
+                "pixel-correct %lld, without rejection %lld\n", g, area, ghostStandard, ghost, ghostNoReject);
+    ASSERT_GT(area, 40);  // the shadow really moved
+    (void)area2, (void)area3;
+    // No lasting ghost: what the shadow left 16 frames (0.53 s) ago is lit again but for at most
+    // 5% of the area, and the rejection rule does better than plain exponential smoothing there.
+    // Within the last ~8 frames a trailing band remains (measured and printed above; a known
+    // limitation, see techniques/accumulation/README.md).
+    if (g >= 16) {
+      EXPECT_LE(ghost, ghostStandard + area / 20) << "gap " << g;
+      EXPECT_LT(ghost, ghostNoReject) << "gap " << g;
+    }
+  }
+  // Overall: the lagging band of the moving shadow stays below 1% of the image (measured 0.52%
+  // with rejection, 0.98% without), and rejection reduces it.
+  EXPECT_LT(pcCmp.metrics.wrongPixelPct, 1.0);
+  EXPECT_LT(pcCmp.metrics.wrongPixelPct, nrCmp.metrics.wrongPixelPct);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Debug views are passes of their own and cost nothing unless shown.
+TEST(PixelCorrect, DebugViewsRunOnlyWhenShown) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 160, hgt = 90;
+  Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=256"}));
+  FrameInput in = frameInput(scene.cameras.front(), w, hgt);
+  h.renderer.render(in, {&pc});
+  EXPECT_TRUE(hasPass(h.renderer, "pixel-correct[0]"));
+  for (const char* v : {"confidence", "history", "disocclusion"}) EXPECT_FALSE(hasPass(h.renderer, std::string("view.") + v + "[0]"));
+  pc.shownViews = {"history"};
+  h.renderer.render(in, {&pc});
+  EXPECT_TRUE(hasPass(h.renderer, "view.history[0]"));
+  EXPECT_FALSE(hasPass(h.renderer, "view.confidence[0]"));
+  pc.shownViews = {"confidence", "history", "disocclusion"};
+  h.renderer.render(in, {&pc});
+  for (const char* v : {"confidence", "history", "disocclusion"}) {
+    ASSERT_TRUE(hasPass(h.renderer, std::string("view.") + v + "[0]")) << v;
+    auto px = pc.viewTexture(v)->readRgba8();
+    long long lit = 0;
+    for (size_t i = 0; i < px.size(); i += 4) lit += px[i] + px[i + 1] + px[i + 2] > 20;
+    EXPECT_GT(lit, w * hgt / 4) << v;
+  }
+  EXPECT_TRUE(h.shaders.errors().empty());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+namespace {
+namespace fs = std::filesystem;
+void rewriteFile(const fs::path& p, const std::string& from, const std::string& to) {
+  std::stringstream s;
+  s << std::ifstream(p).rdbuf();
+  std::string text = s.str();
+  auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  auto before = fs::last_write_time(p);
+  std::ofstream(p, std::ios::trunc) << text;
+  if (fs::last_write_time(p) == before) fs::last_write_time(p, before + std::chrono::seconds(1));
+}
+int lineOf(const fs::path& p, const std::string& needle) {
+  std::ifstream in(p);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.find(needle) != std::string::npos) return n;
+  return 0;
+}
+}  // namespace
+
+// Hot reload of the update shader: a broken edit keeps the last good program running and names
+// pixel_correct.frag:LINE; the fix rebuilds it.
+TEST(PixelCorrect, HotReloadOfTheUpdateShader) {
+  fs::path dir = fs::path(::testing::TempDir()) / "pixel_correct_shaders";
+  fs::remove_all(dir);
+  fs::copy(defaultShaderDir(), dir, fs::copy_options::recursive);
+  GlHarness h(dir.string());
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 96, hgt = 54;
+  Viewport pc(makeTechnique("pixel-correct", {"shadowmap.size=256"}));
+  FrameInput in = frameInput(scene.cameras.front(), w, hgt);
+  for (int f = 0; f < 3; ++f) h.renderer.render(in, {&pc});
+  ASSERT_TRUE(h.shaders.errors().empty());
+  auto good = pc.visibilityTexture()->readFloats(2);
+
+  const fs::path file = dir / "accumulation/pixel_correct.frag";
+  rewriteFile(file, "float s = f;", "float s = f +* ;");
+  h.shaders.reloadChanged();
+  auto errors = h.shaders.errors();
+  ASSERT_EQ(errors.size(), 1u);
+  const int bad = lineOf(file, "+* ;");
+  EXPECT_NE(errors[0].find("pixel_correct.frag:" + std::to_string(bad)), std::string::npos) << errors[0];
+  h.renderer.render(in, {&pc});
+  ASSERT_TRUE(hasPass(h.renderer, "pixel-correct[0]"));
+  auto still = pc.visibilityTexture()->readFloats(2);
+  double diff = 0;
+  for (size_t i = 0; i < still.size(); i += 2) diff += std::abs(still[i] - good[i]);
+  EXPECT_LT(diff / (w * hgt), 0.02);  // the last good program still accumulates (same view)
+  EXPECT_EQ(test::readFrame(h.renderer, pc, w, hgt).nonfinite(), 0);
+
+  // Fixed: rebuilt, and a visible change (w forced to 1: s = f) takes effect.
+  rewriteFile(file, "float s = f +* ;", "float s = f;");
+  rewriteFile(file, "o_visibility = vec2(s, a);", "o_visibility = vec2(f, a);");
+  EXPECT_GE(h.shaders.reloadChanged(), 1);
+  EXPECT_TRUE(h.shaders.errors().empty());
+  h.renderer.render(in, {&pc});
+  auto acc = pc.visibilityTexture()->readFloats(2), raw = pc.rawVisibilityTexture()->readFloats(2);
+  int differ = 0;
+  for (size_t i = 0; i < acc.size(); i += 2) differ += acc[i] != raw[i];
+  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+}  // namespace sl
