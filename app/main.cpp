@@ -12,6 +12,7 @@ const char* kUsage =
     "shadowlab - explore, compare and measure shadow-mapping techniques\n"
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
+    "            [--compare T2]... [--view NAME]... [--magnifier]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
@@ -23,7 +24,8 @@ const char* kUsage =
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders"});
+                 "--shaders", "--compare", "--view"},
+                {"--magnifier"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -33,6 +35,9 @@ int runExplorerCommand(int argc, char** argv) {
   o.maxFrames = args.getInt("--frames", 0);
   o.screenshotOnExit = args.get("--screenshot-on-exit");
   o.shaderDir = args.get("--shaders");
+  o.compareTechniques = args.all("--compare");  // more viewports, side by side, same camera
+  o.debugViews = args.all("--view");
+  o.magnifier = args.has("--magnifier");
   return sl::runExplorer(o);
 }
 

@@ -27,6 +27,11 @@ static Camera pickCamera(const Scene& scene, const std::string& name) {
 }
 
 int runRenderCommand(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--help") {
+      std::cout << kRenderUsage;
+      return 0;
+    }
   try {
     Args args(argc, argv, 2,
               {"--scene", "--technique", "--set", "--camera", "--path", "--size", "--frames", "--view", "--out",
