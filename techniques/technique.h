@@ -83,6 +83,9 @@ class AccumulationState {
   // Adds passes that read ctx.rawVisibility and write ctx.finalVisibility; returns false when
   // the accumulation does nothing, in which case the raw visibility is used directly.
   virtual bool addPasses(FrameGraph& graph, AccumulationContext& ctx) { return false; }
+  // False when the accumulation's own pass computes the shadow test (and writes the raw
+  // visibility itself), so the renderer adds no separate visibility pass.
+  virtual bool needsVisibilityPass() const { return true; }
   // Debug views this accumulation can draw (names), and the one-line status for the UI.
   virtual std::vector<std::string> views() const { return {}; }
   virtual std::string status() const { return ""; }

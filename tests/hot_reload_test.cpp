@@ -78,6 +78,18 @@ TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram)
   rewrite(fs::path(dir) / "passes/shade_visibility.frag", "o_color = shadePixel( +* ;", "o_color = shadePixel(");
   h.shaders.reloadChanged();
   EXPECT_TRUE(h.shaders.errors().empty());
+
+  // An error inside an included module (a semantic one, which Mesa reports without the
+  // module's source-string number) still names the module and its line.
+  rewrite(fs::path(dir) / "common/bias.glsl", "// edited\n", "// edited\nfloat brokenOnPurpose = undefinedName;\n");
+  h.shaders.reloadChanged();
+  bool named = false;
+  for (const auto& e : h.shaders.errors()) named |= e.find("shaders/common/bias.glsl:") != std::string::npos;
+  EXPECT_TRUE(named) << (h.shaders.errors().empty() ? "no error" : h.shaders.errors().back());
+  rewrite(fs::path(dir) / "common/bias.glsl", "float brokenOnPurpose = undefinedName;\n", "");
+
+  h.shaders.reloadChanged();
+  EXPECT_TRUE(h.shaders.errors().empty());
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 

@@ -71,7 +71,7 @@ TEST(PixelCorrect, RegisteredWithItsParametersPresetsAndViews) {
   EXPECT_EQ(t.layout->id(), "focused");
   for (const char* key : {"pc.m", "pc.adaptive", "pc.m_moving", "pc.m_step", "pc.jitter", "pc.jitter_amplitude",
                           "pc.rotate", "pc.rotation_deg", "pc.pause_jitter", "pc.disocclusion", "pc.history_format",
-                          "pc.reject", "pc.reject_confidence", "pc.reject_radius", "pc.warmup"})
+                          "pc.reject", "pc.reject_confidence", "pc.reject_neighbours", "pc.warmup"})
     EXPECT_TRUE(t.params.has(key)) << key;
   EXPECT_EQ(t.params.choice("pc.history_format"), "fp16");
   Technique pcf = makeTechnique("pixel-correct-pcf", {"pc.history_format=fp32"});

@@ -73,6 +73,14 @@ static std::string readText(const fs::path& p) {
 }
 
 // Each file gets a source-string number in #line so that compiler messages can be mapped back.
+// Mesa reports some semantic errors with source string 0 whatever #line said, so the file index
+// is also folded into the line number (file * kLineStride + line): either way maps back.
+static constexpr long kLineStride = 100000;
+
+static std::string lineDirective(int line, int fileIndex) {
+  return "#line " + std::to_string(fileIndex * kLineStride + line) + " " + std::to_string(fileIndex) + "\n";
+}
+
 std::string ShaderLibrary::assemble(const std::string& file, const std::string& prelude,
                                     std::vector<std::string>& fileNames) const {
   std::set<std::string> included;
@@ -85,7 +93,7 @@ std::string ShaderLibrary::assemble(const std::string& file, const std::string& 
       [&](const std::string& name, const std::string& text, const std::string& from) {
         int index = static_cast<int>(fileNames.size());
         fileNames.push_back(name);
-        out += "#line 1 " + std::to_string(index) + "\n";
+        out += lineDirective(1, index);
         std::istringstream lines(text);
         std::string line;
         int lineNo = 0;
@@ -102,7 +110,7 @@ std::string ShaderLibrary::assemble(const std::string& file, const std::string& 
                                          "' not found in " + dir_);
               expand(inc, readText(p), name);
             }
-            out += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+            out += lineDirective(lineNo + 1, index);
           } else {
             out += line + "\n";
           }
@@ -124,8 +132,13 @@ static std::string mapErrorLog(const std::string& log, const std::vector<std::st
     std::smatch m;
     if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nv)) {
       size_t idx = std::stoul(m[1]);
+      long line = std::stol(m[2]);
+      if (line >= kLineStride) {
+        idx = static_cast<size_t>(line / kLineStride);
+        line %= kLineStride;
+      }
       std::string file = idx < files.size() ? files[idx] : "?";
-      out += "shaders/" + file + ":" + std::string(m[2]) + ": " + std::string(m[m.size() - 1]) + "\n";
+      out += "shaders/" + file + ":" + std::to_string(line) + ": " + std::string(m[m.size() - 1]) + "\n";
     } else if (!line.empty()) {
       out += line + "\n";
     }

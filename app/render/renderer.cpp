@@ -303,6 +303,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     return;
   }
 
+  if (vp.accumulation->needsVisibilityPass())
   g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude, bindVisibilityInputs] {
            Technique& t = vp.technique;
            ProgramSpec spec{"visibility " + t.layout->id() + "+" + t.representation->id(),
@@ -337,7 +338,19 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.frameIndex = frameIndex_;
   for (const auto& name : vp.shownViews)
     if (vp.views_.count(name)) ctx.viewTargets[name] = vp.views_[name].get();
+  ctx.techniquePrelude = prelude;
+  ctx.bindTechniqueInputs = bindVisibilityInputs;
+  ctx.shadowMap = sm;
+  ctx.color = "color" + tag;
+  ctx.colorTex = vp.color_.get();
+  ctx.rawVisibilityTarget = vp.rawVisibility_.get();
   vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
+  if (ctx.wroteColor) {
+    g.requestSink("color" + tag);
+    g.requestSink(fin);
+    addDebugViewPasses(g, vp, tag, in);
+    return;
+  }
   const std::string visibility = vp.accumulated_ ? fin : raw;
   const Texture2D* visTex = vp.accumulated_ ? vp.finalVisibility_.get() : vp.rawVisibility_.get();
 

@@ -8,6 +8,7 @@
 #include "render/frame_graph.h"
 #include "technique.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -41,6 +42,17 @@ struct AccumulationContext {
   int frameIndex = 0;
   // Debug views requested on screen for this viewport, and where to draw them (RGBA8 targets).
   std::map<std::string, Texture2D*> viewTargets;
+  // For accumulations that run the shadow test and the shading in their own pass, as the paper
+  // does with multiple render targets: the technique's GLSL modules (a ProgramSpec prelude), a
+  // binder for the G-buffer (units 0 position, 1 normal, 3 albedo), the shadow map (unit 2) and
+  // the technique's uniforms, and the colour target. Such a pass writes rawVisibility itself.
+  std::string techniquePrelude;
+  std::function<void(const Program&)> bindTechniqueInputs;
+  std::string shadowMap;  // resource
+  std::string color;      // resource
+  Texture2D* colorTex = nullptr;
+  Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
+  bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
 };
 
 // A viewport: one technique with its own state and targets, sharing the camera with the others.

@@ -3,7 +3,7 @@
 // previous frame (0 = nothing there), b = accumulated confidence weight W (for pc.warmup).
 uniform sampler2D u_gPosition;  // world position, w = 1 covered
 uniform sampler2D u_gMotion;    // previous-frame NDC of this pixel's surface point, w = 1 valid
-uniform sampler2D u_raw;        // r = f(n) (this frame's test), g = confidence (eq. 5)
+uniform sampler2D u_raw;        // r = f(n) (this frame's test), g = confidence (eq. 5); views only
 uniform sampler2D u_history;    // previous frame's history
 uniform float u_hasHistory;     // 0 after a cut / on the first frame
 uniform mat4 u_view;            // current camera view
@@ -11,7 +11,7 @@ uniform mat4 u_invPrevProj;     // inverse of the previous frame's projection
 uniform float u_pc_disocclusion;
 uniform float u_pc_reject;
 uniform float u_pc_reject_confidence;
-uniform float u_pc_reject_radius;
+uniform float u_pc_reject_neighbours;
 
 const int PC_VALID = 0;        // history found and used
 const int PC_NONE = 1;         // no history at all (first frame, cut)
@@ -77,26 +77,18 @@ PcHistory pcLookup(ivec2 pixel) {
 }
 
 // Beyond the paper, for moving casters: a test that disagrees with the history by more than
-// u_pc_reject replaces it when it is unambiguous: confident, or every covered raw neighbour
-// within u_pc_reject_radius pixels got the same result (no shadow edge anywhere near).
-bool pcRejectHistory(ivec2 pixel, float f, float c, float history) {
+// u_pc_reject replaces it when it is unambiguous: confident, or the same at the four shadow-map
+// positions one texel around it (the test's own input would not change under any jitter, so the
+// history is stale: a caster moved). Needs the technique modules (visibility_term.glsl).
+bool pcRejectHistory(vec3 P, vec3 N, float f, float c, float history) {
   if (u_pc_reject >= 1.0 || abs(f - history) <= u_pc_reject) return false;
   if (c >= u_pc_reject_confidence) return true;
-  int r = int(u_pc_reject_radius + 0.5);
-  if (r <= 0) return false;
-  ivec2 size = textureSize(u_raw, 0);
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1);
-      if (texelFetch(u_gPosition, q, 0).w < 0.5) continue;
-      if (abs(texelFetch(u_raw, q, 0).r - f) > 0.01) return false;
-    }
-  return true;
+  return u_pc_reject_neighbours > 0.5 && visibilityUnambiguous(P, N, f);
 }
 
 // History for the update, with the rejection rule applied.
-PcHistory pcHistory(ivec2 pixel, float f, float c) {
+PcHistory pcHistory(ivec2 pixel, vec3 P, vec3 N, float f, float c) {
   PcHistory h = pcLookup(pixel);
-  if (h.state == PC_VALID && pcRejectHistory(pixel, f, c, h.s)) h.state = PC_REJECTED;
+  if (h.state == PC_VALID && pcRejectHistory(P, N, f, c, h.s)) h.state = PC_REJECTED;
   return h;
 }

@@ -3,7 +3,10 @@
 //   blue    off-screen / behind the camera / beyond the far plane in the previous frame
 //   orange  disoccluded (the previous frame saw another depth there)
 //   yellow  rejected: moving-caster rule (pc.reject)
+#include "common/visibility_term.glsl"
 #include "accumulation/pixel_correct.glsl"
+
+uniform sampler2D u_gNormal;
 
 out vec4 o_color;
 
@@ -14,7 +17,8 @@ void main() {
     return;
   }
   vec2 raw = texelFetch(u_raw, pixel, 0).rg;
-  PcHistory h = pcHistory(pixel, raw.r, clamp(raw.g, 0.0, 1.0));
+  vec3 N = normalize(texelFetch(u_gNormal, pixel, 0).xyz);
+  PcHistory h = pcHistory(pixel, texelFetch(u_gPosition, pixel, 0).xyz, N, raw.r, clamp(raw.g, 0.0, 1.0));
   vec3 color = vec3(0.35);
   if (h.state == PC_NONE) color = vec3(0.6, 0.2, 0.8);
   else if (h.state == PC_OFFSCREEN) color = vec3(0.15, 0.35, 0.95);

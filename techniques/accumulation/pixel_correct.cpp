@@ -66,34 +66,34 @@ void PixelCorrectState::ensureHistory(int w, int h, GLenum format) {
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(history_[i]->id(), 0, GL_RGBA, GL_FLOAT, zero);
     fboFinal_[i] = nullptr;
+    fboColor_[i] = nullptr;
   }
   hasHistory_ = false;
 }
 
 namespace {
 
-// Every parameter as u_<key> (as setTechniqueUniforms does) plus the reprojection inputs.
-void setAccumulationUniforms(const Program& p, const ParamSet& params, const glm::mat4& view, const glm::mat4& prevProj,
-                             bool hasHistory, float m) {
-  for (const auto& d : params.decls()) p.set(uniformName(d.key), static_cast<float>(params.get(d.key)));
+// The reprojection inputs and the exponent; the technique's own uniforms and the G-buffer /
+// shadow map come from ctx.bindTechniqueInputs (units 0-3).
+void setAccumulationUniforms(const Program& p, const glm::mat4& view, const glm::mat4& prevProj, bool hasHistory,
+                             float m) {
   p.set("u_view", view);
   p.set("u_invPrevProj", glm::inverse(prevProj));
   p.set("u_hasHistory", hasHistory ? 1.0f : 0.0f);
   p.set("u_m", m);
-  p.set("u_gPosition", 0);
-  p.set("u_gMotion", 1);
-  p.set("u_raw", 2);
-  p.set("u_history", 3);
-  p.set("u_gNormal", 4);
+  p.set("u_gMotion", 5);
+  p.set("u_history", 6);
+  p.set("u_raw", 7);
 }
 
-void bindInputs(const AccumulationContext& ctx, const Texture2D* history) {
-  glBindTextureUnit(0, ctx.gPosition->id());
-  glBindTextureUnit(1, ctx.gMotion->id());
-  glBindTextureUnit(2, ctx.rawVisibilityTex->id());
-  glBindTextureUnit(3, history->id());
-  glBindTextureUnit(4, ctx.gNormal->id());
+void bindInputs(const AccumulationContext& ctx, const Program& p, const Texture2D* history) {
+  ctx.bindTechniqueInputs(p);
+  glBindTextureUnit(5, ctx.gMotion->id());
+  glBindTextureUnit(6, history->id());
+  glBindTextureUnit(7, ctx.rawVisibilityTex->id());
 }
+
+void unbindSampler() { glBindSampler(2, 0); }
 
 // The fullscreen triangle has no attributes; a core profile still wants a vertex array bound.
 // A throwaway one keeps this file free of per-context GL state (tests open several contexts).
@@ -123,33 +123,30 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   graph.importResource(prevRes);
   const AccumulationContext c = ctx;  // passes run after this returns: keep a copy
   Texture2D* prevTex = history_[read].get();
-  Texture2D* nextTex = history_[write].get();
-  if (fboFinal_[write] != ctx.finalVisibilityTex) {
+  if (fboFinal_[write] != ctx.finalVisibilityTex || fboColor_[write] != ctx.colorTex) {
     fbo_[write] = Framebuffer("pixel-correct update");
-    fbo_[write].attach({ctx.finalVisibilityTex, nextTex}, nullptr);
+    fbo_[write].attach({ctx.colorTex, ctx.finalVisibilityTex, history_[write].get(), ctx.rawVisibilityTarget}, nullptr);
     fboFinal_[write] = ctx.finalVisibilityTex;
+    fboColor_[write] = ctx.colorTex;
   }
   Framebuffer* fbo = &fbo_[write];
+  const std::string prelude = ctx.techniquePrelude;
 
-  graph.add({"pixel-correct" + tag, {"gbuffer", ctx.rawVisibility, prevRes}, {ctx.finalVisibility, nextRes},
-             [c, prevTex, nextTex, fbo, hasHistory, m] {
-               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, ""};
+  // One pass, as in the paper: test, reprojection, update and shading with multiple targets.
+  graph.add({"pixel-correct" + tag, {"gbuffer", ctx.shadowMap, prevRes},
+             {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility}, [c, prevTex, fbo, hasHistory, m, prelude] {
+               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, prelude};
                Program& p = c.shaders->get(spec);
-               if (!p.valid()) {
-                 // Never built: show the raw test and leave no history behind.
-                 glCopyImageSubData(c.rawVisibilityTex->id(), GL_TEXTURE_2D, 0, 0, 0, 0, c.finalVisibilityTex->id(),
-                                    GL_TEXTURE_2D, 0, 0, 0, 0, c.width, c.height, 1);
-                 const float zero[4] = {0, 0, 0, 0};
-                 glClearTexImage(nextTex->id(), 0, GL_RGBA, GL_FLOAT, zero);
-                 return;
-               }
+               if (!p.valid()) return;  // the error is shown; nothing sensible to draw
                fbo->bind();
                glViewport(0, 0, c.width, c.height);
                p.use();
-               setAccumulationUniforms(p, *c.params, c.view, c.prevProj, hasHistory, m);
-               bindInputs(c, prevTex);
+               bindInputs(c, p, prevTex);
+               setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
                drawTriangle();
+               unbindSampler();
              }});
+  ctx.wroteColor = true;
 
   static const char* kViews[] = {"confidence", "history", "disocclusion"};
   for (const char* name : kViews) {
@@ -158,8 +155,8 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
     Texture2D* target = it->second;
     const std::string res = std::string("view.") + name + tag;
     const std::string file = std::string("accumulation/views_") + name + ".frag";
-    graph.add({res, {"gbuffer", ctx.rawVisibility, prevRes}, {res}, [c, prevTex, target, file, hasHistory, m] {
-                 ProgramSpec spec{"view " + file, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}}, ""};
+    graph.add({res, {"gbuffer", ctx.rawVisibility, prevRes}, {res}, [c, prevTex, target, file, hasHistory, m, prelude] {
+                 ProgramSpec spec{"view " + file, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}}, prelude};
                  Program& p = c.shaders->get(spec);
                  if (!p.valid()) return;
                  Framebuffer fb("view target");
@@ -167,9 +164,10 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                  fb.bind();
                  glViewport(0, 0, target->width(), target->height());
                  p.use();
-                 setAccumulationUniforms(p, *c.params, c.view, c.prevProj, hasHistory, m);
-                 bindInputs(c, prevTex);
+                 bindInputs(c, p, prevTex);
+                 setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
                  drawTriangle();
+                 unbindSampler();
                }});
     graph.requestSink(res);
   }
@@ -220,9 +218,9 @@ class PixelCorrectAccumulation : public Accumulation {
          "this and the test is unambiguous (confident, or its whole neighbourhood agrees); 1 = off", {}},
         {"pc.reject_confidence", ParamType::Float, 0, 1, 0.9, "",
          "confidence above which a disagreeing test replaces the history (with pc.reject)", {}},
-        {"pc.reject_radius", ParamType::Int, 0, 8, 2, "pixels",
-         "a test whose raw neighbours within this radius all agree with it replaces a disagreeing history "
-         "(with pc.reject); 0 = confidence rule only", {}},
+        {"pc.reject_neighbours", ParamType::Bool, 0, 1, 1, "",
+         "a disagreeing test also replaces the history when the map gives the same answer one texel around the "
+         "receiver in every direction (no jitter could change it: the caster moved) (with pc.reject)", {}},
     };
   }
   std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<PixelCorrectState>(); }

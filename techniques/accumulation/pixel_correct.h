@@ -29,6 +29,7 @@ class PixelCorrectState : public AccumulationState {
   void reset() override;
   bool addPasses(FrameGraph& graph, AccumulationContext& ctx) override;
   std::vector<std::string> views() const override { return {"confidence", "history", "disocclusion"}; }
+  bool needsVisibilityPass() const override { return false; }  // its own pass runs the test
   std::string status() const override;
 
   float exponent() const { return m_; }
@@ -38,8 +39,9 @@ class PixelCorrectState : public AccumulationState {
  private:
   void ensureHistory(int w, int h, GLenum format);
   std::array<std::unique_ptr<Texture2D>, 2> history_;  // r = s, g = linear view depth (0 = none), b = W
-  std::array<Framebuffer, 2> fbo_;                     // final visibility + history[i]
+  std::array<Framebuffer, 2> fbo_;                     // colour, final visibility, history[i], raw
   const Texture2D* fboFinal_[2] = {nullptr, nullptr};
+  const Texture2D* fboColor_[2] = {nullptr, nullptr};
   int current_ = 0;  // history_[current_] holds the latest frame
   bool hasHistory_ = false;
   float m_ = 0.0f;
