@@ -2,6 +2,7 @@
 // magnifier live in their own files; this one wires them to GLFW, ImGui and the renderer.
 #include "explorer/explorer.h"
 
+#include "explorer/error_panel.h"
 #include "explorer/explorer_state.h"
 #include "explorer/magnifier.h"
 #include "explorer/screenshot.h"
@@ -147,7 +148,8 @@ void prepareDefaultFramebuffer(int width, int height) {
   glClear(GL_COLOR_BUFFER_BIT);
 }
 
-void renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLayout& layout) {
+// Returns false when the frame failed (the panel shows why).
+bool renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLayout& layout) {
   FrameInput in;
   in.camera = state.camera.camera();
   in.time = state.sceneTime;
@@ -158,11 +160,13 @@ void renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLay
     renderer.render(in, shownViewports(state));
     state.cutPending = false;
     state.renderError.clear();
+    return true;
   } catch (const std::exception& e) {
     // Keep the window alive: the panel shows the message and the next frame tries again.
     if (state.renderError != e.what()) std::cerr << "shadowlab: render failed: " << e.what() << "\n";
     state.renderError = e.what();
   }
+  return false;
 }
 
 // Owns everything holding GL objects, so it all goes before the context does.
@@ -170,6 +174,14 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   ShaderLibrary shaders(state.shaderDir);
   Renderer renderer(shaders);
   renderer.setScene(*state.scene);
+  // After the renderer, so it goes first: it joins its worker and frees its textures while the
+  // context and the scene still exist.
+  ErrorPanel errorPanel;
+  struct PanelLink {
+    ExplorerState& state;
+    ~PanelLink() { state.errorPanel = nullptr; }
+  } panelLink{state};
+  state.errorPanel = &errorPanel;
   state.slots.resize(kMaxViewports);
   for (size_t i = 0; i < techniques.size() && i < state.slots.size(); ++i)
     state.slots[i].viewport = std::make_unique<Viewport>(std::move(techniques[i]));
@@ -226,7 +238,8 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
         layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
                        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
     advanceCameraAndTime(window, state, dt);
-    renderViewports(renderer, state, layout);
+    const bool rendered = renderViewports(renderer, state, layout);
+    errorPanel.afterRender(state, renderer, layout.renderWidth, layout.renderHeight, rendered);
 
     // Drawn after rendering so the images reference this frame's textures (a resize may have
     // replaced them).

@@ -1,5 +1,7 @@
 #include "explorer/explorer_state.h"
 
+#include "explorer/error_panel.h"
+
 #include <algorithm>
 
 namespace sl {
@@ -25,6 +27,8 @@ bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& id
     state.sceneError = e.what();
     return false;
   }
+  // The accuracy panel's worker may be building a BVH from the old scene: stop it first.
+  if (state.errorPanel) state.errorPanel->beforeSceneChange();
   state.scene = std::move(loaded);
   state.sceneLabel = idOrPath;
   state.sceneError.clear();
@@ -94,6 +98,7 @@ std::vector<std::string> availableViewNames(const ExplorerState& state) {
   };
   for (Viewport* vp : shownViewports(state))
     for (const std::string& n : vp->availableViews()) addUnique(n);
+  if (!names.empty()) addUnique(ErrorPanel::kViewName);
   return names;
 }
 

@@ -14,6 +14,8 @@
 
 namespace sl {
 
+class ErrorPanel;
+
 constexpr int kMaxViewports = 4;
 
 struct ViewportSlot {
@@ -55,6 +57,8 @@ struct ExplorerState {
   std::string renderError;  // exception from the last frame, shown until a frame works again
   float smoothedFrameMs = 0.0f;
   int hoveredViewport = -1;  // viewport image under the mouse in the previous frame
+  // Accuracy panel and `error` view (owned by the frame loop; null outside it).
+  ErrorPanel* errorPanel = nullptr;
 };
 
 // Loads a scene (id or path) and hands it to the renderer; on failure the current scene stays
@@ -68,7 +72,8 @@ void setViewportPreset(ExplorerState& state, int slot, const std::string& preset
 // Makes sure the first viewportCount slots exist; new ones get presets not shown yet, so
 // going from 1 to 2 viewports immediately compares two different techniques.
 void ensureViewportSlots(ExplorerState& state);
-// Union of the debug views the shown viewports offer, in a stable order (common ones first).
+// Union of the debug views the shown viewports offer, in a stable order (common ones first),
+// then the explorer's own `error` view (drawn from the accuracy panel, not by the renderer).
 std::vector<std::string> availableViewNames(const ExplorerState& state);
 // Copies the selection into each viewport's shownViews (only the views it has), and drops an
 // enlarged view that is no longer selected.

@@ -1,5 +1,6 @@
 #include "explorer/side_panel.h"
 
+#include "explorer/error_panel.h"
 #include "explorer/param_panel.h"
 
 #include <imgui.h>
@@ -182,6 +183,9 @@ void drawDebugViewPanel(ExplorerState& state) {
       else
         state.selectedViews.erase(name);
     }
+    if (name == ErrorPanel::kViewName && ImGui::IsItemHovered())
+      ImGui::SetTooltip("Difference to the ray-traced reference (needs a resting camera):\n"
+                        "grey = agrees, orange = false shadow, blue = false light, magenta = NaN.");
     ImGui::NextColumn();
   }
   ImGui::Columns(1);
@@ -234,6 +238,7 @@ void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary
   drawViewportPanels(state);
   drawDebugViewPanel(state);
   drawTimingPanel(renderer);
+  if (state.errorPanel) state.errorPanel->drawPanel(state);
   drawToolsPanel(state);
   ImGui::End();
 }

@@ -1,5 +1,7 @@
 #include "explorer/viewport_area.h"
 
+#include "explorer/error_panel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -42,18 +44,38 @@ void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSl
   draw->PopClipRect();
 }
 
+// The texture of a debug view: the renderer's, or the accuracy panel's for `error`.
+const Texture2D* debugViewTexture(const ExplorerState& state, const Viewport& vp, int index,
+                                  const std::string& name) {
+  if (name == ErrorPanel::kViewName) return state.errorPanel ? state.errorPanel->errorTexture(index) : nullptr;
+  return vp.viewTexture(name);
+}
+
+// Text centred in a rectangle, clipped to it (for views that have no image yet).
+void placeholder(ImDrawList* draw, ImVec2 min, ImVec2 max, const std::string& text) {
+  draw->AddRectFilled(min, max, IM_COL32(40, 40, 44, 255));
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  draw->PushClipRect(min, max, true);
+  draw->AddText(ImVec2(std::max(min.x + 4.0f, (min.x + max.x - size.x) * 0.5f), (min.y + max.y - size.y) * 0.5f),
+                IM_COL32(200, 200, 200, 255), text.c_str());
+  draw->PopClipRect();
+}
+
 // Thumbnails in a row, each keeping the image aspect, name underneath.
-void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& slot, int index) {
+void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& slot, int index,
+                    const ExplorerState& state) {
   Viewport& vp = *slot.viewport;
-  if (vp.shownViews.empty() || tile.thumbsSize.y <= 0) return;
+  std::vector<std::string> views = vp.shownViews;
+  if (state.selectedViews.count(ErrorPanel::kViewName)) views.push_back(ErrorPanel::kViewName);
+  if (views.empty() || tile.thumbsSize.y <= 0) return;
   const float labelH = ImGui::GetTextLineHeight();
   const float aspect = tile.imageSize.x / std::max(tile.imageSize.y, 1.0f);
-  const int count = int(vp.shownViews.size());
+  const int count = int(views.size());
   const float slotW = (tile.thumbsSize.x - kGap * float(count - 1)) / float(count);
   const ImVec2 thumb = fitAspect(ImVec2(slotW, tile.thumbsSize.y - labelH - kGap), aspect);
 
   for (int i = 0; i < count; ++i) {
-    const std::string& name = vp.shownViews[size_t(i)];
+    const std::string& name = views[size_t(i)];
     const ImVec2 min(tile.thumbsMin.x + float(i) * (slotW + kGap), tile.thumbsMin.y + kGap);
     const ImVec2 max(min.x + thumb.x, min.y + thumb.y);
     ImGui::SetCursorScreenPos(min);
@@ -61,8 +83,10 @@ void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& sl
     const bool clicked = ImGui::InvisibleButton("thumbnail", thumb);
     const bool hovered = ImGui::IsItemHovered();
     ImGui::PopID();
-    if (const Texture2D* tex = vp.viewTexture(name); tex && tex->id())
+    if (const Texture2D* tex = debugViewTexture(state, vp, index, name); tex && tex->id())
       addFlippedImage(draw, tex, min, max);
+    else if (name == ErrorPanel::kViewName && state.errorPanel)
+      placeholder(draw, min, max, state.errorPanel->errorViewStatus());
     else
       draw->AddRectFilled(min, max, IM_COL32(40, 40, 40, 255));
     const bool enlarged = slot.enlargedView == name;
@@ -135,7 +159,8 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
     drawTileHeader(draw, tile, slot, i);
 
     const ImVec2 imageMax(tile.imageMin.x + tile.imageSize.x, tile.imageMin.y + tile.imageSize.y);
-    const Texture2D* shown = slot.enlargedView.empty() ? vp.colorTexture() : vp.viewTexture(slot.enlargedView);
+    const Texture2D* shown =
+        slot.enlargedView.empty() ? vp.colorTexture() : debugViewTexture(state, vp, i, slot.enlargedView);
     ImGui::SetCursorScreenPos(tile.imageMin);
     ImGui::PushID(i);
     ImGui::InvisibleButton("image", tile.imageSize,
@@ -144,6 +169,8 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
     ImGui::PopID();
     if (shown && shown->id()) {
       addFlippedImage(draw, shown, tile.imageMin, imageMax);
+    } else if (slot.enlargedView == ErrorPanel::kViewName && state.errorPanel) {
+      placeholder(draw, tile.imageMin, imageMax, state.errorPanel->errorViewStatus());
     } else {
       draw->AddRectFilled(tile.imageMin, imageMax, IM_COL32(45, 20, 20, 255));
       draw->AddText(ImVec2(tile.imageMin.x + 10, tile.imageMin.y + 10), IM_COL32(255, 120, 120, 255),
@@ -163,7 +190,7 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
     } else if (hovered) {
       result.hoveredViewport = i;
     }
-    drawThumbnails(draw, tile, slot, i);
+    drawThumbnails(draw, tile, slot, i, state);
   }
   ImGui::End();
   ImGui::PopStyleColor();

@@ -1,0 +1,756 @@
+#include "explorer/error_panel.h"
+
+#include "bench/reference_cache.h"
+#include "explorer/explorer_state.h"
+#include "reference/reference.h"
+#include "render/renderer.h"
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace sl {
+
+// ---------------------------------------------------------------------------------------------
+// Logic
+
+namespace {
+
+bool nearlyEqual(float a, float b) {
+  return std::abs(a - b) <= 1e-6f * std::max({1.0f, std::abs(a), std::abs(b)});
+}
+bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) {
+  return nearlyEqual(a.x, b.x) && nearlyEqual(a.y, b.y) && nearlyEqual(a.z, b.z);
+}
+
+}  // namespace
+
+RestKeyChange compareRestKeys(const RestKey& a, const RestKey& b) {
+  RestKeyChange c;
+  const Camera &p = a.camera, &q = b.camera;
+  c.camera = !nearlyEqual(p.position, q.position) || !nearlyEqual(p.target, q.target) ||
+             !nearlyEqual(p.up, q.up) || !nearlyEqual(p.fovDeg, q.fovDeg) ||
+             !nearlyEqual(p.nearPlane, q.nearPlane) || !nearlyEqual(p.farPlane, q.farPlane);
+  c.size = a.width != b.width || a.height != b.height;
+  c.time = a.time != b.time;
+  c.scene = a.sceneGeneration != b.sceneGeneration;
+  return c;
+}
+
+bool sameRestKey(const RestKey& a, const RestKey& b) { return !compareRestKeys(a, b).any(); }
+
+bool RestDetector::update(const RestKey& key, double now) {
+  now_ = now;
+  if (!have_) {
+    have_ = true;
+    key_ = key;
+    stillSince_ = now;
+    lastChange_ = RestKeyChange{};
+    lastChange_.scene = true;
+    return resting();
+  }
+  const RestKeyChange change = compareRestKeys(key_, key);
+  if (change.any()) {
+    lastChange_ = change;
+    stillSince_ = now;
+  }
+  key_ = key;
+  return resting();
+}
+
+void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& point) {
+  for (ChartPoint& p : points) {
+    if (p.config == point.config) {
+      p = point;
+      return;
+    }
+  }
+  points.push_back(point);
+}
+
+std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points) {
+  std::vector<size_t> order(points.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (points[a].ms != points[b].ms) return points[a].ms < points[b].ms;
+    return points[a].wrongPct < points[b].wrongPct;
+  });
+  std::vector<size_t> front;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i : order) {
+    // Sorted by time, then error: a point is on the front when it is strictly less wrong than
+    // every point at least as fast.
+    if (points[i].wrongPct < best) {
+      front.push_back(i);
+      best = points[i].wrongPct;
+    }
+  }
+  return front;
+}
+
+double ChartAxis::toUnit(double v) const {
+  double t;
+  if (log) {
+    v = std::max(v, lo);
+    t = (std::log10(v) - std::log10(lo)) / std::max(1e-12, std::log10(hi) - std::log10(lo));
+  } else {
+    t = (v - lo) / std::max(1e-12, hi - lo);
+  }
+  return std::clamp(t, 0.0, 1.0);
+}
+
+namespace {
+
+// Largest "nice" step (1, 2, 5 x 10^k) giving at most `maxTicks` intervals over `span`.
+double niceStep(double span, int maxTicks) {
+  const double raw = span / std::max(1, maxTicks);
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * p >= raw) return m * p;
+  return 10.0 * p;
+}
+
+}  // namespace
+
+std::vector<double> ChartAxis::ticks() const {
+  std::vector<double> t;
+  if (log) {
+    const int d0 = int(std::floor(std::log10(lo) + 1e-9)), d1 = int(std::ceil(std::log10(hi) - 1e-9));
+    const bool fewDecades = d1 - d0 <= 2;
+    for (int d = d0; d <= d1; ++d) {
+      for (double m : {1.0, 2.0, 5.0}) {
+        if (m != 1.0 && !fewDecades) continue;
+        const double v = m * std::pow(10.0, d);
+        if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) t.push_back(v);
+      }
+    }
+    return t;
+  }
+  const double step = niceStep(hi - lo, 5);
+  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step)
+    t.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  return t;
+}
+
+ChartAxis chooseChartAxis(double minValue, double maxValue, double floor, double logRatio) {
+  ChartAxis a;
+  if (!(minValue <= maxValue)) minValue = maxValue = 0;  // no points / NaN
+  const double lo = std::max(minValue, floor), hi = std::max(maxValue, floor);
+  if (hi / lo > logRatio) {
+    a.log = true;
+    a.lo = std::pow(10.0, std::floor(std::log10(lo)));
+    a.hi = std::pow(10.0, std::ceil(std::log10(hi)));
+    if (a.hi <= a.lo) a.hi = a.lo * 10.0;
+    return a;
+  }
+  // Linear from zero: distances to the origin then read as ratios, which is what one compares.
+  double top = maxValue > 0 ? maxValue * 1.1 : 1.0;
+  const double step = niceStep(top, 5);
+  a.lo = 0;
+  a.hi = std::ceil(top / step - 1e-9) * step;
+  return a;
+}
+
+std::string formatTick(double v) {
+  char buf[32];
+  const double a = std::abs(v);
+  if (a == 0)
+    return "0";
+  else if (a >= 100)
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  else if (a >= 1)
+    std::snprintf(buf, sizeof buf, "%g", std::round(v * 10) / 10);
+  else
+    std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+ViewportCost viewportFrameMs(const std::vector<PassTiming>& passes, int viewportIndex) {
+  ViewportCost c;
+  const std::string tag = "[" + std::to_string(viewportIndex) + "]";
+  for (const PassTiming& p : passes) {
+    if (p.name == "gbuffer") {
+      c.gbufferMs += p.ms;
+      continue;
+    }
+    const bool mine = p.name.size() > tag.size() &&
+                      p.name.compare(p.name.size() - tag.size(), tag.size(), tag) == 0;
+    if (!mine || p.name.rfind("view.", 0) == 0) continue;
+    c.ownMs = std::max(c.ownMs, 0.0) + p.ms;
+  }
+  return c;
+}
+
+std::string paramSummary(const ParamSet& current, const ParamSet& reference) {
+  std::string s;
+  for (const ParamDecl& d : current.decls()) {
+    const double v = current.get(d.key);
+    if (reference.has(d.key) && reference.get(d.key) == v) continue;
+    s += (s.empty() ? "" : ", ") + d.key + "=" + formatValue(d, v);
+  }
+  return s;
+}
+
+std::string configString(const Technique& technique) {
+  std::string summary;
+  try {
+    summary = paramSummary(technique.params, makeTechnique(technique.presetId).params);
+  } catch (const std::exception&) {
+    summary = "?";
+  }
+  return technique.label() + (summary.empty() ? "" : " {" + summary + "}");
+}
+
+void MedianWindow::add(double v) {
+  values_.push_back(v);
+  if (values_.size() > size_) values_.erase(values_.begin());
+}
+
+double MedianWindow::median() const {
+  if (values_.empty()) return -1;
+  std::vector<double> v = values_;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Worker
+
+namespace {
+
+constexpr double kRemeasureSeconds = 0.5;  // metrics of a resting view follow accumulation and edits
+constexpr int kReferenceSamples = 64;      // light samples per pixel for area lights (as `bench`)
+constexpr size_t kReferencesKept = 4;      // jumping back to a camera needs no new trace
+constexpr int kChunks = 48;                // progress and cancellation granularity
+
+double secondsNow() {
+  using Clock = std::chrono::steady_clock;
+  static const Clock::time_point start = Clock::now();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+struct ErrorPanel::Job {
+  RestKey key;
+  const Scene* scene = nullptr;  // read only while the BVH is built (beforeSceneChange joins)
+  bool sceneMoves = false;
+  int threads = 1;
+  std::vector<float> position, normal;  // G-buffer readback, rows bottom-up
+
+  std::atomic<int> rowsDone{0};
+  std::atomic<bool> building{true};
+  std::atomic<bool> cancel{false};
+  std::atomic<bool> done{false};
+  double started = 0;
+
+  // Results, read by the GL thread only after `done`.
+  std::vector<float> visibility;
+  std::vector<uint8_t> valid;
+  std::string error;
+  double buildMs = 0, traceMs = 0;
+  std::thread thread;
+
+  void run() {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    try {
+      ReferenceTracer tracer(*scene, sceneMoves ? key.time : 0.0);
+      scene = nullptr;
+      building = false;
+      const auto t1 = Clock::now();
+      buildMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
+      const int w = key.width, h = key.height;
+      const size_t n = size_t(w) * size_t(h);
+      valid.resize(n);
+      for (size_t i = 0; i < n; ++i) valid[i] = position[4 * i + 3] > 0.5f ? 1 : 0;
+      visibility.assign(n, 0.0f);
+      // Rows are traced in chunks so progress can be shown and a moving camera cancels within
+      // one chunk. The tracer sees the whole image with only the chunk's pixels marked covered:
+      // pixel indices (which seed the light samples) are then those of a whole-image trace, so
+      // the result equals `shadowlab reference` for the same frame.
+      std::vector<float> masked(position.size(), 0.0f);
+      ReferenceOptions options;
+      options.time = key.time;
+      options.lightSamples = kReferenceSamples;
+      options.threads = threads;
+      const int chunkRows = std::max(1, (h + kChunks - 1) / kChunks);
+      for (int y0 = 0; y0 < h; y0 += chunkRows) {
+        if (cancel) break;
+        const int y1 = std::min(h, y0 + chunkRows);
+        const size_t a = size_t(y0) * w, b = size_t(y1) * w;
+        if (std::any_of(valid.begin() + long(a), valid.begin() + long(b), [](uint8_t v) { return v != 0; })) {
+          std::copy(position.begin() + long(4 * a), position.begin() + long(4 * b), masked.begin() + long(4 * a));
+          const std::vector<float> part = tracer.visibility(GBufferView{w, h, masked.data(), normal.data()}, options);
+          std::copy(part.begin() + long(a), part.begin() + long(b), visibility.begin() + long(a));
+          std::fill(masked.begin() + long(4 * a), masked.begin() + long(4 * b), 0.0f);
+        }
+        rowsDone = y1;
+      }
+      traceMs = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    position.clear();
+    position.shrink_to_fit();
+    normal.clear();
+    normal.shrink_to_fit();
+    done.store(true, std::memory_order_release);
+  }
+};
+
+ErrorPanel::ErrorPanel() = default;
+
+ErrorPanel::~ErrorPanel() { joinAll(); }
+
+void ErrorPanel::cancelActive() {
+  if (!active_) return;
+  active_->cancel = true;
+  retiring_.push_back(std::move(active_));
+}
+
+void ErrorPanel::joinAll() {
+  cancelActive();
+  for (auto& job : retiring_)
+    if (job->thread.joinable()) job->thread.join();
+  retiring_.clear();
+}
+
+void ErrorPanel::beforeSceneChange() {
+  joinAll();
+  references_.clear();
+  currentRef_ = 0;
+  haveFailed_ = false;
+  jobError_.clear();
+  ++sceneGeneration_;
+}
+
+void ErrorPanel::pollJobs() {
+  for (size_t i = 0; i < retiring_.size();) {
+    if (retiring_[i]->done.load(std::memory_order_acquire)) {
+      retiring_[i]->thread.join();
+      retiring_.erase(retiring_.begin() + long(i));
+    } else {
+      ++i;
+    }
+  }
+  if (!active_ || !active_->done.load(std::memory_order_acquire)) return;
+  active_->thread.join();
+  Job& job = *active_;
+  if (!job.error.empty()) {
+    jobError_ = job.error;
+    failedKey_ = job.key;
+    haveFailed_ = true;
+  } else if (!job.cancel) {
+    Reference ref;
+    ref.key = job.key;
+    ref.visibility = std::move(job.visibility);
+    ref.valid = std::move(job.valid);
+    ref.id = nextReferenceId_++;
+    ref.traceMs = job.traceMs;
+    ref.buildMs = job.buildMs;
+    references_.push_back(std::move(ref));
+    if (references_.size() > kReferencesKept) references_.erase(references_.begin());
+  }
+  active_.reset();
+}
+
+const ErrorPanel::Reference* ErrorPanel::findReference(const RestKey& key) const {
+  for (const Reference& r : references_)
+    if (sameRestKey(r.key, key)) return &r;
+  return nullptr;
+}
+
+const ErrorPanel::Reference* ErrorPanel::currentReference() const {
+  for (const Reference& r : references_)
+    if (r.id == currentRef_) return &r;
+  return nullptr;
+}
+
+void ErrorPanel::startJob(ExplorerState& state, Renderer& renderer, const RestKey& key) {
+  const Texture2D& pos = renderer.gPosition();
+  if (pos.width() != key.width || pos.height() != key.height) return;  // not this frame's G-buffer
+  auto job = std::make_unique<Job>();
+  job->key = key;
+  job->scene = state.scene.get();
+  job->sceneMoves = sceneMoves_;
+  // Leave a core for the window; the tracer's result does not depend on the thread count.
+  job->threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+  job->position = pos.readFloats(4);
+  job->normal = renderer.gNormal().readFloats(4);
+  job->started = now_;
+  jobError_.clear();
+  Job* raw = job.get();
+  job->thread = std::thread([raw] { raw->run(); });
+  active_ = std::move(job);
+}
+
+void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width, int height, bool rendered) {
+  now_ = secondsNow();
+  pollJobs();
+  rendered_ = rendered && state.scene;
+  if (!state.scene) return;
+  sceneMoves_ = state.scene->hasMotion();
+  RestKey key;
+  key.camera = state.camera.camera();
+  key.width = width;
+  key.height = height;
+  key.time = sceneMoves_ ? state.sceneTime : 0.0;
+  key.sceneGeneration = sceneGeneration_;
+  rest_.update(key, now_);
+
+  // Per-viewport timing windows, always (the ms column does not need a reference).
+  const FrameStats& stats = renderer.stats();
+  timing_ = renderer.timePasses && !stats.passes.empty();
+  int index = 0;  // the renderer's viewport index: position among the non-empty shown slots
+  std::vector<std::pair<int, int>> shown;  // (slot, renderer index)
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
+    if (!state.slots[size_t(i)].viewport) continue;
+    shown.emplace_back(i, index);
+    ViewportAccuracy& va = viewports_[i];
+    const std::string config = configString(state.slots[size_t(i)].viewport->technique);
+    if (config != va.timedConfig || !rendered_) {
+      va.timedConfig = config;
+      va.ownMs.clear();
+      va.gbufferMs.clear();
+    }
+    const ViewportCost cost = viewportFrameMs(stats.passes, index);
+    if (rendered_ && timing_ && cost.ownMs >= 0) {
+      va.ownMs.add(cost.ownMs);
+      va.gbufferMs.add(cost.gbufferMs);
+    }
+    ++index;
+  }
+
+  if (active_ && (!rendered_ || !sameRestKey(active_->key, key))) cancelActive();
+  const Reference* ref = rendered_ ? findReference(key) : nullptr;
+  currentRef_ = ref ? ref->id : 0;
+  if (!ref) {
+    const bool failedHere = haveFailed_ && sameRestKey(failedKey_, key);
+    if (rendered_ && rest_.resting() && !active_ && retiring_.empty() && !failedHere)
+      startJob(state, renderer, key);
+    return;
+  }
+
+  const bool wantImage = state.selectedViews.count(kViewName) > 0;
+  for (const auto& [slot, renderIndex] : shown) {
+    (void)renderIndex;
+    ViewportAccuracy& va = viewports_[slot];
+    const std::string& config = va.timedConfig;
+    const bool due = va.referenceId != ref->id || va.config != config ||
+                     now_ - va.measuredAt >= kRemeasureSeconds ||
+                     (wantImage && va.errorTextureReference != ref->id);
+    if (due) measure(state, *ref, slot, wantImage);
+  }
+}
+
+void ErrorPanel::measure(ExplorerState& state, const Reference& ref, int slot, bool wantImage) {
+  ViewportAccuracy& va = viewports_[slot];
+  const Viewport& vp = *state.slots[size_t(slot)].viewport;
+  std::vector<float> v;
+  try {
+    v = viewportVisibility(vp);
+  } catch (const std::exception&) {
+    return;
+  }
+  if (v.size() != ref.visibility.size()) return;
+  va.metrics = compareVisibility(v.data(), ref.visibility.data(), ref.valid.data(), v.size());
+  va.haveMetrics = true;
+  va.config = va.timedConfig;
+  va.referenceId = ref.id;
+  va.measuredAt = now_;
+  va.cost = ViewportCost{va.ownMs.count() ? va.ownMs.median() : -1.0, va.gbufferMs.median()};
+  if (wantImage) {
+    const std::vector<uint8_t> rgba = errorImage(v.data(), ref.visibility.data(), ref.valid.data(), v.size());
+    if (!va.errorTexture || va.errorTexture->width() != ref.key.width || va.errorTexture->height() != ref.key.height)
+      va.errorTexture = std::make_unique<Texture2D>(GL_RGBA8, ref.key.width, ref.key.height, "error view");
+    va.errorTexture->setFilter(GL_NEAREST, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(va.errorTexture->id(), 0, 0, 0, ref.key.width, ref.key.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        rgba.data());
+    va.errorTextureReference = ref.id;
+  } else {
+    va.errorTextureReference = 0;
+  }
+  // Only configurations measured with their own timings go on the chart (a fresh edit has
+  // none for a frame or two; the next measurement adds it).
+  if (va.cost.total() >= 0 && va.ownMs.count() >= 3)
+    recordChartPoint(points_, ChartPoint{va.config, va.cost.total(), va.metrics.wrongPixelPct, slot});
+}
+
+const Texture2D* ErrorPanel::errorTexture(int slot) const {
+  if (slot < 0 || slot >= 4 || currentRef_ == 0) return nullptr;
+  const ViewportAccuracy& va = viewports_[slot];
+  if (va.errorTextureReference != currentRef_ || !va.errorTexture) return nullptr;
+  return va.errorTexture.get();
+}
+
+std::string ErrorPanel::errorViewStatus() const {
+  if (active_) {
+    const int pct = active_->key.height > 0 ? int(100.0 * active_->rowsDone / active_->key.height) : 0;
+    return "tracing reference " + std::to_string(pct) + "%";
+  }
+  if (!jobError_.empty()) return "reference failed (see panel)";
+  if (currentRef_ != 0) return "measuring...";
+  if (rest_.lastChange().time && !rest_.resting()) return "scene moving: pause time";
+  return "resting camera needed";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Drawing
+
+namespace {
+
+const ImVec4 kDim(0.65f, 0.65f, 0.68f, 1.0f);
+const ImVec4 kFalseShadow(1.0f, 0.60f, 0.20f, 1.0f);  // the error view's orange
+const ImVec4 kFalseLight(0.35f, 0.62f, 1.0f, 1.0f);   // and blue
+const ImU32 kViewportColors[4] = {IM_COL32(255, 205, 80, 255), IM_COL32(90, 205, 255, 255),
+                                  IM_COL32(140, 225, 120, 255), IM_COL32(240, 130, 210, 255)};
+const ImU32 kOldPoint = IM_COL32(150, 150, 160, 255);
+
+void dashedLine(ImDrawList* d, ImVec2 a, ImVec2 b, ImU32 col, float thickness, float dash = 5.0f) {
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float len = std::sqrt(dx * dx + dy * dy);
+  if (len <= 0) return;
+  for (float s = 0; s < len; s += 2 * dash) {
+    const float e = std::min(len, s + dash);
+    d->AddLine(ImVec2(a.x + dx * s / len, a.y + dy * s / len), ImVec2(a.x + dx * e / len, a.y + dy * e / len), col,
+               thickness);
+  }
+}
+
+}  // namespace
+
+void ErrorPanel::drawPanel(ExplorerState& state) {
+  if (!ImGui::CollapsingHeader("Accuracy vs ray-traced truth", ImGuiTreeNodeFlags_DefaultOpen)) return;
+
+  // Status: tracing, ready, or why nothing is measured.
+  const Reference* ref = currentReference();
+  if (active_) {
+    const Job& job = *active_;
+    const float progress = job.key.height > 0 ? float(job.rowsDone) / float(job.key.height) : 0.0f;
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", job.building ? "building BVH" : "tracing",
+                  progress * 100.0f, now_ - job.started);
+    ImGui::ProgressBar(progress, ImVec2(-1, 0), overlay);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Ray-traced reference (Embree, %d light samples for area lights, %d threads)\n"
+                        "of this %dx%d frame, on a worker thread. Moving the camera cancels it.",
+                        kReferenceSamples, job.threads, job.key.width, job.key.height);
+  } else if (!jobError_.empty() && haveFailed_ && sameRestKey(failedKey_, rest_.key())) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.38f, 0.35f, 1.0f));
+    ImGui::TextWrapped("reference failed: %s", jobError_.c_str());
+    ImGui::PopStyleColor();
+  } else if (ref) {
+    ImGui::TextDisabled("reference %dx%d traced in %.1f s (BVH %.2f s)", ref->key.width, ref->key.height,
+                        ref->traceMs / 1000.0, ref->buildMs / 1000.0);
+  } else if (!rendered_) {
+    ImGui::TextDisabled("no frame rendered");
+  } else if (!rest_.resting()) {
+    const RestKeyChange& c = rest_.lastChange();
+    const char* why = c.time ? "scene moving: pause time (Scene panel) to measure"
+                      : c.size ? "window resized: waiting for it to settle"
+                      : c.scene ? "new scene: waiting for the camera to rest"
+                                : "camera moving: let it rest to measure";
+    ImGui::TextDisabled("%s", why);
+  } else {
+    ImGui::TextDisabled("waiting for the previous trace to stop");
+  }
+
+  // Per-viewport table.
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+  if (ImGui::BeginTable("accuracy", 7, flags)) {
+    const char* headers[7] = {"#", "wrong", "f.shadow", "f.light", "rmse", "NaN", "ms"};
+    const char* tips[7] = {
+        "Viewport (colour of its points in the chart)",
+        "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+        "False shadow, %: dark where the truth is lit (orange in the error view)",
+        "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+        "Root mean square visibility error over covered pixels",
+        "Non-finite (NaN/Inf) visibility values, counted as wrong",
+        "ms per frame of this viewport: its own passes (names ending in [v]; debug views\n"
+        "'view.*' excluded) plus the whole shared G-buffer pass, which a technique alone\n"
+        "pays too, so the figure does not depend on how many viewports are shown.\n"
+        "Median of the last 15 frames (see Timings for the passes)."};
+    const float weights[7] = {0.4f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
+    for (int c = 0; c < 7; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int c = 0; c < 7; ++c) {
+      ImGui::TableSetColumnIndex(c);
+      ImGui::TableHeader(headers[c]);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
+    }
+    for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
+      if (!state.slots[size_t(i)].viewport) continue;
+      const ViewportAccuracy& va = viewports_[i];
+      const bool current = va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ &&
+                           va.config == va.timedConfig;
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kViewportColors[i]));
+      ImGui::Text("%d", i + 1);
+      ImGui::PopStyleColor();
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", va.timedConfig.c_str());
+      auto cell = [&](int column, const char* text, const ImVec4* color) {
+        ImGui::TableSetColumnIndex(column);
+        if (!current)
+          ImGui::TextDisabled("%s", text);
+        else if (color)
+          ImGui::TextColored(*color, "%s", text);
+        else
+          ImGui::TextUnformatted(text);
+      };
+      char buf[32];
+      if (va.haveMetrics) {
+        const ErrorMetrics& m = va.metrics;
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.wrongPixelPct);
+        cell(1, buf, nullptr);
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseShadowPct);
+        cell(2, buf, &kFalseShadow);
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseLightPct);
+        cell(3, buf, &kFalseLight);
+        std::snprintf(buf, sizeof buf, "%.3f", m.rmse);
+        cell(4, buf, nullptr);
+        std::snprintf(buf, sizeof buf, "%lld", m.nonfinite);
+        cell(5, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
+      } else {
+        for (int c = 1; c <= 5; ++c) {
+          ImGui::TableSetColumnIndex(c);
+          ImGui::TextDisabled("-");
+        }
+      }
+      ImGui::TableSetColumnIndex(6);
+      const double own = va.ownMs.median(), gb = va.gbufferMs.median();
+      if (own >= 0) {
+        ImGui::Text("%.2f", own + gb);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%.2f ms own passes + %.2f ms G-buffer (shared by all viewports)", own, gb);
+      } else {
+        ImGui::TextDisabled("-");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timing_ ? "no timed pass yet" : "Timings > Time passes is off");
+      }
+    }
+    ImGui::EndTable();
+  }
+  if (currentRef_ == 0 && std::any_of(std::begin(viewports_), std::end(viewports_),
+                                      [](const ViewportAccuracy& v) { return v.haveMetrics; }))
+    ImGui::TextDisabled("(grey: measured at the previous resting view)");
+
+  // Error vs time chart.
+  ImGui::TextUnformatted("Error vs time, this session");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("One point per configuration (technique + changed parameters) measured this\n"
+                      "session, the latest measurement kept. Dashed: the Pareto front, configurations\n"
+                      "that no other is both faster and more accurate than. Numbered points are what\n"
+                      "the viewports show now; grey ones were tried earlier (possibly from another\n"
+                      "camera: compare points measured at the same view).");
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x - 40.0f);
+  if (ImGui::SmallButton("clear")) points_.clear();
+
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = std::max(160.0f, std::min(240.0f, width * 0.55f));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("chart", ImVec2(width, height));
+  const bool chartHovered = ImGui::IsItemHovered();
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  const float line = ImGui::GetTextLineHeight();
+  const float left = origin.x + 44.0f, right = origin.x + width - 8.0f;
+  const float top = origin.y + 6.0f, bottom = origin.y + height - 2.0f * line - 4.0f;
+  d->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(24, 24, 28, 255), 3.0f);
+  d->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(90, 90, 100, 255));
+
+  double msMin = 1e30, msMax = -1e30, errMin = 1e30, errMax = -1e30;
+  for (const ChartPoint& p : points_) {
+    msMin = std::min(msMin, p.ms), msMax = std::max(msMax, p.ms);
+    errMin = std::min(errMin, p.wrongPct), errMax = std::max(errMax, p.wrongPct);
+  }
+  const ChartAxis xAxis = chooseChartAxis(msMin, msMax, 0.01);
+  const ChartAxis yAxis = chooseChartAxis(errMin, errMax, 0.01);
+  auto toScreen = [&](double ms, double err) {
+    return ImVec2(left + float(xAxis.toUnit(ms)) * (right - left), bottom - float(yAxis.toUnit(err)) * (bottom - top));
+  };
+  const ImU32 grid = IM_COL32(60, 60, 68, 255), label = IM_COL32(170, 170, 178, 255);
+  for (double t : xAxis.ticks()) {
+    const float x = toScreen(t, 0).x;
+    d->AddLine(ImVec2(x, top), ImVec2(x, bottom), grid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(std::min(x - w * 0.5f, right - w), bottom + 2.0f), label, s.c_str());
+  }
+  for (double t : yAxis.ticks()) {
+    const float y = toScreen(0, t).y;
+    d->AddLine(ImVec2(left, y), ImVec2(right, y), grid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(left - w - 4.0f, y - line * 0.5f), label, s.c_str());
+  }
+  const std::string xLabel = std::string("ms per frame") + (xAxis.log ? " (log)" : "");
+  const std::string yLabel = std::string("wrong %") + (yAxis.log ? " (log)" : "");
+  d->AddText(ImVec2((left + right - ImGui::CalcTextSize(xLabel.c_str()).x) * 0.5f, bottom + line + 2.0f), label,
+             xLabel.c_str());
+  d->AddText(ImVec2(origin.x + 4.0f, bottom + line + 2.0f), label, yLabel.c_str());
+
+  if (points_.empty()) {
+    const char* msg = "no measurement yet: rest the camera";
+    const ImVec2 s = ImGui::CalcTextSize(msg);
+    d->AddText(ImVec2((left + right - s.x) * 0.5f, (top + bottom - s.y) * 0.5f), label, msg);
+    return;
+  }
+
+  // Pareto front: a dashed staircase (the best error available for a given time budget).
+  const std::vector<size_t> front = paretoFront(points_);
+  const ImU32 frontColor = IM_COL32(230, 230, 230, 200);
+  for (size_t k = 0; k < front.size(); ++k) {
+    const ImVec2 p = toScreen(points_[front[k]].ms, points_[front[k]].wrongPct);
+    const float xEnd = k + 1 < front.size() ? toScreen(points_[front[k + 1]].ms, 0).x : right;
+    dashedLine(d, p, ImVec2(xEnd, p.y), frontColor, 1.5f);
+    if (k + 1 < front.size()) {
+      const ImVec2 q = toScreen(points_[front[k + 1]].ms, points_[front[k + 1]].wrongPct);
+      dashedLine(d, ImVec2(xEnd, p.y), ImVec2(xEnd, q.y), frontColor, 1.5f);
+    }
+  }
+
+  // Points: the configurations shown now in their viewport's colour and number, others grey.
+  std::vector<std::string> shownConfigs(4);
+  for (int i = 0; i < state.viewportCount && i < 4; ++i)
+    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport) shownConfigs[size_t(i)] = viewports_[i].timedConfig;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  int hovered = -1;
+  float hoveredDist = 8.0f * 8.0f;
+  d->PushClipRect(ImVec2(left - 6, top - 6), ImVec2(right + 6, bottom + 6), true);
+  for (size_t n = 0; n < points_.size(); ++n) {
+    const ChartPoint& p = points_[n];
+    const ImVec2 s = toScreen(p.ms, p.wrongPct);
+    int shownIn = -1;
+    for (int i = 0; i < 4; ++i)
+      if (!shownConfigs[size_t(i)].empty() && shownConfigs[size_t(i)] == p.config) shownIn = i;
+    if (shownIn >= 0) {
+      d->AddCircleFilled(s, 5.0f, kViewportColors[shownIn]);
+      const std::string num = std::to_string(shownIn + 1);
+      d->AddText(ImVec2(s.x + 6.0f, s.y - line - 1.0f), kViewportColors[shownIn], num.c_str());
+    } else {
+      d->AddCircle(s, 4.0f, kOldPoint, 0, 1.5f);
+    }
+    const float dx = s.x - mouse.x, dy = s.y - mouse.y;
+    if (chartHovered && dx * dx + dy * dy < hoveredDist) {
+      hoveredDist = dx * dx + dy * dy;
+      hovered = int(n);
+    }
+  }
+  d->PopClipRect();
+  if (hovered >= 0) {
+    const ChartPoint& p = points_[size_t(hovered)];
+    const bool onFront = std::find(front.begin(), front.end(), size_t(hovered)) != front.end();
+    ImGui::SetTooltip("%s\n%.2f ms per frame, %.2f%% wrong pixels%s", p.config.c_str(), p.ms, p.wrongPct,
+                      onFront ? "\non the Pareto front" : "");
+  }
+}
+
+}  // namespace sl
