@@ -55,19 +55,19 @@ TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram)
   EXPECT_TRUE(h.shaders.errors().empty());
 
   // A syntax error: the error names file:line, the old program keeps rendering.
-  rewrite(fs::path(dir) / "passes/shade_visibility.frag", "o_color = shadePixel(", "o_color = shadePixel( +* ;");
+  rewrite(fs::path(dir) / "passes/forward.frag", "o_color = shadeSurface(", "o_color = shadeSurface( +* ;");
   h.shaders.reloadChanged();
   auto errors = h.shaders.errors();
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_NE(errors[0].find("shaders/passes/shade_visibility.frag:"), std::string::npos) << errors[0];
-  std::ifstream broken(fs::path(dir) / "passes/shade_visibility.frag");
+  EXPECT_NE(errors[0].find("shaders/passes/forward.frag:"), std::string::npos) << errors[0];
+  std::ifstream broken(fs::path(dir) / "passes/forward.frag");
   std::string line;
   int lineNo = 0, badLine = 0;
   while (std::getline(broken, line)) {
     ++lineNo;
     if (line.find("+* ;") != std::string::npos) badLine = lineNo;
   }
-  EXPECT_NE(errors[0].find("shade_visibility.frag:" + std::to_string(badLine) + ":"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("forward.frag:" + std::to_string(badLine) + ":"), std::string::npos) << errors[0];
   h.renderer.render(in, {&vp});
   auto pixels = vp.colorTexture()->readRgba8();
   int nonBlack = 0;
@@ -75,7 +75,7 @@ TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram)
   EXPECT_GT(nonBlack, 64 * 40 / 2);  // the last good shade program still draws the scene
 
   // Fixed again: the error goes away.
-  rewrite(fs::path(dir) / "passes/shade_visibility.frag", "o_color = shadePixel( +* ;", "o_color = shadePixel(");
+  rewrite(fs::path(dir) / "passes/forward.frag", "o_color = shadeSurface( +* ;", "o_color = shadeSurface(");
   h.shaders.reloadChanged();
   EXPECT_TRUE(h.shaders.errors().empty());
 

@@ -23,6 +23,11 @@ struct BenchOptions {
   std::string path;                     // a camera path name: frames advance along it at 30 fps
   int frames = 10;
   int warmup = 3;
+  // Frames of coherent camera motion (a rotation about the target, from approachDeg to 0)
+  // rendered before the measured frames without a cut: the measured frames then start with a
+  // filled history, as in the left graph of Scherzer et al.'s figure 3. 0 = empty history.
+  int approach = 0;
+  float approachDeg = 20.0f;
   int width = 640, height = 360;
   int samples = 64;       // reference light samples
   bool useCache = true;   // reference disk cache

@@ -25,6 +25,8 @@ nlohmann::json benchToJson(const BenchResult& r) {
   j["date"] = r.date;
   j["command"] = r.options.commandLine;
   j["warmup"] = r.options.warmup;
+  j["approach_frames"] = r.options.approach;
+  j["approach_deg"] = r.options.approachDeg;
   j["reference"] = {{"samples_per_pixel", r.referenceSamples},
                     {"traced", r.referencesTraced},
                     {"cached", r.referencesCached},

@@ -256,7 +256,7 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
       << "' class='grid'/><text x='" << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t)
       << "</text>\n";
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16
-    << "' text-anchor='middle' class='axis'>frame (after warm-up; history starts empty at frame 1)</text>\n";
+    << "' text-anchor='middle' class='axis'>frame " << (r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) + " frames of camera rotation: filled history)" : "(after warm-up; history starts empty at frame 1)") << "</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
     << ") rotate(-90)' text-anchor='middle' class='axis'>wrong pixels, %" << (ya.log ? " (log scale)" : "")
     << "</text>\n";

@@ -218,7 +218,10 @@ ReferenceImage ReferenceCache::forFrame(Renderer& renderer, const FrameInput& in
   ReferenceImage ref;
   if (lookup(in, ref)) return ref;
   if (!gbufferViewport_) gbufferViewport_ = std::make_unique<Viewport>(makeTechnique("standard"));
+  const bool keep = renderer.keepGBuffer;
+  renderer.keepGBuffer = true;  // the reference traces from this frame's G-buffer
   renderer.render(in, {gbufferViewport_.get()});
+  renderer.keepGBuffer = keep;
   return forLastFrame(renderer, in);
 }
 

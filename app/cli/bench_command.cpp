@@ -12,19 +12,21 @@ namespace sl {
 
 static const char* kBenchUsage =
     "usage: shadowlab bench --scene S --techniques a,b,c [--set key=value]... [--sweep key=v1,v2,...]...\n"
-    "                       [--camera NAME | --path NAME] [--frames N] [--warmup N] [--size WxH]\n"
+    "                       [--camera NAME | --path NAME] [--frames N] [--warmup N] [--approach N] [--size WxH]\n"
     "                       [--samples N] [--time T] [--no-cache] --json F.json [--report DIR]\n"
     "  One entry per technique x sweep point (sweeps multiply), each from a fresh viewport.\n"
     "  --set applies to every technique that has the key (an error if none has it).\n"
     "  --frames N measured frames after --warmup frames (default 10 and 3). With --camera the\n"
     "  camera stands still and `convergence` is the error per frame against one reference;\n"
     "  with --path the camera moves at 30 fps and `flicker` compares temporal change with the\n"
-    "  reference traced per frame. References are cached (see `shadowlab reference`).\n";
+    "  reference traced per frame. References are cached (see `shadowlab reference`).\n"
+    "  --approach N renders N frames of camera rotation into the view before the measured frames,\n"
+    "  so accumulating techniques start with a filled history (default 0: empty history).\n";
 
 int runBenchCommand(int argc, char** argv) {
   try {
     Args args(argc, argv, 2,
-              {"--scene", "--techniques", "--set", "--sweep", "--camera", "--path", "--frames", "--warmup", "--size",
+              {"--scene", "--techniques", "--set", "--sweep", "--camera", "--path", "--frames", "--warmup", "--approach", "--size",
                "--samples", "--time", "--json", "--report", "--shaders"},
               {"--no-cache", "--help"});
     if (args.has("--help")) {
@@ -43,6 +45,7 @@ int runBenchCommand(int argc, char** argv) {
     o.path = args.get("--path");
     o.frames = args.getInt("--frames", o.frames);
     o.warmup = args.getInt("--warmup", o.warmup);
+    o.approach = args.getInt("--approach", o.approach);
     args.getSize("--size", o.width, o.height);
     o.samples = args.getInt("--samples", o.samples);
     if (o.samples < 1) throw ArgError("--samples must be at least 1");

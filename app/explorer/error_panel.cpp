@@ -373,6 +373,7 @@ const ErrorPanel::Reference* ErrorPanel::currentReference() const {
 }
 
 void ErrorPanel::startJob(ExplorerState& state, Renderer& renderer, const RestKey& key) {
+  if (!renderer.hasFreshGBuffer()) return;  // next frame (wantsGBuffer() asks for it)
   const Texture2D& pos = renderer.gPosition();
   if (pos.width() != key.width || pos.height() != key.height) return;  // not this frame's G-buffer
   auto job = std::make_unique<Job>();

@@ -133,6 +133,9 @@ class ErrorPanel {
   // After the viewports rendered this frame (`rendered` false when the frame failed): rest
   // detection, G-buffer readback and worker start/cancel, per-viewport metrics and the error view.
   void afterRender(ExplorerState& state, Renderer& renderer, int width, int height, bool rendered);
+  // The next frame must keep its G-buffer: the camera rests and this view has no reference yet.
+  // (Techniques shade forward, so the G-buffer is otherwise skipped to keep the window fast.)
+  bool wantsGBuffer() const { return rest_.resting() && currentRef_ == 0 && !active_; }
   // The "Accuracy vs ray-traced truth" section of the side panel.
   void drawPanel(ExplorerState& state);
   // Must be called before the explorer replaces (destroys) its scene: the worker reads it while

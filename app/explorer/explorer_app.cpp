@@ -238,6 +238,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
         layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
                        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
     advanceCameraAndTime(window, state, dt);
+    renderer.keepGBuffer = errorPanel.wantsGBuffer();
     const bool rendered = renderViewports(renderer, state, layout);
     errorPanel.afterRender(state, renderer, layout.renderWidth, layout.renderHeight, rendered);
 

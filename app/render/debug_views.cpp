@@ -34,7 +34,7 @@ std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, flo
 }  // namespace
 
 void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
-  const std::string prelude = techniquePrelude(vp.technique);
+  const std::string prelude = techniquePrelude(vp.technique, vp.lightSpace);
   const std::string sm = "shadowmap" + tag;
   const std::string visibility = vp.accumulated_ ? "visibility.final" + tag : "visibility.raw" + tag;
   const Texture2D* visTex = vp.visibilityTexture();

@@ -76,8 +76,8 @@ void GpuScene::draw(const Program& program, double time, double prevTime, GLenum
     program.set("u_hasTexture", hasTexture ? 1.0f : 0.0f);
     program.set("u_alphaMask", mat.alphaMask ? 1.0f : 0.0f);
     program.set("u_alphaCutoff", mat.alphaCutoff);
-    if (hasTexture) glBindTextureUnit(7, textures[static_cast<size_t>(mat.baseColorTexture)]);
-    program.set("u_baseColorTexture", 7);
+    if (hasTexture) glBindTextureUnit(8, textures[static_cast<size_t>(mat.baseColorTexture)]);
+    program.set("u_baseColorTexture", 8);
     if (cullFace && !mat.doubleSided) {
       glEnable(GL_CULL_FACE);
       glCullFace(cullFace);

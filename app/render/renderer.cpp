@@ -114,8 +114,9 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
     vp.visibilityFbo_.attach({vp.rawVisibility_.get()}, nullptr);
     vp.colorFbo_ = Framebuffer("color");
     vp.colorFbo_.attach({vp.color_.get()}, nullptr);
-    vp.colorAndVisibilityFbo_ = Framebuffer("color + visibility");
-    vp.colorAndVisibilityFbo_.attach({vp.color_.get(), vp.rawVisibility_.get()}, nullptr);
+    vp.depth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "depth");
+    vp.forwardFbo_ = Framebuffer("forward: color + visibility + depth");
+    vp.forwardFbo_.attach({vp.color_.get(), vp.rawVisibility_.get()}, vp.depth_.get());
     vp.views_.clear();
     vp.accumulation->reset();
   }
@@ -123,10 +124,43 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
     if (!vp.views_.count(name)) vp.views_[name] = std::make_unique<Texture2D>(GL_RGBA8, w, h, "view." + name);
 }
 
-std::string Renderer::techniquePrelude(const Technique& t) const {
-  // Representations reconstruct visibility per fragment; vertex stages only need the layout.
-  return "#include \"" + t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
+std::string Renderer::techniquePrelude(const Technique& t, const LightSpace& ls) const {
+  // Per-technique and per-scene constants become defines, not uniform branches: a software
+  // rasterizer executes both sides of every branch. Representations reconstruct visibility per
+  // fragment; vertex stages only need the layout.
+  std::string defines = "#define SL_BIAS_MODE " + std::to_string(t.params.i("bias.mode")) + "\n";
+  if (scene_->light.type == Light::Type::Spot) defines += "#define SL_SPOT_LIGHT\n";
+  if (ls.perspective) defines += "#define SL_PERSPECTIVE_MAP\n";
+  return defines + "#include \"" + t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
          t.representation->glslModule() + "\"\n#endif\n";
+}
+
+void Renderer::drawSky() {
+  ProgramSpec spec{"sky", {{GL_VERTEX_SHADER, "passes/sky.vert"}, {GL_FRAGMENT_SHADER, "passes/sky.frag"}}, ""};
+  Program& p = shaders_.get(spec);
+  if (!p.valid()) return;
+  // Only background pixels (depth still at the far plane) and only the colour attachment.
+  GLint attachments = 0;
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &attachments);
+  for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  p.use();
+  drawFullscreen();
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void Renderer::drawSceneForward(const Program& p, double time) {
+  glEnable(GL_DEPTH_TEST);
+  p.set("u_viewProj", proj_ * view_);
+  p.set("u_prevViewProj", prevProj_ * prevView_);
+  p.set("u_prevView", prevView_);
+  gpu_->draw(p, time, prevTime_);
+  glDisable(GL_DEPTH_TEST);
 }
 
 void Renderer::drawFullscreen() {
@@ -143,12 +177,10 @@ void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace
   p.set("u_lightViewProj", ls.viewProj);
   p.set("u_lightNear", ls.nearPlane);
   p.set("u_lightFar", ls.farPlane);
-  p.set("u_lightPerspective", ls.perspective ? 1.0f : 0.0f);
   p.set("u_lightTexelWorld", ls.texelWorldSize);
   p.set("u_shadowMapSize", static_cast<float>(ls.size));
   p.set("u_lightDirection", glm::normalize(light.direction));
   p.set("u_lightPosition", light.position);
-  p.set("u_lightIsSpot", light.type == Light::Type::Spot ? 1.0f : 0.0f);
   p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
 }
 
@@ -182,6 +214,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
                gpu_->draw(p, in.time, prevTime_);
                glDisable(GL_DEPTH_TEST);
              }});
+  if (keepGBuffer) graph.requestSink("gbuffer");
   for (size_t i = 0; i < viewports.size(); ++i) {
     ensureViewportTargets(*viewports[i], in.width, in.height);
     addViewportPasses(graph, *viewports[i], i, in);
@@ -224,6 +257,8 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     GLuint q[2] = {queries[k].first, queries[k].second};
     glDeleteQueries(2, q);
   }
+  gbufferFresh_ = false;
+  for (const auto& p : stats_.passes) gbufferFresh_ |= p.name == "gbuffer";
   if (timePasses && !useGpuTimer) glFinish();
   stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
   if (useGpuTimer) {
@@ -249,10 +284,10 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.params = &t.params;
   li.jitter = vp.accumulation->jitter(t.params);
   vp.lightSpace = t.layout->compute(li);
-  const std::string prelude = techniquePrelude(t);
+  const std::string prelude = techniquePrelude(t, vp.lightSpace);
   const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
-  const std::string shadowPrelude = prelude + (vp.lightSpace.perspective ? "#define SL_WRITE_LINEAR_DEPTH\n" : "");
+  const std::string& shadowPrelude = prelude;
   g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, shadowPrelude, &in] {
            Technique& t = vp.technique;
            ProgramSpec spec{"shadowmap " + t.layout->id(), {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}}, shadowPrelude};
@@ -282,20 +317,24 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   };
 
   if (t.accumulation->passesThrough()) {
-    // No accumulation: visibility and colour in one pass (one G-buffer read fewer).
+    // No accumulation: shadow test and shading while the scene is rasterized (forward).
     vp.accumulated_ = false;
-    g.add({"shade" + tag, {"gbuffer", sm}, {"color" + tag, raw}, [this, &vp, prelude, bindVisibilityInputs] {
+    g.add({"shade" + tag, {sm}, {"color" + tag, raw}, [this, &vp, prelude, bindVisibilityInputs, &in] {
              Technique& t = vp.technique;
-             ProgramSpec spec{"shade+visibility " + t.layout->id() + "+" + t.representation->id(),
-                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade_visibility.frag"}},
+             ProgramSpec spec{"forward " + t.layout->id() + "+" + t.representation->id(),
+                              {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/forward.frag"}},
                               prelude};
              Program& p = shaders_.get(spec);
              if (!p.valid()) return;
-             vp.colorAndVisibilityFbo_.bind();
+             vp.forwardFbo_.bind();
+             const float background[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // visibility 1, confidence 0
+             glClearNamedFramebufferfv(vp.forwardFbo_.id(), GL_COLOR, 1, background);
+             glClearNamedFramebufferfi(vp.forwardFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
              p.use();
              bindVisibilityInputs(p);
-             drawFullscreen();
+             drawSceneForward(p, in.time);
              glBindSampler(2, 0);
+             drawSky();
            }});
     g.requestSink("color" + tag);
     g.requestSink(raw);
@@ -343,6 +382,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.shadowMap = sm;
   ctx.color = "color" + tag;
   ctx.colorTex = vp.color_.get();
+  ctx.depthTex = vp.depth_.get();
+  ctx.drawScene = [this, &in](const Program& p) { drawSceneForward(p, in.time); };
+  ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
   vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
   if (ctx.wroteColor) {

@@ -51,6 +51,11 @@ struct AccumulationContext {
   std::string shadowMap;  // resource
   std::string color;      // resource
   Texture2D* colorTex = nullptr;
+  Texture2D* depthTex = nullptr;  // the viewport's own depth target for a scene pass
+  // Draw the scene (sets u_viewProj, u_prevViewProj, per-instance transforms and materials;
+  // depth test on) and the sky (colour attachment 0 only) into the bound framebuffer.
+  std::function<void(const Program&)> drawScene;
+  std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
   bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
 };
@@ -74,9 +79,9 @@ class Viewport {
 
  private:
   friend class Renderer;
-  std::unique_ptr<Texture2D> shadowMap_, rawVisibility_, finalVisibility_, color_;
+  std::unique_ptr<Texture2D> shadowMap_, rawVisibility_, finalVisibility_, color_, depth_;
   std::map<std::string, std::unique_ptr<Texture2D>> views_;
-  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_, colorAndVisibilityFbo_;
+  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_, forwardFbo_;
   int targetsW_ = 0, targetsH_ = 0, shadowSize_ = 0;
   bool accumulated_ = false;
 };
@@ -103,6 +108,10 @@ class Renderer {
   void render(const FrameInput& in, const std::vector<Viewport*>& viewports);
   const FrameStats& stats() const { return stats_; }
   bool timePasses = true;  // bracket passes with a timer (cheap on GPU, glFinish on llvmpipe)
+  // Render the G-buffer even when no pass of the frame reads it, for readback (reference,
+  // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
+  bool keepGBuffer = true;
+  bool hasFreshGBuffer() const { return gbufferFresh_; }  // the last frame drew the G-buffer
 
   // G-buffer of the last frame, for the reference tracer and metrics.
   const Texture2D& gPosition() const { return *gPosition_; }
@@ -113,8 +122,10 @@ class Renderer {
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
-  std::string techniquePrelude(const Technique& t) const;
+  std::string techniquePrelude(const Technique& t, const LightSpace& ls) const;
   void drawFullscreen();
+  void drawSky();
+  void drawSceneForward(const Program& p, double time);
 
   ShaderLibrary& shaders_;
   const Scene* scene_ = nullptr;
@@ -122,6 +133,7 @@ class Renderer {
   std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gMotion_, gDepth_;
   Framebuffer gFbo_;
   bool gHasMotion_ = false;
+  bool gbufferFresh_ = false;
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0, shadowSampler_ = 0, compareSampler_ = 0;
   glm::mat4 prevView_{1.0f}, prevProj_{1.0f};

@@ -1,5 +1,6 @@
 // Debug view "confidence": grey = shadow-test confidence (eq. 5, 1 at texel centres),
 // orange = the update weight w = conf^m this frame (only near-centre tests count).
+#define SL_DEFERRED
 #include "common/visibility_term.glsl"
 #include "accumulation/pixel_correct.glsl"
 

@@ -3,6 +3,7 @@
 //   blue    off-screen / behind the camera / beyond the far plane in the previous frame
 //   orange  disoccluded (the previous frame saw another depth there)
 //   yellow  rejected: moving-caster rule (pc.reject)
+#define SL_DEFERRED
 #include "common/visibility_term.glsl"
 #include "accumulation/pixel_correct.glsl"
 

@@ -1,6 +1,7 @@
 // Debug view "history": s(n-1), the previous frame's history reprojected to this frame (grey);
 // blue where there is none (cut, off-screen, disoccluded), yellow where a moving-caster test
 // replaced it.
+#define SL_DEFERRED
 #include "common/visibility_term.glsl"
 #include "accumulation/pixel_correct.glsl"
 

@@ -1,14 +1,22 @@
-uniform vec3 u_lightDirection;  // direction light travels
+// The light, specialised at compile time (SL_SPOT_LIGHT from the renderer's prelude): a
+// software rasterizer runs both sides of every branch, so per-scene constants are defines.
+uniform vec3 u_lightDirection;  // direction light travels, normalized
 uniform vec3 u_lightPosition;
-uniform float u_lightIsSpot;
 uniform float u_spotCosHalfAngle;
 
 vec3 directionToLight(vec3 p) {
-  return u_lightIsSpot > 0.5 ? normalize(u_lightPosition - p) : -normalize(u_lightDirection);
+#ifdef SL_SPOT_LIGHT
+  return normalize(u_lightPosition - p);
+#else
+  return -u_lightDirection;
+#endif
 }
 
 // 0 outside a spot light's cone (the reference treats those points as unlit too).
 float spotFactor(vec3 p) {
-  if (u_lightIsSpot < 0.5) return 1.0;
-  return dot(normalize(p - u_lightPosition), normalize(u_lightDirection)) >= u_spotCosHalfAngle ? 1.0 : 0.0;
+#ifdef SL_SPOT_LIGHT
+  return dot(normalize(p - u_lightPosition), u_lightDirection) >= u_spotCosHalfAngle ? 1.0 : 0.0;
+#else
+  return 1.0;
+#endif
 }

@@ -1,10 +1,10 @@
 // Layout module for layouts described by one light view and projection (uniform, focused;
 // later warped ones). Stored depth is light-view linear depth in [0,1] over [near, far].
+// SL_PERSPECTIVE_MAP (from the renderer's prelude) marks a perspective (spot) map.
 uniform mat4 u_lightView;
 uniform mat4 u_lightViewProj;
 uniform float u_lightNear;
 uniform float u_lightFar;
-uniform float u_lightPerspective;   // 1 for a spot light
 uniform float u_lightTexelWorld;    // world size of a texel (at unit distance when perspective)
 uniform float u_shadowMapSize;
 
@@ -20,14 +20,21 @@ vec4 layoutProject(vec3 worldPos) {
   vec4 c = layoutClip(worldPos);
   if (c.w <= 1e-6) return vec4(0.0, 0.0, 0.0, 0.0);
   // Orthographic clip depth is already the linear depth; only perspective maps need the view.
-  float depth = u_lightPerspective > 0.5 ? layoutDepth(worldPos) : c.z * 0.5 + 0.5;
+#ifdef SL_PERSPECTIVE_MAP
+  float depth = layoutDepth(worldPos);
+#else
+  float depth = c.z * 0.5 + 0.5;
+#endif
   return vec4(c.xy / c.w * 0.5 + 0.5, depth, 1.0);
 }
 
 // World size of one texel at this point: what normal offset and slope bias are scaled by.
 float layoutTexelWorldSize(vec3 worldPos) {
-  if (u_lightPerspective > 0.5) return u_lightTexelWorld * max(-(u_lightView * vec4(worldPos, 1.0)).z, 1e-4);
+#ifdef SL_PERSPECTIVE_MAP
+  return u_lightTexelWorld * max(-(u_lightView * vec4(worldPos, 1.0)).z, 1e-4);
+#else
   return u_lightTexelWorld;
+#endif
 }
 
 // Depth units per world unit along the light direction.

@@ -1,4 +1,5 @@
 // Final colour from a visibility computed earlier (by an accumulation or the visibility pass).
+#define SL_DEFERRED
 #include "common/shading.glsl"
 
 uniform sampler2D u_gPosition;

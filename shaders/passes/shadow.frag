@@ -4,7 +4,7 @@ in vec2 v_uv;
 
 void main() {
   materialAlphaTest(v_uv);
-#ifdef SL_WRITE_LINEAR_DEPTH
+#ifdef SL_PERSPECTIVE_MAP
   // Perspective maps store light-view linear depth like orthographic ones do, so biases mean
   // the same everywhere. (Orthographic depth is already linear: no per-fragment write, which
   // keeps the shadow pass cheap on a software rasterizer.)

@@ -63,6 +63,7 @@ void PixelCorrectState::ensureHistory(int w, int h, GLenum format) {
   if (history_[0] && history_[0]->width() == w && history_[0]->height() == h && history_[0]->format() == format) return;
   for (int i = 0; i < 2; ++i) {
     history_[i] = std::make_unique<Texture2D>(format, w, h, "pixel-correct history " + std::to_string(i));
+    history_[i]->setFilter(GL_LINEAR, GL_LINEAR);  // the paper's bilinear history lookup
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(history_[i]->id(), 0, GL_RGBA, GL_FLOAT, zero);
     fboFinal_[i] = nullptr;
@@ -86,10 +87,12 @@ void setAccumulationUniforms(const Program& p, const glm::mat4& view, const glm:
   p.set("u_raw", 7);
 }
 
-void bindInputs(const AccumulationContext& ctx, const Program& p, const Texture2D* history) {
+// The scene pass writes the raw test itself, so only the (G-buffer based) views read it.
+void bindInputs(const AccumulationContext& ctx, const Program& p, const Texture2D* history, bool forViews) {
   ctx.bindTechniqueInputs(p);
-  glBindTextureUnit(5, ctx.gMotion->id());
   glBindTextureUnit(6, history->id());
+  if (!forViews) return;
+  glBindTextureUnit(5, ctx.gMotion->id());
   glBindTextureUnit(7, ctx.rawVisibilityTex->id());
 }
 
@@ -125,26 +128,35 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   Texture2D* prevTex = history_[read].get();
   if (fboFinal_[write] != ctx.finalVisibilityTex || fboColor_[write] != ctx.colorTex) {
     fbo_[write] = Framebuffer("pixel-correct update");
-    fbo_[write].attach({ctx.colorTex, ctx.finalVisibilityTex, history_[write].get(), ctx.rawVisibilityTarget}, nullptr);
+    fbo_[write].attach({ctx.colorTex, ctx.finalVisibilityTex, history_[write].get(), ctx.rawVisibilityTarget},
+                       ctx.depthTex);
     fboFinal_[write] = ctx.finalVisibilityTex;
     fboColor_[write] = ctx.colorTex;
   }
   Framebuffer* fbo = &fbo_[write];
   const std::string prelude = ctx.techniquePrelude;
 
-  // One pass, as in the paper: test, reprojection, update and shading with multiple targets.
-  graph.add({"pixel-correct" + tag, {"gbuffer", ctx.shadowMap, prevRes},
-             {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility}, [c, prevTex, fbo, hasHistory, m, prelude] {
-               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, prelude};
+  // One scene pass, as in the paper: test, reprojection, update and shading with multiple
+  // render targets; the previous-frame position comes from the vertex shader.
+  graph.add({"pixel-correct" + tag, {ctx.shadowMap, prevRes}, {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility},
+             [c, prevTex, fbo, hasHistory, m, prelude] {
+               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, prelude};
                Program& p = c.shaders->get(spec);
                if (!p.valid()) return;  // the error is shown; nothing sensible to draw
                fbo->bind();
                glViewport(0, 0, c.width, c.height);
+               // Background: lit, no history (depth 0), raw test lit with no confidence.
+               const float visibility[4] = {1, 1, 0, 0}, history[4] = {0, 0, 0, 0}, raw[4] = {1, 0, 0, 0};
+               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 1, visibility);
+               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 2, history);
+               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 3, raw);
+               glClearNamedFramebufferfi(fbo->id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                p.use();
-               bindInputs(c, p, prevTex);
+               bindInputs(c, p, prevTex, false);
                setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
-               drawTriangle();
+               c.drawScene(p);
                unbindSampler();
+               c.drawSky();
              }});
   ctx.wroteColor = true;
 
@@ -164,7 +176,7 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                  fb.bind();
                  glViewport(0, 0, target->width(), target->height());
                  p.use();
-                 bindInputs(c, p, prevTex);
+                 bindInputs(c, p, prevTex, true);
                  setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
                  drawTriangle();
                  unbindSampler();
