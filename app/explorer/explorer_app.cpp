@@ -252,6 +252,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
 
     ImGui::Render();
     prepareDefaultFramebuffer(fbWidth, fbHeight);
+    blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (state.screenshotRequested) {

@@ -229,8 +229,11 @@ void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(std::min(kSidePanelWidth, display.x), display.y));
+  // No background: the window is cleared to the same colour, and a blended full-height
+  // rectangle is a measurable cost on a software rasterizer.
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoBackground;
   ImGui::Begin("shadowlab explorer", nullptr, flags);
   drawStatusHeader(state, renderer, shaders);
   drawScenePanel(state, renderer);

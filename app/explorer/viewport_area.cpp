@@ -148,7 +148,7 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollWithMouse |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoNav;
-  ImGui::Begin("##viewports", nullptr, flags);
+  ImGui::Begin("##viewports", nullptr, flags | ImGuiWindowFlags_NoBackground);
   ImDrawList* draw = ImGui::GetWindowDrawList();
 
   for (int i = 0; i < int(layout.tiles.size()) && i < int(state.slots.size()); ++i) {
@@ -168,7 +168,7 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
     const bool hovered = ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
     ImGui::PopID();
     if (shown && shown->id()) {
-      addFlippedImage(draw, shown, tile.imageMin, imageMax);
+      result.blits.push_back({shown, tile.imageMin, imageMax});
     } else if (slot.enlargedView == ErrorPanel::kViewName && state.errorPanel) {
       placeholder(draw, tile.imageMin, imageMax, state.errorPanel->errorViewStatus());
     } else {
@@ -196,6 +196,20 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
   ImGui::PopStyleColor();
   ImGui::PopStyleVar(2);
   return result;
+}
+
+void blitToScreen(const std::vector<ScreenBlit>& blits, int framebufferHeight, ImVec2 scale) {
+  for (const ScreenBlit& b : blits) {
+    if (!b.texture || !b.texture->id()) continue;
+    Framebuffer source("explorer blit source");
+    source.attach({b.texture}, nullptr);
+    // Both are bottom-up in GL, so no flip; ImGui's y runs down from the top.
+    const GLint x0 = GLint(std::lround(b.min.x * scale.x)), x1 = GLint(std::lround(b.max.x * scale.x));
+    const GLint y0 = framebufferHeight - GLint(std::lround(b.max.y * scale.y));
+    const GLint y1 = framebufferHeight - GLint(std::lround(b.min.y * scale.y));
+    glBlitNamedFramebuffer(source.id(), 0, 0, 0, b.texture->width(), b.texture->height(), x0, y0, x1, y1,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
 }
 
 }  // namespace sl

@@ -28,10 +28,21 @@ struct MainAreaLayout {
 MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount,
                               bool withThumbnails, ImVec2 framebufferScale);
 
+// A big image copied straight to the window (glBlitFramebuffer) before ImGui draws on top:
+// drawing it as a blended ImGui quad costs a third of the frame on a software rasterizer.
+struct ScreenBlit {
+  const Texture2D* texture = nullptr;
+  ImVec2 min, max;  // ImGui screen coordinates (top-left origin)
+};
+
 struct MainAreaResult {
   int hoveredViewport = -1;    // image under the mouse, -1 = none
   MagnifierTarget hoveredImage;  // what the magnifier would enlarge there
+  std::vector<ScreenBlit> blits;
 };
+
+// Copies the blits into the default framebuffer (call after clearing it, before ImGui renders).
+void blitToScreen(const std::vector<ScreenBlit>& blits, int framebufferHeight, ImVec2 framebufferScale);
 
 // Draws the tiles with the textures of the frame just rendered. Clicking a thumbnail shows that
 // view in the big image; clicking it again goes back to the colour image.

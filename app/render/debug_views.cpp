@@ -80,9 +80,8 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
     g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag}, [this, &vp, target, &in] {
              ProgramSpec sceneSpec{"view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
              ProgramSpec lineSpec{"view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
-             Program& sp = shaders_.get(sceneSpec);
              Program& lp = shaders_.get(lineSpec);
-             if (!sp.valid() || !lp.valid()) return;
+             if (!lp.valid()) return;
              Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
              Framebuffer fbo("view.lightspace");
              fbo.attach({target}, &depth);
@@ -99,10 +98,11 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
                                                    radius * 0.05f, radius * 6.0f) *
                                   glm::lookAt(eye, center, glm::vec3(0, 1, 0));
              glEnable(GL_DEPTH_TEST);
-             sp.use();
-             sp.set("u_viewProj", overview);
-             sp.set("u_lightDirection", scene_->light.direction);
-             gpu_->draw(sp, in.time, in.time);
+             PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p) {
+               p.set("u_viewProj", overview);
+               p.set("u_lightDirection", scene_->light.direction);
+             });
+             gpu_->draw(programs, in.time, in.time);
              std::vector<float> lines;
              // The camera frustum, cut at the scene's extent so that it stays readable.
              Camera cut = in.camera;

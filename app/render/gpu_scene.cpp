@@ -64,28 +64,62 @@ GpuScene::~GpuScene() {
   if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
 }
 
-void GpuScene::draw(const Program& program, double time, double prevTime, GLenum cullFace) const {
-  for (const Instance& inst : scene.instances) {
-    const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
-    const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
-    const Material& mat = scene.materials[static_cast<size_t>(m.material)];
-    program.set("u_model", inst.transformAt(time));
-    program.set("u_prevModel", inst.transformAt(prevTime));
-    program.set("u_baseColor", mat.baseColor);
-    bool hasTexture = mat.baseColorTexture >= 0;
-    program.set("u_hasTexture", hasTexture ? 1.0f : 0.0f);
-    program.set("u_alphaMask", mat.alphaMask ? 1.0f : 0.0f);
-    program.set("u_alphaCutoff", mat.alphaCutoff);
-    if (hasTexture) glBindTextureUnit(8, textures[static_cast<size_t>(mat.baseColorTexture)]);
-    program.set("u_baseColorTexture", 8);
-    if (cullFace && !mat.doubleSided) {
-      glEnable(GL_CULL_FACE);
-      glCullFace(cullFace);
-    } else {
-      glDisable(GL_CULL_FACE);
+int materialVariant(const Material& m) { return (m.baseColorTexture >= 0 ? 1 : 0) | (m.alphaMask ? 2 : 0); }
+
+std::string materialDefines(int variant) {
+  std::string d;
+  if (variant & 1) d += "#define SL_TEXTURED\n";
+  if (variant & 2) d += "#define SL_ALPHA_MASK\n";
+  return d;
+}
+
+const Program* PassPrograms::get(int variant) {
+  if (!tried_[variant]) {
+    tried_[variant] = true;
+    ProgramSpec spec = base_;
+    spec.prelude = materialDefines(variant) + spec.prelude;
+    Program& p = shaders_.get(spec);
+    if (p.valid()) {
+      p.use();
+      setup_(p);
+      programs_[variant] = &p;
     }
-    glBindVertexArray(g.vao);
-    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  if (programs_[variant]) programs_[variant]->use();
+  return programs_[variant];
+}
+
+void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace) const {
+  for (int variant = 0; variant < 4; ++variant) {
+    const Program* program = nullptr;
+    bool asked = false;
+    for (const Instance& inst : scene.instances) {
+      const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
+      const Material& mat = scene.materials[static_cast<size_t>(m.material)];
+      if (materialVariant(mat) != variant) continue;
+      if (!asked) {
+        program = programs.get(variant);
+        asked = true;
+      }
+      if (!program) break;  // its error is reported by the shader library
+      const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
+      program->set("u_model", inst.transformAt(time));
+      program->set("u_prevModel", inst.transformAt(prevTime));
+      program->set("u_baseColor", mat.baseColor);
+      program->set("u_alphaCutoff", mat.alphaCutoff);
+      if (mat.baseColorTexture >= 0) {
+        glBindTextureUnit(8, textures[static_cast<size_t>(mat.baseColorTexture)]);
+        program->set("u_baseColorTexture", 8);
+      }
+      if (cullFace && !mat.doubleSided) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(cullFace);
+      } else {
+        glDisable(GL_CULL_FACE);
+      }
+      glBindVertexArray(g.vao);
+      glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
   }
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);

@@ -6,6 +6,8 @@
 
 #include <epoxy/gl.h>
 
+#include <array>
+#include <functional>
 #include <vector>
 
 namespace sl {
@@ -13,6 +15,28 @@ namespace sl {
 struct GpuMesh {
   GLuint vao = 0, vbo = 0, ibo = 0;
   GLsizei indexCount = 0;
+};
+
+// Materials come in four shader variants (bit 0: base-colour texture, bit 1: alpha mask), so
+// that opaque untextured surfaces run no texture fetch and no discard: a software rasterizer
+// executes both sides of every branch, and a discard anywhere disables early depth tests.
+int materialVariant(const Material& m);
+std::string materialDefines(int variant);
+
+// The programs one pass draws the scene with: `base` plus each variant's defines, built on
+// first use, then `setup` (the pass's uniforms) runs once per program per pass.
+class PassPrograms {
+ public:
+  PassPrograms(ShaderLibrary& shaders, ProgramSpec base, std::function<void(const Program&)> setup)
+      : shaders_(shaders), base_(std::move(base)), setup_(std::move(setup)) {}
+  const Program* get(int variant);  // bound with glUseProgram; nullptr when it does not build
+
+ private:
+  ShaderLibrary& shaders_;
+  ProgramSpec base_;
+  std::function<void(const Program&)> setup_;
+  std::array<const Program*, 4> programs_{};
+  std::array<bool, 4> tried_{};
 };
 
 struct GpuScene {
@@ -24,7 +48,7 @@ struct GpuScene {
   // Draws every instance at `time`; sets u_model, u_prevModel (at prevTime) and material uniforms.
   // cullFace (GL_BACK/GL_FRONT, 0 = none) applies to single-sided materials only: double-sided
   // leaf cards must cast from both sides.
-  void draw(const Program& program, double time, double prevTime, GLenum cullFace = 0) const;
+  void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0) const;
 
   const Scene& scene;
   std::vector<GpuMesh> meshes;

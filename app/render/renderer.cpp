@@ -154,12 +154,15 @@ void Renderer::drawSky() {
   for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void Renderer::drawSceneForward(const Program& p, double time) {
+void Renderer::drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup, double time) {
   glEnable(GL_DEPTH_TEST);
-  p.set("u_viewProj", proj_ * view_);
-  p.set("u_prevViewProj", prevProj_ * prevView_);
-  p.set("u_prevView", prevView_);
-  gpu_->draw(p, time, prevTime_);
+  PassPrograms programs(shaders_, spec, [this, &setup](const Program& p) {
+    setup(p);
+    p.set("u_viewProj", proj_ * view_);
+    p.set("u_prevViewProj", prevProj_ * prevView_);
+    p.set("u_prevView", prevView_);
+  });
+  gpu_->draw(programs, time, prevTime_);
   glDisable(GL_DEPTH_TEST);
 }
 
@@ -199,19 +202,19 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   }
   FrameGraph graph;
   graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in, needMotion] {
-               ProgramSpec spec{"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-                                needMotion ? "#define SL_WRITE_MOTION\n" : ""};
-               Program& p = shaders_.get(spec);
-               if (!p.valid()) return;
                gFbo_.bind();
                const float zero[4] = {0, 0, 0, 0};
                for (int i = 0; i < (needMotion ? 4 : 3); ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
                glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                glEnable(GL_DEPTH_TEST);
-               p.use();
-               p.set("u_viewProj", proj_ * view_);
-               p.set("u_prevViewProj", prevProj_ * prevView_);
-               gpu_->draw(p, in.time, prevTime_);
+               PassPrograms programs(shaders_,
+                                     {"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+                                      needMotion ? "#define SL_WRITE_MOTION\n" : ""},
+                                     [this](const Program& p) {
+                                       p.set("u_viewProj", proj_ * view_);
+                                       p.set("u_prevViewProj", prevProj_ * prevView_);
+                                     });
+               gpu_->draw(programs, in.time, prevTime_);
                glDisable(GL_DEPTH_TEST);
              }});
   if (keepGBuffer) graph.requestSink("gbuffer");
@@ -290,16 +293,16 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const std::string& shadowPrelude = prelude;
   g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, shadowPrelude, &in] {
            Technique& t = vp.technique;
-           ProgramSpec spec{"shadowmap " + t.layout->id(), {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}}, shadowPrelude};
-           Program& p = shaders_.get(spec);
-           if (!p.valid()) return;
            vp.shadowFbo_.bind();
            glClearNamedFramebufferfi(vp.shadowFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
            glEnable(GL_DEPTH_TEST);
-           p.use();
-           setTechniqueUniforms(p, t, vp.lightSpace, scene_->light);
+           PassPrograms programs(shaders_,
+                                 {"shadowmap " + t.layout->id(),
+                                  {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
+                                  shadowPrelude},
+                                 [this, &vp](const Program& p) { setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light); });
            static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
-           gpu_->draw(p, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
+           gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
            glDisable(GL_DEPTH_TEST);
          }});
   // Binds the G-buffer, shadow map and sampler a visibility-computing program reads.
@@ -324,15 +327,11 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
              ProgramSpec spec{"forward " + t.layout->id() + "+" + t.representation->id(),
                               {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/forward.frag"}},
                               prelude};
-             Program& p = shaders_.get(spec);
-             if (!p.valid()) return;
              vp.forwardFbo_.bind();
              const float background[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // visibility 1, confidence 0
              glClearNamedFramebufferfv(vp.forwardFbo_.id(), GL_COLOR, 1, background);
              glClearNamedFramebufferfi(vp.forwardFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-             p.use();
-             bindVisibilityInputs(p);
-             drawSceneForward(p, in.time);
+             drawSceneForward(spec, bindVisibilityInputs, in.time);
              glBindSampler(2, 0);
              drawSky();
            }});
@@ -383,7 +382,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.color = "color" + tag;
   ctx.colorTex = vp.color_.get();
   ctx.depthTex = vp.depth_.get();
-  ctx.drawScene = [this, &in](const Program& p) { drawSceneForward(p, in.time); };
+  ctx.drawScene = [this, &in](const ProgramSpec& spec, const std::function<void(const Program&)>& setup) {
+    drawSceneForward(spec, setup, in.time);
+  };
   ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
   vp.accumulated_ = vp.accumulation->addPasses(g, ctx);

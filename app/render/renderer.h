@@ -52,9 +52,11 @@ struct AccumulationContext {
   std::string color;      // resource
   Texture2D* colorTex = nullptr;
   Texture2D* depthTex = nullptr;  // the viewport's own depth target for a scene pass
-  // Draw the scene (sets u_viewProj, u_prevViewProj, per-instance transforms and materials;
-  // depth test on) and the sky (colour attachment 0 only) into the bound framebuffer.
-  std::function<void(const Program&)> drawScene;
+  // Draw the scene with programs built from `spec` (one per material variant; `setup` sets the
+  // pass's uniforms on each, then u_viewProj, u_prevViewProj, u_prevView, per-instance
+  // transforms and materials are set; depth test on) and the sky (colour attachment 0 only)
+  // into the bound framebuffer.
+  std::function<void(const ProgramSpec&, const std::function<void(const Program&)>&)> drawScene;
   std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
   bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
@@ -125,7 +127,7 @@ class Renderer {
   std::string techniquePrelude(const Technique& t, const LightSpace& ls) const;
   void drawFullscreen();
   void drawSky();
-  void drawSceneForward(const Program& p, double time);
+  void drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup, double time);
 
   ShaderLibrary& shaders_;
   const Scene* scene_ = nullptr;
