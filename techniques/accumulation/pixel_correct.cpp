@@ -141,8 +141,6 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   graph.add({"pixel-correct" + tag, {ctx.shadowMap, prevRes}, {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility},
              [c, prevTex, fbo, hasHistory, m, prelude] {
                ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, prelude};
-               Program& p = c.shaders->get(spec);
-               if (!p.valid()) return;  // the error is shown; nothing sensible to draw
                fbo->bind();
                glViewport(0, 0, c.width, c.height);
                // Background: lit, no history (depth 0), raw test lit with no confidence.
@@ -151,10 +149,10 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 2, history);
                glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 3, raw);
                glClearNamedFramebufferfi(fbo->id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-               p.use();
-               bindInputs(c, p, prevTex, false);
-               setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
-               c.drawScene(p);
+               c.drawScene(spec, [&](const Program& p) {
+                 bindInputs(c, p, prevTex, false);
+                 setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
+               });
                unbindSampler();
                c.drawSky();
              }});
