@@ -35,6 +35,31 @@ float pcLinearDepth(vec3 world) { return -(u_view * vec4(world, 1.0)).z; }
 // instance's previous transform) with the hardware's bilinear filter, as the paper does. The
 // filtered depth must match the depth the point had in the previous frame: across a depth edge
 // the filter mixes depths and the test fails, which is the disocclusion case.
+// Bilinear (the paper) or Catmull-Rom (pc.history_filter): resampling the history every frame
+// with a bilinear filter blurs it a little more each frame while the camera moves (edges lag);
+// the Catmull-Rom spline keeps them sharp. Nine bilinear taps give the 4x4 spline.
+uniform float u_pc_history_filter;
+vec3 pcHistorySample(vec2 uv) {
+  if (u_pc_history_filter < 0.5) return texture(u_history, uv).rgb;
+  vec2 size = vec2(textureSize(u_history, 0));
+  vec2 p = uv * size;
+  vec2 t1 = floor(p - 0.5) + 0.5;
+  vec2 f = p - t1;
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 w12 = w1 + w2;
+  vec2 c0 = (t1 - 1.0) / size, c12 = (t1 + w2 / w12) / size, c3 = (t1 + 2.0) / size;
+  vec3 r = (texture(u_history, vec2(c0.x, c0.y)).rgb * w0.x + texture(u_history, vec2(c12.x, c0.y)).rgb * w12.x +
+            texture(u_history, vec2(c3.x, c0.y)).rgb * w3.x) * w0.y;
+  r += (texture(u_history, vec2(c0.x, c12.y)).rgb * w0.x + texture(u_history, vec2(c12.x, c12.y)).rgb * w12.x +
+        texture(u_history, vec2(c3.x, c12.y)).rgb * w3.x) * w12.y;
+  r += (texture(u_history, vec2(c0.x, c3.y)).rgb * w0.x + texture(u_history, vec2(c12.x, c3.y)).rgb * w12.x +
+        texture(u_history, vec2(c3.x, c3.y)).rgb * w3.x) * w3.y;
+  return r;
+}
+
 // m: previous-frame NDC (xyz), w = 1 when valid; expected: previous linear view depth.
 PcHistory pcLookupFrom(vec4 m, float expected) {
   PcHistory h;
@@ -46,7 +71,7 @@ PcHistory pcLookupFrom(vec4 m, float expected) {
   if (m.w < 0.5 || !pcFinite(m.x) || !pcFinite(m.y) || !pcFinite(m.z)) return h;
   if (abs(m.z) > 1.0 || any(greaterThan(abs(m.xy), vec2(1.0)))) return h;  // outside the previous frustum
   if (!pcFinite(expected) || expected <= 0.0) return h;
-  vec3 tap = texture(u_history, m.xy * 0.5 + 0.5).rgb;
+  vec3 tap = pcHistorySample(m.xy * 0.5 + 0.5);
   h.state = PC_DISOCCLUDED;
   if (!(tap.y > 0.0) || abs(tap.y - expected) > u_pc_disocclusion * expected) return h;
   h.s = clamp(tap.x, 0.0, 1.0);

@@ -221,6 +221,9 @@ class PixelCorrectAccumulation : public Accumulation {
         {"pc.disocclusion", ParamType::Float, 0.001, 0.5, 0.02, "relative depth",
          "history tap rejected when |expected - stored view depth| > this x expected depth",
          {}, true},
+        {"pc.history_filter", ParamType::Enum, 0, 0, 0, "",
+         "history resampling: bilinear (the paper) blurs edges a little more every frame while the camera moves; "
+         "catmull-rom (beyond the paper) halves that error but adds ringing that flickers", {"bilinear", "catmull-rom"}},
         {"pc.history_format", ParamType::Enum, 0, 0, 0, "",
          "history buffer precision (s, depth, W): fp16 as in the paper, or fp32", {"fp16", "fp32"}},
         {"pc.reject", ParamType::Float, 0, 1, 0.5, "visibility",
