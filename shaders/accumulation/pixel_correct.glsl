@@ -13,7 +13,6 @@ uniform mat4 u_invPrevProj;     // inverse of the previous frame's projection
 uniform float u_pc_disocclusion;
 uniform float u_pc_reject;
 uniform float u_pc_reject_confidence;
-uniform float u_pc_reject_neighbours;
 
 const int PC_VALID = 0;        // history found and used
 const int PC_NONE = 1;         // no history at all (first frame, cut)
@@ -38,9 +37,12 @@ float pcLinearDepth(vec3 world) { return -(u_view * vec4(world, 1.0)).z; }
 // Bilinear (the paper) or Catmull-Rom (pc.history_filter): resampling the history every frame
 // with a bilinear filter blurs it a little more each frame while the camera moves (edges lag);
 // the Catmull-Rom spline keeps them sharp. Nine bilinear taps give the 4x4 spline.
-uniform float u_pc_history_filter;
+// PC_CATMULL_ROM comes from the pass's prelude (a software rasterizer runs both sides of a
+// uniform branch, so the nine taps would cost even when unused).
 vec3 pcHistorySample(vec2 uv) {
-  if (u_pc_history_filter < 0.5) return texture(u_history, uv).rgb;
+#ifndef PC_CATMULL_ROM
+  return texture(u_history, uv).rgb;
+#else
   vec2 size = vec2(textureSize(u_history, 0));
   vec2 p = uv * size;
   vec2 t1 = floor(p - 0.5) + 0.5;
@@ -58,6 +60,7 @@ vec3 pcHistorySample(vec2 uv) {
   r += (texture(u_history, vec2(c0.x, c3.y)).rgb * w0.x + texture(u_history, vec2(c12.x, c3.y)).rgb * w12.x +
         texture(u_history, vec2(c3.x, c3.y)).rgb * w3.x) * w3.y;
   return r;
+#endif
 }
 
 // m: previous-frame NDC (xyz), w = 1 when valid; expected: previous linear view depth.
@@ -87,7 +90,11 @@ PcHistory pcLookupFrom(vec4 m, float expected) {
 bool pcRejectHistory(vec3 coord, float f, float c, float history) {
   if (u_pc_reject >= 1.0 || abs(f - history) <= u_pc_reject) return false;
   if (c >= u_pc_reject_confidence) return true;
-  return u_pc_reject_neighbours > 0.5 && visibilityUnambiguous(coord, f);
+#ifdef PC_REJECT_NEIGHBOURS
+  return visibilityUnambiguous(coord, f);
+#else
+  return false;
+#endif
 }
 
 // History for the update, with the rejection rule applied; coord from visibilityTermAt.

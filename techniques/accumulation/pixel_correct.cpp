@@ -134,7 +134,11 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
     fboColor_[write] = ctx.colorTex;
   }
   Framebuffer* fbo = &fbo_[write];
-  const std::string prelude = ctx.techniquePrelude;
+  // Switches that change the shader's work are defines, not uniform branches (llvmpipe pays for
+  // both sides of a branch).
+  std::string prelude = ctx.techniquePrelude;
+  if (params.choice("pc.history_filter") == "catmull-rom") prelude += "#define PC_CATMULL_ROM\n";
+  if (params.b("pc.reject_neighbours")) prelude += "#define PC_REJECT_NEIGHBOURS\n";
 
   // One scene pass, as in the paper: test, reprojection, update and shading with multiple
   // render targets; the previous-frame position comes from the vertex shader.
@@ -226,7 +230,7 @@ class PixelCorrectAccumulation : public Accumulation {
          "catmull-rom (beyond the paper) halves that error but adds ringing that flickers", {"bilinear", "catmull-rom"}},
         {"pc.history_format", ParamType::Enum, 0, 0, 0, "",
          "history buffer precision (s, depth, W): fp16 as in the paper, or fp32", {"fp16", "fp32"}},
-        {"pc.reject", ParamType::Float, 0, 1, 0.5, "visibility",
+        {"pc.reject", ParamType::Float, 0, 1, 0.05, "visibility",
          "moving casters (beyond the paper): history replaced by the current test when they differ by more than "
          "this and the test is unambiguous (confident, or its whole neighbourhood agrees); 1 = off", {}},
         {"pc.reject_confidence", ParamType::Float, 0, 1, 0.9, "",
