@@ -11,11 +11,21 @@ void registerAccumulations(std::vector<std::unique_ptr<Accumulation>>& out);
 const std::vector<ParamDecl>& commonParams() {
   static const std::vector<ParamDecl> decls = {
       {"shadowmap.size", ParamType::Int, 64, 8192, 2048, "texels", "shadow-map texels per side", {}, true},
-      {"shadowmap.cull", ParamType::Enum, 0, 0, 0, "",
+      {"shadowmap.cull",
+       ParamType::Enum,
+       0,
+       0,
+       0,
+       "",
        "faces stored in the shadow map: front (standard), back (second-depth shadow mapping, Wang & Molnar "
        "1994), or both",
        {"front", "back", "both"}},
-      {"bias.mode", ParamType::Enum, 0, 0, 2, "",
+      {"bias.mode",
+       ParamType::Enum,
+       0,
+       0,
+       2,
+       "",
        "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
        "(+constant)",
        {"none", "constant", "slope", "normal-offset"}},
@@ -64,10 +74,18 @@ const std::vector<Preset>& allPresets() {
       {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
       {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
       {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
-      {"pixel-correct", "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
-       "focused", "depth-nearest", "pixel-correct", {}},
-      {"pixel-correct-pcf", "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging", "focused",
-       "depth-pcf", "pixel-correct", {"pcf.kernel=3"}},
+      {"pixel-correct",
+       "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
+       "focused",
+       "depth-nearest",
+       "pixel-correct",
+       {}},
+      {"pixel-correct-pcf",
+       "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
+       "focused",
+       "depth-pcf",
+       "pixel-correct",
+       {"pcf.kernel=3"}},
   };
   return presets;
 }

@@ -37,7 +37,7 @@ struct LightSpace {
   float nearPlane = 0.1f;
   float farPlane = 100.0f;
   glm::vec2 windowMin{-1.0f}, windowMax{1.0f};  // orthographic window in light-view units
-  int size = 1024;                               // texels per side
+  int size = 1024;                              // texels per side
   // World size of one texel: orthographic = constant; perspective = this times view distance.
   float texelWorldSize = 0.01f;
 };
@@ -130,7 +130,7 @@ struct Technique {
   const Layout* layout = nullptr;
   const Representation* representation = nullptr;
   const Accumulation* accumulation = nullptr;
-  ParamSet params;  // common + layout + representation + accumulation declarations
+  ParamSet params;            // common + layout + representation + accumulation declarations
   std::string label() const;  // "pcf (focused + depth-pcf)"
 };
 

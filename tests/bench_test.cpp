@@ -24,8 +24,8 @@ struct TempDir {
   fs::path path;
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() / ("shadowlab-bench-test-" + std::string(info->name()) + "-" +
-                                        std::to_string(::getpid()));
+    path = fs::temp_directory_path() /
+           ("shadowlab-bench-test-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
     fs::remove_all(path);
     fs::create_directories(path);
     ::setenv("XDG_CACHE_HOME", (path / "cache").c_str(), 1);
@@ -60,9 +60,11 @@ nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(readFi
 TEST(Bench, JsonHasEveryFieldAndReport) {
   TempDir t;
   const fs::path json = t.path / "b.json", report = t.path / "report";
-  RunResult r = run("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
-                    "--frames 3 --warmup 1 --json '" + json.string() + "' --report '" + report.string() + "'",
-                    t.path);
+  RunResult r =
+      run("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
+          "--frames 3 --warmup 1 --json '" +
+              json.string() + "' --report '" + report.string() + "'",
+          t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   for (const char* k : {"scene", "size", "camera", "renderer", "timer", "machine", "date", "command", "entries"})
@@ -113,8 +115,11 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
 TEST(Bench, PathMeasuresFlicker) {
   TempDir t;
   const fs::path json = t.path / "b.json";
-  RunResult r = run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
-                    "--json '" + json.string() + "'", t.path);
+  RunResult r =
+      run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
+          "--json '" +
+              json.string() + "'",
+          t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   EXPECT_EQ(j["path"], "orbit");
@@ -126,7 +131,8 @@ TEST(Bench, PathMeasuresFlicker) {
   EXPECT_EQ(j["reference"]["traced"].get<int>() + j["reference"]["cached"].get<int>(), 4);
   // The per-frame references are cached: a second run traces nothing.
   r = run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 --json '" +
-              json.string() + "'", t.path);
+              json.string() + "'",
+          t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(readJson(json)["reference"]["cached"], 4);
 }
@@ -134,8 +140,11 @@ TEST(Bench, PathMeasuresFlicker) {
 TEST(Bench, SeesShadowMapResolution) {
   TempDir t;
   const fs::path json = t.path / "b.json";
-  RunResult r = run("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
-                    "--frames 1 --warmup 1 --json '" + json.string() + "'", t.path);
+  RunResult r =
+      run("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
+          "--frames 1 --warmup 1 --json '" +
+              json.string() + "'",
+          t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   ASSERT_EQ(j["entries"].size(), 2u);
@@ -179,8 +188,8 @@ TEST(ReferenceCache, CommandCachesItsResult) {
   EXPECT_NE(b.out.find("reference: cached"), std::string::npos) << b.out;
   EXPECT_EQ(readFile(t.path / "a.png"), readFile(t.path / "b.png"));
   // Another camera is another key.
-  RunResult c = run("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'",
-                    t.path);
+  RunResult c =
+      run("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'", t.path);
   ASSERT_EQ(c.code, 0) << c.out;
   EXPECT_NE(c.out.find("traced in"), std::string::npos) << c.out;
 }

@@ -52,9 +52,9 @@ TEST(ExplorerErrorPanel, SizeAndSceneChangesAreNotTheSameView) {
 }
 
 TEST(ExplorerErrorPanel, ParetoFrontKeepsOnlyUnbeatenPoints) {
-  std::vector<sl::ChartPoint> points = {
-      {"slow and good", 10.0, 0.5}, {"fast and bad", 1.0, 8.0}, {"dominated", 6.0, 9.0},
-      {"middle", 4.0, 2.0},         {"tie in time, worse", 4.0, 3.0}, {"slow and worse", 12.0, 0.5}};
+  std::vector<sl::ChartPoint> points = {{"slow and good", 10.0, 0.5},     {"fast and bad", 1.0, 8.0},
+                                        {"dominated", 6.0, 9.0},          {"middle", 4.0, 2.0},
+                                        {"tie in time, worse", 4.0, 3.0}, {"slow and worse", 12.0, 0.5}};
   const std::vector<size_t> front = sl::paretoFront(points);
   ASSERT_EQ(front.size(), 3u);
   EXPECT_EQ(points[front[0]].config, "fast and bad");
@@ -106,9 +106,9 @@ TEST(ExplorerErrorPanel, AxisIsLinearFromZeroForNarrowRangesAndLogForWideOnes) {
 
 TEST(ExplorerErrorPanel, ViewportCostIsItsOwnPassesPlusTheGBuffer) {
   const std::vector<sl::PassTiming> passes = {
-      {"gbuffer", 1.0},      {"shadowmap[0]", 0.5},     {"shade[0]", 0.25},  {"shadowmap[1]", 2.0},
-      {"visibility[1]", 1.0}, {"pixel-correct[1]", 0.5}, {"view.history[1]", 9.0}, {"shade[1]", 0.25},
-      {"shadowmap[10]", 7.0}};
+      {"gbuffer", 1.0},         {"shadowmap[0]", 0.5},  {"shade[0]", 0.25},
+      {"shadowmap[1]", 2.0},    {"visibility[1]", 1.0}, {"pixel-correct[1]", 0.5},
+      {"view.history[1]", 9.0}, {"shade[1]", 0.25},     {"shadowmap[10]", 7.0}};
   const sl::ViewportCost a = sl::viewportFrameMs(passes, 0);
   EXPECT_DOUBLE_EQ(a.ownMs, 0.75);
   EXPECT_DOUBLE_EQ(a.gbufferMs, 1.0);

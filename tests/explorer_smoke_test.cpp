@@ -64,14 +64,12 @@ double greyVariance(const unsigned char* rgb, int width, int x0, int y0, int x1,
 
 TEST(ExplorerSmoke, DrawsFramesUnderXvfbAndWritesAScreenshot) {
   if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt install xvfb); explorer not run";
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("shadowlab-explorer-smoke-" + std::to_string(getpid()));
+  const auto dir = std::filesystem::temp_directory_path() / ("shadowlab-explorer-smoke-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const std::string shot = (dir / "shot.png").string();
 
-  const std::string command = "timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " +
-                              shellQuote(SHADOWLAB_BINARY) + " --frames 5 --screenshot-on-exit " +
-                              shellQuote(shot);
+  const std::string command = "timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " + shellQuote(SHADOWLAB_BINARY) +
+                              " --frames 5 --screenshot-on-exit " + shellQuote(shot);
   const CommandResult result = runCommand(command);
   ASSERT_EQ(result.exitCode, 0) << command << "\n" << result.output;
   ASSERT_TRUE(std::filesystem::exists(shot)) << result.output;

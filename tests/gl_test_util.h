@@ -7,8 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -45,6 +48,38 @@ inline Frame readFrame(const Renderer& r, const Viewport& vp, int w, int h) {
   f.position = r.gPosition().readFloats(4);
   f.normal = r.gNormal().readFloats(4);
   return f;
+}
+
+// Copies the shader folder to a temp dir (hot-reload tests edit the copy, never the source).
+inline std::string copyShaders(const std::string& name) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::copy(defaultShaderDir(), dir, std::filesystem::copy_options::recursive);
+  return dir.string();
+}
+
+// Replaces the first `from` with `to`; makes sure the modification time moves even on
+// coarse-grained file systems, so the shader library sees the change.
+inline void rewriteFile(const std::filesystem::path& p, const std::string& from, const std::string& to) {
+  std::stringstream s;
+  s << std::ifstream(p).rdbuf();
+  std::string text = s.str();
+  auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  auto before = std::filesystem::last_write_time(p);
+  std::ofstream(p, std::ios::trunc) << text;
+  if (std::filesystem::last_write_time(p) == before)
+    std::filesystem::last_write_time(p, before + std::chrono::seconds(1));
+}
+
+// 1-based number of the first line containing `needle` (0 = none).
+inline int lineOf(const std::filesystem::path& p, const std::string& needle) {
+  std::ifstream in(p);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.find(needle) != std::string::npos) return n;
+  return 0;
 }
 
 inline std::string writeTempFile(const std::string& name, const std::string& text) {

@@ -11,24 +11,11 @@ namespace sl {
 
 namespace fs = std::filesystem;
 
-static std::string copyShaders(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(dir);
-  fs::copy(defaultShaderDir(), dir, fs::copy_options::recursive);
-  return dir.string();
-}
+using test::copyShaders;
+using test::lineOf;
 
 static void rewrite(const fs::path& p, const std::string& from, const std::string& to) {
-  std::stringstream s;
-  s << std::ifstream(p).rdbuf();
-  std::string text = s.str();
-  auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  // Make sure the modification time moves even on coarse-grained file systems.
-  auto before = fs::last_write_time(p);
-  std::ofstream(p, std::ios::trunc) << text;
-  if (fs::last_write_time(p) == before) fs::last_write_time(p, before + std::chrono::seconds(1));
+  test::rewriteFile(p, from, to);
 }
 
 TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram) {
@@ -60,13 +47,7 @@ TEST(HotReload, ChangedIncludedFileRebuildsAndBrokenFileKeepsTheLastGoodProgram)
   auto errors = h.shaders.errors();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].find("shaders/passes/forward.frag:"), std::string::npos) << errors[0];
-  std::ifstream broken(fs::path(dir) / "passes/forward.frag");
-  std::string line;
-  int lineNo = 0, badLine = 0;
-  while (std::getline(broken, line)) {
-    ++lineNo;
-    if (line.find("+* ;") != std::string::npos) badLine = lineNo;
-  }
+  const int badLine = lineOf(fs::path(dir) / "passes/forward.frag", "+* ;");
   EXPECT_NE(errors[0].find("forward.frag:" + std::to_string(badLine) + ":"), std::string::npos) << errors[0];
   h.renderer.render(in, {&vp});
   auto pixels = vp.colorTexture()->readRgba8();

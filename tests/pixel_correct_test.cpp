@@ -139,10 +139,12 @@ TEST(PixelCorrect, ConvergesToTheReferenceWithAStillCamera) {
   }
   Frame last = test::readFrame(h.renderer, pc, w, hgt);
   Comparison c = compareToReference(scene, last, 0.0);
-  std::printf("[pixel-correct] basic 320x180, 512^2: standard wrong %.3f%% | pixel-correct frame 1..60:", ref.metrics.wrongPixelPct);
+  std::printf("[pixel-correct] basic 320x180, 512^2: standard wrong %.3f%% | pixel-correct frame 1..60:",
+              ref.metrics.wrongPixelPct);
   for (double x : wrong) std::printf(" %.3f%%", x);
-  std::printf(" | final wrong %.3f%% (false shadow %.3f%%, false light %.3f%%), rmse %.4f, %s\n", c.metrics.wrongPixelPct,
-              c.metrics.falseShadowPct, c.metrics.falseLightPct, c.metrics.rmse, pc.accumulation->status().c_str());
+  std::printf(" | final wrong %.3f%% (false shadow %.3f%%, false light %.3f%%), rmse %.4f, %s\n",
+              c.metrics.wrongPixelPct, c.metrics.falseShadowPct, c.metrics.falseLightPct, c.metrics.rmse,
+              pc.accumulation->status().c_str());
   EXPECT_EQ(last.nonfinite(), 0);
   EXPECT_LT(c.metrics.wrongPixelPct, 0.1);
   EXPECT_LT(c.metrics.wrongPixelPct, ref.metrics.wrongPixelPct);
@@ -200,7 +202,7 @@ TEST(PixelCorrect, NoNonFiniteValuesUnderFastCameraMotion) {
       float r = (f % 3 == 0) ? radius * 0.05f : radius * (0.5f + 0.25f * (f % 4));
       cam.position = center + glm::vec3(std::cos(a) * r, 0.3f + (f % 5) * 0.8f, std::sin(a) * r);
       if (f % 4 == 1) cam.target = cam.position + (cam.position - center);  // looking away
-      cam.farPlane = (f % 2) ? radius * 0.8f : 100.0f;                     // far plane through the scene
+      cam.farPlane = (f % 2) ? radius * 0.8f : 100.0f;                      // far plane through the scene
       cam.nearPlane = (f % 3 == 2) ? 1.0f : 0.1f;
       h.renderer.render(frameInput(cam, w, hgt), {&pc});
       nonfinite += test::readFrame(h.renderer, pc, w, hgt).nonfinite();
@@ -234,7 +236,8 @@ TEST(PixelCorrect, MovingBoxLeavesNoGhostShadow) {
     t = 1.0 + f / 30.0;  // the box accelerates through the middle of its swing (t = 2)
     h.renderer.render(frameInput(cam, w, hgt, t), {&pc, &standard, &noReject});
     for (int g : gaps)
-      if (f == frames - 1 - g) earlierRef[g] = compareToReference(scene, test::readFrame(h.renderer, pc, w, hgt), t).reference;
+      if (f == frames - 1 - g)
+        earlierRef[g] = compareToReference(scene, test::readFrame(h.renderer, pc, w, hgt), t).reference;
     if (f == frames - 1) {
       pcCmp = compareToReference(scene, test::readFrame(h.renderer, pc, w, hgt), t);
       stdCmp = compareToReference(scene, test::readFrame(h.renderer, standard, w, hgt), t);
@@ -252,15 +255,18 @@ TEST(PixelCorrect, MovingBoxLeavesNoGhostShadow) {
     }
     return std::make_pair(area, wrong);
   };
-  std::printf("[pixel-correct] moving 320x180, 512^2, t=%.2f: wrong standard %.3f%%, pixel-correct %.3f%%, "
-              "without rejection %.3f%%\n", t, stdCmp.metrics.wrongPixelPct, pcCmp.metrics.wrongPixelPct,
-              nrCmp.metrics.wrongPixelPct);
+  std::printf(
+      "[pixel-correct] moving 320x180, 512^2, t=%.2f: wrong standard %.3f%%, pixel-correct %.3f%%, "
+      "without rejection %.3f%%\n",
+      t, stdCmp.metrics.wrongPixelPct, pcCmp.metrics.wrongPixelPct, nrCmp.metrics.wrongPixelPct);
   for (int g : gaps) {
     auto [area, ghost] = leftArea(pc, g);
     auto [area2, ghostNoReject] = leftArea(noReject, g);
     auto [area3, ghostStandard] = leftArea(standard, g);
-    std::printf("  area the shadow left in the last %2d frames: %5lld px, wrong there: standard %lld, "
-                "pixel-correct %lld, without rejection %lld\n", g, area, ghostStandard, ghost, ghostNoReject);
+    std::printf(
+        "  area the shadow left in the last %2d frames: %5lld px, wrong there: standard %lld, "
+        "pixel-correct %lld, without rejection %lld\n",
+        g, area, ghostStandard, ghost, ghostNoReject);
     ASSERT_GT(area, 40);  // the shadow really moved
     (void)area2, (void)area3;
     // No lasting ghost: what the shadow left 16 frames (0.53 s) ago is lit again but for at most
@@ -289,7 +295,8 @@ TEST(PixelCorrect, DebugViewsRunOnlyWhenShown) {
   FrameInput in = frameInput(scene.cameras.front(), w, hgt);
   h.renderer.render(in, {&pc});
   EXPECT_TRUE(hasPass(h.renderer, "pixel-correct[0]"));
-  for (const char* v : {"confidence", "history", "disocclusion"}) EXPECT_FALSE(hasPass(h.renderer, std::string("view.") + v + "[0]"));
+  for (const char* v : {"confidence", "history", "disocclusion"})
+    EXPECT_FALSE(hasPass(h.renderer, std::string("view.") + v + "[0]"));
   pc.shownViews = {"history"};
   h.renderer.render(in, {&pc});
   EXPECT_TRUE(hasPass(h.renderer, "view.history[0]"));
@@ -307,34 +314,14 @@ TEST(PixelCorrect, DebugViewsRunOnlyWhenShown) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-namespace {
 namespace fs = std::filesystem;
-void rewriteFile(const fs::path& p, const std::string& from, const std::string& to) {
-  std::stringstream s;
-  s << std::ifstream(p).rdbuf();
-  std::string text = s.str();
-  auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  auto before = fs::last_write_time(p);
-  std::ofstream(p, std::ios::trunc) << text;
-  if (fs::last_write_time(p) == before) fs::last_write_time(p, before + std::chrono::seconds(1));
-}
-int lineOf(const fs::path& p, const std::string& needle) {
-  std::ifstream in(p);
-  std::string line;
-  for (int n = 1; std::getline(in, line); ++n)
-    if (line.find(needle) != std::string::npos) return n;
-  return 0;
-}
-}  // namespace
+using test::lineOf;
+using test::rewriteFile;
 
 // Hot reload of the update shader: a broken edit keeps the last good program running and names
 // pixel_correct.frag:LINE; the fix rebuilds it.
 TEST(PixelCorrect, HotReloadOfTheUpdateShader) {
-  fs::path dir = fs::path(::testing::TempDir()) / "pixel_correct_shaders";
-  fs::remove_all(dir);
-  fs::copy(defaultShaderDir(), dir, fs::copy_options::recursive);
+  fs::path dir = test::copyShaders("pixel_correct_shaders");
   GlHarness h(dir.string());
   Scene scene = loadScene("basic", defaultAssetsDir());
   h.renderer.setScene(scene);

@@ -144,8 +144,8 @@ TEST(Reference, HardShadowMatchesProjectedHull) {
       shadowed += expected == 0.0f;
       if (vis[i] != expected && std::abs(dist) > 1e-3) {
         ++mismatches;
-        ADD_FAILURE() << "point (" << p.x << ", " << p.y << ") visibility " << vis[i] << ", expected "
-                      << expected << " (distance to shadow boundary " << dist << ")";
+        ADD_FAILURE() << "point (" << p.x << ", " << p.y << ") visibility " << vis[i] << ", expected " << expected
+                      << " (distance to shadow boundary " << dist << ")";
       }
       if (mismatches > 10) return;
     }
@@ -206,9 +206,9 @@ TEST(Reference, SpotConeAndOcclusion) {
   scene.light.fovDeg = 30.0f;
   const ReferenceTracer tracer(scene);
   TestGBuffer g(3, 1);
-  g.set(0, 0, {0.8f, 0.0f, 0.0f}, {0, 1, 0});   // inside the cone, beside the box: lit
-  g.set(1, 0, {0.3f, 1.0f, 0.0f}, {0, 1, 0});   // box top: lit
-  g.set(2, 0, {2.0f, 0.0f, 2.0f}, {0, 1, 0});   // outside the 15 degree half-angle: unlit
+  g.set(0, 0, {0.8f, 0.0f, 0.0f}, {0, 1, 0});  // inside the cone, beside the box: lit
+  g.set(1, 0, {0.3f, 1.0f, 0.0f}, {0, 1, 0});  // box top: lit
+  g.set(2, 0, {2.0f, 0.0f, 2.0f}, {0, 1, 0});  // outside the 15 degree half-angle: unlit
   const std::vector<float> vis = tracer.visibility(g.view(), ReferenceOptions{});
   EXPECT_EQ(vis[0], 1.0f);
   EXPECT_EQ(vis[1], 1.0f);
@@ -264,8 +264,7 @@ TEST(Reference, DeterministicAcrossThreadCounts) {
   const int n = 48;
   TestGBuffer g(n, n);
   for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x)
-      g.set(x, y, {-1.5f + 2.0f * x / n, 0.0f, -1.5f + 2.0f * y / n}, {0, 1, 0});
+    for (int x = 0; x < n; ++x) g.set(x, y, {-1.5f + 2.0f * x / n, 0.0f, -1.5f + 2.0f * y / n}, {0, 1, 0});
   ReferenceOptions options;
   options.lightSamples = 16;
   options.threads = 1;
@@ -323,10 +322,11 @@ TEST(Reference, SpeedSphereOverPlane) {
   const auto done = std::chrono::steady_clock::now();
   auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const double lit = std::count(vis.begin(), vis.end(), 1.0f) * 100.0 / vis.size();
-  std::printf("[speed] %zu triangles, %dx%d hard shadows: build %.1f ms, trace %.1f ms, total %.1f ms "
-              "(%u hardware threads, %.1f%% lit)\n",
-              scene.meshes[1].indices.size() / 3 + 2, w, h, ms(start, built), ms(built, done),
-              ms(start, done), std::thread::hardware_concurrency(), lit);
+  std::printf(
+      "[speed] %zu triangles, %dx%d hard shadows: build %.1f ms, trace %.1f ms, total %.1f ms "
+      "(%u hardware threads, %.1f%% lit)\n",
+      scene.meshes[1].indices.size() / 3 + 2, w, h, ms(start, built), ms(built, done), ms(start, done),
+      std::thread::hardware_concurrency(), lit);
   EXPECT_GT(lit, 50.0);
   EXPECT_LT(lit, 99.0);
 }

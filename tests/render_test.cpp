@@ -38,7 +38,9 @@ std::vector<glm::vec2> analyticShadow(const glm::vec3& dIn) {
     pts.emplace_back(q.x, q.z);
   }
   std::sort(pts.begin(), pts.end(), [](auto a, auto b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
   std::vector<glm::vec2> hull(16);
   size_t k = 0;
   for (size_t i = 0; i < pts.size(); ++i) {
@@ -91,8 +93,8 @@ GroundCount compareGround(const Frame& f, const std::vector<glm::vec2>& poly, fl
   return c;
 }
 
-Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset, std::vector<std::string> sets,
-                 int w, int hgt, Viewport** keep = nullptr) {
+Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset, std::vector<std::string> sets, int w,
+                 int hgt, Viewport** keep = nullptr) {
   h.renderer.setScene(scene);
   Viewport vp(makeTechnique(preset, sets));
   FrameInput in;
@@ -112,7 +114,8 @@ TEST(Render, StandardMatchesTheAnalyticBoxShadowExceptWithinOneTexel) {
   Scene scene = boxScene("-0.5, -1, -0.35");
   Frame f = renderOnce(h, scene, "standard", {"shadowmap.size=2048"}, 320, 180);
   Technique t = makeTechnique("standard", {"shadowmap.size=2048"});
-  LayoutInput li{&scene, 0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f), &t.params, {}};
+  LayoutInput li{&scene,    0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f),
+                 &t.params, {}};
   LightSpace ls = t.layout->compute(li);
   // One texel of the map, as it lands on the ground (stretched by 1/cos of the light angle).
   float band = ls.texelWorldSize / std::abs(glm::normalize(d).y);
@@ -134,7 +137,8 @@ TEST(Render, BiasRemovesAcneAtGrazingLightWithoutLosingContactShadow) {
   for (const std::string mode : {"none", "constant", "slope", "normal-offset"}) {
     Frame f = renderOnce(h, scene, "standard", {"shadowmap.size=1024", "bias.mode=" + mode}, 320, 180);
     Technique t = makeTechnique("standard", {"shadowmap.size=1024"});
-    LayoutInput li{&scene, 0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f), &t.params, {}};
+    LayoutInput li{&scene,    0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f),
+                   &t.params, {}};
     float band = 2.0f * t.layout->compute(li).texelWorldSize / std::abs(glm::normalize(d).y);
     counts[mode] = compareGround(f, poly, band);
     EXPECT_EQ(f.nonfinite(), 0);

@@ -72,37 +72,66 @@ TEST(SceneJson, BadFilesReportFileAndProblem) {
       {"toplevel_typo", sceneWith(R"("camras":[])"), {"unknown key 'camras'"}},
       {"object_typo", R"({"objects":[{"shape":"box","colour":[1,0,0]}]})", {"objects[0].colour", "unknown key"}},
       {"light_typo", sceneWith(R"("light":{"dir":[0,-1,0]})"), {"light.dir", "unknown key"}},
-      {"camera_typo", sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"fov":60}])"), {"cameras[0].fov", "unknown key"}},
-      {"path_key_typo", sceneWith(R"("paths":[{"keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]},{"t":1,"position":[0,1,5],"target":[0,0,0]}]}])"),
+      {"camera_typo",
+       sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"fov":60}])"),
+       {"cameras[0].fov", "unknown key"}},
+      {"path_key_typo",
+       sceneWith(
+           R"("paths":[{"keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]},{"t":1,"position":[0,1,5],"target":[0,0,0]}]}])"),
        {"paths[0].keys[1].t", "unknown key"}},
-      {"motion_typo", R"({"objects":[{"shape":"box","motion":{"type":"oscillate","vector":[1,0,0],"perod":2}}]})", {"unknown key 'perod'"}},
+      {"motion_typo",
+       R"({"objects":[{"shape":"box","motion":{"type":"oscillate","vector":[1,0,0],"perod":2}}]})",
+       {"unknown key 'perod'"}},
       {"key_for_other_shape", R"({"objects":[{"shape":"box","radius":1}]})", {"unknown key 'radius'"}},
-      {"wrong_type", R"({"objects":[{"shape":"box","size":"big"}]})", {"objects[0].size", "expected 3 positive finite numbers"}},
+      {"wrong_type",
+       R"({"objects":[{"shape":"box","size":"big"}]})",
+       {"objects[0].size", "expected 3 positive finite numbers"}},
       {"objects_not_array", R"({"objects":{"shape":"box"}})", {"objects", "expected an array"}},
       {"inf_literal", R"({"objects":[{"shape":"sphere","radius":1e999}]})", {"malformed JSON", "finite", "1e999"}},
       {"inf_in_vector", sceneWith(R"("light":{"direction":[0,-1e999,0]})"), {"finite", "-1e999"}},
-      {"float_overflow", R"({"objects":[{"shape":"sphere","radius":1e300}]})", {"objects[0].radius", "positive finite number"}},
+      {"float_overflow",
+       R"({"objects":[{"shape":"sphere","radius":1e300}]})",
+       {"objects[0].radius", "positive finite number"}},
       {"float_overflow_vector", sceneWith(R"("light":{"direction":[0,-1e300,0]})"), {"light.direction", "finite"}},
-      {"zero_size", std::string(R"({"objects":[)") + kGround + R"(,{"shape":"plane","size":[1,1]},{"shape":"box","size":[1,0,1]}]})",
+      {"zero_size",
+       std::string(R"({"objects":[)") + kGround + R"(,{"shape":"plane","size":[1,1]},{"shape":"box","size":[1,0,1]}]})",
        {"objects[2].size: expected 3 positive finite numbers, got [1,0,1]"}},
-      {"negative_radius", R"({"objects":[{"shape":"cylinder","radius":-1,"height":2}]})", {"objects[0].radius", "positive"}},
+      {"negative_radius",
+       R"({"objects":[{"shape":"cylinder","radius":-1,"height":2}]})",
+       {"objects[0].radius", "positive"}},
       {"zero_light_dir", sceneWith(R"("light":{"direction":[0,0,0]})"), {"light.direction", "zero-length"}},
-      {"near_zero", sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"near":0}])"), {"cameras[0].near", "> 0"}},
-      {"near_ge_far", sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"near":10,"far":5}])"), {"cameras[0].far", "near must be < far"}},
-      {"camera_pos_eq_target", sceneWith(R"("cameras":[{"position":[1,1,1],"target":[1,1,1]}])"), {"cameras[0]", "position equals target"}},
-      {"fov_180", sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"fov_deg":180}])"), {"fov_deg", "(0,180)"}},
+      {"near_zero",
+       sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"near":0}])"),
+       {"cameras[0].near", "> 0"}},
+      {"near_ge_far",
+       sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"near":10,"far":5}])"),
+       {"cameras[0].far", "near must be < far"}},
+      {"camera_pos_eq_target",
+       sceneWith(R"("cameras":[{"position":[1,1,1],"target":[1,1,1]}])"),
+       {"cameras[0]", "position equals target"}},
+      {"fov_180",
+       sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0],"fov_deg":180}])"),
+       {"fov_deg", "(0,180)"}},
       {"light_fov", sceneWith(R"("light":{"type":"spot","fov_deg":0})"), {"light.fov_deg", "(0,180)"}},
-      {"path_one_key", sceneWith(R"("paths":[{"name":"p","keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]}]}])"), {"paths[0].keys", "at least 2"}},
-      {"path_times", sceneWith(R"("paths":[{"keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]},{"time":0,"position":[0,1,4],"target":[0,0,0]}]}])"),
+      {"path_one_key",
+       sceneWith(R"("paths":[{"name":"p","keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]}]}])"),
+       {"paths[0].keys", "at least 2"}},
+      {"path_times",
+       sceneWith(
+           R"("paths":[{"keys":[{"time":0,"position":[0,1,5],"target":[0,0,0]},{"time":0,"position":[0,1,4],"target":[0,0,0]}]}])"),
        {"paths[0].keys[1].time", "strictly increasing"}},
       {"unknown_shape", R"({"objects":[{"shape":"torus"}]})", {"objects[0].shape", "unknown shape 'torus'"}},
       {"unknown_light", sceneWith(R"("light":{"type":"area"})"), {"light.type", "unknown light type 'area'"}},
-      {"missing_gltf", R"({"models":[{"file":"does_not_exist.gltf"}]})", {"models[0].file", "does_not_exist.gltf", "not found"}},
+      {"missing_gltf",
+       R"({"models":[{"file":"does_not_exist.gltf"}]})",
+       {"models[0].file", "does_not_exist.gltf", "not found"}},
       {"empty_scene", R"({"name":"nothing"})", {"no triangles"}},
       {"empty_objects", R"({"objects":[]})", {"no triangles"}},
       {"bad_matrix", R"({"objects":[{"shape":"box","transform":{"matrix":[1,0,0]}}]})", {"transform.matrix", "16"}},
       {"zero_scale", R"({"objects":[{"shape":"box","transform":{"scale":[1,0,1]}}]})", {"transform.scale", "non-zero"}},
-      {"duplicate_camera", sceneWith(R"("cameras":[{"position":[0,1,5],"target":[0,0,0]},{"name":"default","position":[0,2,5],"target":[0,0,0]}])"),
+      {"duplicate_camera",
+       sceneWith(
+           R"("cameras":[{"position":[0,1,5],"target":[0,0,0]},{"name":"default","position":[0,2,5],"target":[0,0,0]}])"),
        {"cameras[1].name", "duplicate"}},
       {"not_object", "[1,2,3]", {"expected an object"}},
   };
@@ -164,7 +193,8 @@ TEST(SceneShapes, NormalsPointOutwardAndWindingMatches) {
     ASSERT_EQ(m.uvs.size(), m.positions.size()) << m.name;
     ASSERT_GT(m.indices.size(), 0u);
     for (size_t t = 0; t < m.indices.size(); t += 3) {
-      const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+      const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                      c = m.positions[m.indices[t + 2]];
       const glm::vec3 face = glm::cross(b - a, c - a);
       ASSERT_GT(glm::length(face), 0.0f) << m.name << " degenerate triangle " << t / 3;
       const glm::vec3 centroid = (a + b + c) / 3.0f;
@@ -182,7 +212,7 @@ TEST(SceneMotion, OscillateAndRotate) {
   osc.type = Motion::Type::Oscillate;
   osc.vector = {2, 0, 0};
   osc.period = 4;
-  EXPECT_NEAR((osc.at(1.0) * glm::vec4(0, 0, 0, 1)).x, 2.0f, 1e-5f);   // quarter period: +amplitude
+  EXPECT_NEAR((osc.at(1.0) * glm::vec4(0, 0, 0, 1)).x, 2.0f, 1e-5f);  // quarter period: +amplitude
   EXPECT_NEAR((osc.at(2.0) * glm::vec4(0, 0, 0, 1)).x, 0.0f, 1e-5f);
   EXPECT_NEAR((osc.at(3.0) * glm::vec4(0, 0, 0, 1)).x, -2.0f, 1e-5f);
   EXPECT_NEAR((osc.at(401.0) * glm::vec4(0, 0, 0, 1)).x, 2.0f, 1e-4f);  // periodic
@@ -250,7 +280,8 @@ TEST(SceneBuiltin, IdsListed) {
   const auto ids = builtinSceneIds(kAssets);
   ASSERT_FALSE(ids.empty());
   EXPECT_EQ(ids.front(), "basic");
-  for (const char* id : {"columns", "dueling-frusta", "terrain", "thin-casters", "moving", "sponza", "engine", "tree"}) {
+  for (const char* id :
+       {"columns", "dueling-frusta", "terrain", "thin-casters", "moving", "sponza", "engine", "tree"}) {
     EXPECT_NE(std::find(ids.begin(), ids.end(), id), ids.end()) << id;
   }
   EXPECT_TRUE(std::is_sorted(ids.begin() + 1, ids.end()));
@@ -298,7 +329,8 @@ TEST(SceneBuiltin, MovingSceneMoves) {
 // --- Small glTF files written by the tests -------------------------------------------------
 
 void writeBinary(const std::string& name, const std::vector<uint8_t>& bytes) {
-  std::ofstream(tempDir() / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), long(bytes.size()));
+  std::ofstream(tempDir() / name, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), long(bytes.size()));
 }
 
 template <typename T>
@@ -323,8 +355,10 @@ std::string writeQuadGltf(const std::string& stem, bool indexed, bool badIndex, 
   const size_t vcount = pos.size() / 3;
   std::string json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
     "nodes":[{"mesh":0,"translation":[0,0,-2]}],
-    "buffers":[{"uri":")" + stem + R"(.bin","byteLength":)" + std::to_string(bin.size()) + R"(}],
-    "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" + std::to_string(posBytes) + "}";
+    "buffers":[{"uri":")" +
+                     stem + R"(.bin","byteLength":)" + std::to_string(bin.size()) + R"(}],
+    "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" +
+                     std::to_string(posBytes) + "}";
   if (indexed) json += R"(,{"buffer":0,"byteOffset":)" + std::to_string(posBytes) + R"(,"byteLength":12})";
   json += R"(],"accessors":[{"bufferView":0,"componentType":5126,"count":)" + std::to_string(vcount) +
           R"(,"type":"VEC3","min":[0,0,0],"max":[1,1,0]})";
@@ -356,7 +390,8 @@ TEST(SceneGltf, NonIndexedGetsIndicesAndFlatNormals) {
 
 TEST(SceneGltf, IndexedThroughSceneJsonWithTransform) {
   writeQuadGltf("indexed", true, false, true);
-  const std::string path = writeFile("with_model.json", R"({"models":[{"file":"indexed.gltf","transform":{"translate":[10,0,0]}}]})");
+  const std::string path =
+      writeFile("with_model.json", R"({"models":[{"file":"indexed.gltf","transform":{"translate":[10,0,0]}}]})");
   const Scene s = loadScene(path, kAssets);
   expectValidScene(s);
   EXPECT_EQ(s.triangleCount(), 2u);
@@ -377,8 +412,9 @@ TEST(SceneGltf, MissingBinAndMissingTexture) {
   const std::string msg = loadError(path);
   EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
   EXPECT_NE(msg.find("nobin.bin"), std::string::npos) << "tinygltf's error should name the buffer: " << msg;
-  const std::string tex = writeQuadGltf("notex", true, false, true,
-      R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"alphaMode":"MASK"}],
+  const std::string tex =
+      writeQuadGltf("notex", true, false, true,
+                    R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"alphaMode":"MASK"}],
          "textures":[{"source":0}],"images":[{"uri":"missing_texture.png"}])");
   const std::string tmsg = loadError(tex);
   EXPECT_NE(tmsg.find("missing_texture.png"), std::string::npos) << tmsg;

@@ -48,16 +48,16 @@ struct PassMs {
 };
 
 struct BenchEntry {
-  std::string technique;  // preset id
-  std::string label;      // "pcf shadowmap.size=1024"
-  std::vector<std::pair<std::string, std::string>> params;      // every resolved value
+  std::string technique;                                    // preset id
+  std::string label;                                        // "pcf shadowmap.size=1024"
+  std::vector<std::pair<std::string, std::string>> params;  // every resolved value
   std::vector<std::pair<std::string, std::string>> sweepPoint;
   int frames = 0;
   std::string timer;
   double msMedian = 0, msP95 = 0;
   std::vector<PassMs> passes;
-  ErrorMetrics error;                 // last frame vs its reference
-  std::vector<double> convergence;    // wrong_pixel_pct per measured frame
+  ErrorMetrics error;               // last frame vs its reference
+  std::vector<double> convergence;  // wrong_pixel_pct per measured frame
   bool hasFlicker = false;
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;
   long long nonfinite = 0;            // NaN/Inf visibility pixels in the last frame

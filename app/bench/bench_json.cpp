@@ -80,9 +80,9 @@ void writeBenchCsv(const BenchResult& r, const std::string& file) {
     std::string sweep;
     for (const auto& [k, v] : e.sweepPoint) sweep += (sweep.empty() ? "" : " ") + k + "=" + v;
     f << csvField(e.label) << "," << csvField(e.technique) << "," << csvField(sweep) << "," << e.msMedian << ","
-      << e.msP95 << "," << e.error.wrongPixelPct << "," << e.error.falseShadowPct << "," << e.error.falseLightPct
-      << "," << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << ","
-      << e.nonfinite << "," << e.frames << "," << e.timer << "\n";
+      << e.msP95 << "," << e.error.wrongPixelPct << "," << e.error.falseShadowPct << "," << e.error.falseLightPct << ","
+      << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << "," << e.nonfinite << ","
+      << e.frames << "," << e.timer << "\n";
   }
 }
 

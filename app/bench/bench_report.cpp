@@ -23,11 +23,16 @@ const char* kDashes[] = {"", "6 4", "2 3", "10 3 2 3"};
 std::string esc(const std::string& s) {
   std::string o;
   for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
+    if (c == '<')
+      o += "&lt;";
+    else if (c == '>')
+      o += "&gt;";
+    else if (c == '&')
+      o += "&amp;";
+    else if (c == '"')
+      o += "&quot;";
+    else
+      o += c;
   }
   return o;
 }
@@ -78,7 +83,8 @@ std::vector<double> linearTicks(double lo, double hi) {
       break;
     }
   std::vector<double> t;
-  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-6; v += step) t.push_back(std::abs(v) < step * 1e-6 ? 0 : v);
+  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-6; v += step)
+    t.push_back(std::abs(v) < step * 1e-6 ? 0 : v);
   return t;
 }
 std::vector<double> logTicks(double lo, double hi) {
@@ -153,13 +159,11 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
   s << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
     << "' fill='#fff' stroke='#888'/>\n";
   for (double t : logX ? logTicks(x0, x1) : linearTicks(x0, x1))
-    s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B
-      << "' class='grid'/><text x='" << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t)
-      << "</text>\n";
+    s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B << "' class='grid'/><text x='"
+      << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t) << "</text>\n";
   for (double t : ya.ticks())
-    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t)
-      << "' class='grid'/><text x='" << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t)
-      << "</text>\n";
+    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
+      << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 20 << "' text-anchor='middle' class='axis'>time per frame, ms"
     << (logX ? " (log scale)" : "") << " — median, " << esc(r.timer) << " timer</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
@@ -203,8 +207,8 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
     // Label: first candidate position that overlaps neither points nor earlier labels.
     std::string text = shortLabel(es[i]);
     double tw = (onFront ? 8.4 : 7.8) * text.size(), th = 16;
-    const double cand[][2] = {{16, 5}, {-16 - tw, 5}, {-tw / 2, -16}, {-tw / 2, 28}, {14, -12}, {14, 22},
-                              {-14 - tw, -12}, {-14 - tw, 22}, {14, 36}, {14, -26}};
+    const double cand[][2] = {{16, 5},  {-16 - tw, 5},   {-tw / 2, -16}, {-tw / 2, 28}, {14, -12},
+                              {14, 22}, {-14 - tw, -12}, {-14 - tw, 22}, {14, 36},      {14, -26}};
     double lx = px + 14, ly = py + 5;
     int bestCost = 1 << 30;
     for (const auto& c : cand) {
@@ -220,7 +224,8 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
     s << "<text x='" << lx << "' y='" << ly << "' class='pt" << (onFront ? " front" : "") << "'>" << esc(text)
       << "</text>\n";
   }
-  s << "<g transform='translate(" << W - R - 272 << "," << T + 10 << ")'><rect x='-8' y='-6' width='254' "
+  s << "<g transform='translate(" << W - R - 272 << "," << T + 10
+    << ")'><rect x='-8' y='-6' width='254' "
        "height='50' fill='#fff' stroke='#ccc'/><circle cx='10' cy='10' r='9' class='ring'/><line x1='26' x2='50' "
        "y1='10' y2='10' class='pareto'/><text x='58' y='15' class='note'>Pareto front: nothing is</text>"
        "<text x='58' y='35' class='note'>both faster and more exact</text></g>\n";
@@ -248,15 +253,16 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
     << "' fill='#fff' stroke='#888'/>\n";
   for (double t : linearTicks(1, n))
     if (t >= 1 && std::abs(t - std::round(t)) < 1e-9)
-      s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B
-        << "' class='grid'/><text x='" << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t)
-        << "</text>\n";
+      s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B << "' class='grid'/><text x='"
+        << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t) << "</text>\n";
   for (double t : ya.ticks())
-    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t)
-      << "' class='grid'/><text x='" << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t)
-      << "</text>\n";
-  s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16
-    << "' text-anchor='middle' class='axis'>frame " << (r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) + " frames of camera rotation: filled history)" : "(after warm-up; history starts empty at frame 1)") << "</text>\n";
+    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
+      << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
+  s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16 << "' text-anchor='middle' class='axis'>frame "
+    << (r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) +
+                                     " frames of camera rotation: filled history)"
+                               : "(after warm-up; history starts empty at frame 1)")
+    << "</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
     << ") rotate(-90)' text-anchor='middle' class='axis'>wrong pixels, %" << (ya.log ? " (log scale)" : "")
     << "</text>\n";
@@ -266,11 +272,12 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
       << styles[i].dash << "' points='";
     for (size_t f = 0; f < c.size(); ++f) s << X(f + 1.0) << "," << Y(c[f]) << " ";
     s << "'><title>" << esc(r.entries[i].label) << "</title></polyline>\n";
-    if (c.size() == 1) s << "<circle cx='" << X(1) << "' cy='" << Y(c[0]) << "' r='4' fill='" << styles[i].color << "'/>";
+    if (c.size() == 1)
+      s << "<circle cx='" << X(1) << "' cy='" << Y(c[0]) << "' r='4' fill='" << styles[i].color << "'/>";
     double ly = T + 10 + i * 22.0;
     s << "<line x1='" << W - R + 16 << "' x2='" << W - R + 52 << "' y1='" << ly << "' y2='" << ly << "' stroke='"
-      << styles[i].color << "' stroke-width='3' stroke-dasharray='" << styles[i].dash << "'/><text x='"
-      << W - R + 60 << "' y='" << ly + 5 << "'>" << esc(shortLabel(r.entries[i])) << "</text>\n";
+      << styles[i].color << "' stroke-width='3' stroke-dasharray='" << styles[i].dash << "'/><text x='" << W - R + 60
+      << "' y='" << ly + 5 << "'>" << esc(shortLabel(r.entries[i])) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
@@ -332,9 +339,9 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
   s << "<!doctype html>\n<html lang='en'><head><meta charset='utf-8'><title>shadowlab bench: " << esc(r.sceneName)
     << "</title>\n<style>" << kCss << "</style></head><body>\n";
   s << "<h1>Shadow error against frame time — scene <em>" << esc(r.sceneName) << "</em></h1>\n";
-  s << "<p class='meta'>" << w << "×" << h << " pixels, " << (path ? "camera path <b>" + esc(r.options.path) + "</b>"
-                                                                     : "camera <b>" + esc(r.options.camera) + "</b>")
-    << ", " << r.options.frames << " measured frames after " << r.options.warmup << " warm-up frames. Renderer "
+  s << "<p class='meta'>" << w << "×" << h << " pixels, "
+    << (path ? "camera path <b>" + esc(r.options.path) + "</b>" : "camera <b>" + esc(r.options.camera) + "</b>") << ", "
+    << r.options.frames << " measured frames after " << r.options.warmup << " warm-up frames. Renderer "
     << esc(r.renderer) << ", timer <b>" << esc(r.timer) << "</b>"
     << (r.timer == "cpu-fence" ? " (glFinish + steady clock around each pass)" : " (GL_TIME_ELAPSED queries)") << ", "
     << r.cores << " cores" << (r.cpu.empty() ? "" : " (" + esc(r.cpu) + ")") << ", " << esc(r.date)
@@ -351,7 +358,8 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
   std::string sweepKeys;
   for (const auto& sw : r.options.sweeps) sweepKeys += (sweepKeys.empty() ? "" : ", ") + sw.substr(0, sw.find('='));
   s << "<p class='caption'>Each point is one technique at one sweep setting, labelled with its technique"
-    << (sweepKeys.empty() ? std::string() : " and " + esc(sweepKeys)) << ". "
+    << (sweepKeys.empty() ? std::string() : " and " + esc(sweepKeys))
+    << ". "
        "Lower left is better. Wrong pixels are those whose visibility differs from the ray-traced reference by "
        "more than 30/255 (Scherzer et al. 2007), in percent of pixels covered by geometry, in the last frame.</p>\n";
 
@@ -360,7 +368,8 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
     << (path ? "each frame against its own reference (the camera moves)" : "against one reference (still camera)")
     << ". Techniques without temporal accumulation are flat.</p>\n";
 
-  s << "<h2>Results</h2>\n<table id='results'><thead><tr><th>entry</th><th>ms/frame<br>median</th><th>ms/frame<br>p95</th>"
+  s << "<h2>Results</h2>\n<table "
+       "id='results'><thead><tr><th>entry</th><th>ms/frame<br>median</th><th>ms/frame<br>p95</th>"
        "<th>wrong<br>%</th><th>false shadow<br>%</th><th>false light<br>%</th><th>RMSE</th>"
     << (path ? "<th>flicker<br>excess</th>" : "") << "<th>NaN/Inf<br>pixels</th></tr></thead><tbody>\n";
   for (const auto& e : r.entries) {

@@ -97,8 +97,9 @@ std::vector<BenchPlanEntry> planBench(const BenchOptions& o) {
         t.params.setFromString(key, value);  // ParamError for a bad value
         any = true;
       }
-    if (!any) throw ArgError("--set " + a + ": no technique in --techniques has a parameter '" + key +
-                             "' (keys: " + knownKeys(base) + ")");
+    if (!any)
+      throw ArgError("--set " + a + ": no technique in --techniques has a parameter '" + key +
+                     "' (keys: " + knownKeys(base) + ")");
   }
 
   struct Sweep {
@@ -119,8 +120,9 @@ std::vector<BenchPlanEntry> planBench(const BenchOptions& o) {
         Technique probe = t;
         for (const auto& v : sw.values) probe.params.setFromString(key, v);  // validate every value now
       }
-    if (!any) throw ArgError("--sweep " + s + ": no technique in --techniques has a parameter '" + key +
-                             "' (keys: " + knownKeys(base) + ")");
+    if (!any)
+      throw ArgError("--sweep " + s + ": no technique in --techniques has a parameter '" + key +
+                     "' (keys: " + knownKeys(base) + ")");
     sweeps.push_back(sw);
   }
 
@@ -261,9 +263,11 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     // Coherent camera motion into the measured view (filled history), not timed.
     for (int a = 0; a < o.approach; ++a) {
       FrameInput in = inputs.front();
-      const float angle = glm::radians(o.approachDeg) * static_cast<float>(o.approach - a) / static_cast<float>(o.approach);
+      const float angle =
+          glm::radians(o.approachDeg) * static_cast<float>(o.approach - a) / static_cast<float>(o.approach);
       const glm::vec3 offset = in.camera.position - in.camera.target;
-      in.camera.position = in.camera.target + glm::vec3(glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0)) * glm::vec4(offset, 0.0f));
+      in.camera.position = in.camera.target +
+                           glm::vec3(glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0)) * glm::vec4(offset, 0.0f));
       in.cut = a == 0;
       renderer.render(in, {&viewport});
     }

@@ -28,7 +28,9 @@ struct Fnv {
     for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
   }
   template <class T>
-  void pod(const T& v) { bytes(&v, sizeof(T)); }
+  void pod(const T& v) {
+    bytes(&v, sizeof(T));
+  }
   template <class T>
   void vec(const std::vector<T>& v) {
     pod(v.size());
@@ -108,8 +110,8 @@ std::string ReferenceCache::keyText(const FrameInput& in) const {
   const Light& l = scene_.light;
   std::ostringstream k;
   k << "v" << kFormatVersion << ";scene=" << scene_.name << ":" << sceneHash_ << ";camera=" << c.name << ":"
-    << fmt(c.position) << ":" << fmt(c.target) << ":" << fmt(c.up) << ":" << fmt(c.fovDeg) << ":"
-    << fmt(c.nearPlane) << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height
+    << fmt(c.position) << ":" << fmt(c.target) << ":" << fmt(c.up) << ":" << fmt(c.fovDeg) << ":" << fmt(c.nearPlane)
+    << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height
     << ";samples=" << (l.radius > 0 ? settings_.samples : 1) << ";light=" << static_cast<int>(l.type) << ":"
     << fmt(l.direction) << ":" << fmt(l.position) << ":" << fmt(l.fovDeg) << ":" << fmt(l.radius)
     << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))

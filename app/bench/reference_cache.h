@@ -29,10 +29,10 @@ struct ReferenceImage {
 };
 
 struct ReferenceSettings {
-  int samples = 64;           // light samples per pixel (area lights only)
-  bool useCache = true;       // read and write the disk cache
-  std::string cacheDir;       // "" = referenceCacheDir()
-  int threads = 0;            // 0 = hardware concurrency
+  int samples = 64;      // light samples per pixel (area lights only)
+  bool useCache = true;  // read and write the disk cache
+  std::string cacheDir;  // "" = referenceCacheDir()
+  int threads = 0;       // 0 = hardware concurrency
 };
 
 // $XDG_CACHE_HOME/shadowlab, else $HOME/.cache/shadowlab (created on first write).

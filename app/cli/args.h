@@ -15,7 +15,8 @@ class ArgError : public std::runtime_error {
 class Args {
  public:
   // `flags` are options without a value (e.g. "--help").
-  Args(int argc, char** argv, int first, const std::vector<std::string>& known, const std::vector<std::string>& flags = {});
+  Args(int argc, char** argv, int first, const std::vector<std::string>& known,
+       const std::vector<std::string>& flags = {});
   bool has(const std::string& key) const;
   std::string get(const std::string& key, const std::string& fallback = "") const;
   std::vector<std::string> all(const std::string& key) const;

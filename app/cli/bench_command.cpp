@@ -26,8 +26,8 @@ static const char* kBenchUsage =
 int runBenchCommand(int argc, char** argv) {
   try {
     Args args(argc, argv, 2,
-              {"--scene", "--techniques", "--set", "--sweep", "--camera", "--path", "--frames", "--warmup", "--approach", "--size",
-               "--samples", "--time", "--json", "--report", "--shaders"},
+              {"--scene", "--techniques", "--set", "--sweep", "--camera", "--path", "--frames", "--warmup",
+               "--approach", "--size", "--samples", "--time", "--json", "--report", "--shaders"},
               {"--no-cache", "--help"});
     if (args.has("--help")) {
       std::cout << kBenchUsage;

@@ -12,9 +12,9 @@ namespace sl {
 
 static void printParams(const std::vector<ParamDecl>& decls) {
   for (const auto& d : decls) {
-    std::cout << "    " << std::left << std::setw(20) << d.key << std::setw(6) << paramTypeName(d.type)
-              << std::setw(24) << describeRange(d) << " default " << std::setw(9) << formatValue(d, d.defaultValue)
-              << " " << d.help << (d.unit.empty() ? "" : " [" + d.unit + "]") << "\n";
+    std::cout << "    " << std::left << std::setw(20) << d.key << std::setw(6) << paramTypeName(d.type) << std::setw(24)
+              << describeRange(d) << " default " << std::setw(9) << formatValue(d, d.defaultValue) << " " << d.help
+              << (d.unit.empty() ? "" : " [" + d.unit + "]") << "\n";
   }
 }
 

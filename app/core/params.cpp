@@ -8,10 +8,14 @@ namespace sl {
 
 const char* paramTypeName(ParamType t) {
   switch (t) {
-    case ParamType::Float: return "float";
-    case ParamType::Int: return "int";
-    case ParamType::Bool: return "bool";
-    case ParamType::Enum: return "enum";
+    case ParamType::Float:
+      return "float";
+    case ParamType::Int:
+      return "int";
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Enum:
+      return "enum";
   }
   return "?";
 }
@@ -24,25 +28,30 @@ static std::string shortNumber(double v) {
 
 std::string describeRange(const ParamDecl& d) {
   switch (d.type) {
-    case ParamType::Bool: return "on|off";
+    case ParamType::Bool:
+      return "on|off";
     case ParamType::Enum: {
       std::string r;
       for (size_t i = 0; i < d.choices.size(); ++i) r += (i ? "|" : "") + d.choices[i];
       return r;
     }
-    default: return shortNumber(d.min) + ".." + shortNumber(d.max);
+    default:
+      return shortNumber(d.min) + ".." + shortNumber(d.max);
   }
 }
 
 std::string formatValue(const ParamDecl& d, double value) {
   switch (d.type) {
-    case ParamType::Bool: return value != 0.0 ? "on" : "off";
+    case ParamType::Bool:
+      return value != 0.0 ? "on" : "off";
     case ParamType::Enum: {
       size_t idx = static_cast<size_t>(value);
       return idx < d.choices.size() ? d.choices[idx] : "?";
     }
-    case ParamType::Int: return std::to_string(static_cast<long long>(value));
-    default: return shortNumber(value);
+    case ParamType::Int:
+      return std::to_string(static_cast<long long>(value));
+    default:
+      return shortNumber(value);
   }
 }
 
@@ -77,7 +86,9 @@ void ParamSet::set(const std::string& key, double value) {
   if (!d) throw ParamError("unknown parameter '" + key + "' (see `shadowlab list`)");
   if (!std::isfinite(value)) throw ParamError(key + ": value must be finite");
   switch (d->type) {
-    case ParamType::Bool: value = value != 0.0 ? 1.0 : 0.0; break;
+    case ParamType::Bool:
+      value = value != 0.0 ? 1.0 : 0.0;
+      break;
     case ParamType::Enum:
       if (value < 0 || value >= static_cast<double>(d->choices.size()) || value != std::floor(value))
         throw ParamError(key + ": choice index out of range (" + describeRange(*d) + ")");
@@ -109,8 +120,7 @@ void ParamSet::setFromString(const std::string& key, const std::string& text) {
   }
   char* end = nullptr;
   double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || *end != '\0')
-    throw ParamError(key + ": '" + text + "' is not a number");
+  if (text.empty() || end == text.c_str() || *end != '\0') throw ParamError(key + ": '" + text + "' is not a number");
   set(key, v);
 }
 

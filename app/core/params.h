@@ -18,18 +18,18 @@ class ParamError : public std::runtime_error {
 enum class ParamType { Float, Int, Bool, Enum };
 
 struct ParamDecl {
-  std::string key;    // dotted, e.g. "bias.slope"
+  std::string key;  // dotted, e.g. "bias.slope"
   ParamType type = ParamType::Float;
-  double min = 0, max = 1;  // Float/Int range (inclusive)
-  double defaultValue = 0;  // Enum: index into choices; Bool: 0/1
-  std::string unit;         // "texels", "world units", "" ...
-  std::string help;         // one line, shown as tooltip and in `shadowlab list`
+  double min = 0, max = 1;           // Float/Int range (inclusive)
+  double defaultValue = 0;           // Enum: index into choices; Bool: 0/1
+  std::string unit;                  // "texels", "world units", "" ...
+  std::string help;                  // one line, shown as tooltip and in `shadowlab list`
   std::vector<std::string> choices;  // Enum only
   bool logScale = false;             // UI hint for wide ranges
 };
 
 const char* paramTypeName(ParamType t);
-std::string describeRange(const ParamDecl& d);             // "64..8192", "none|constant|slope"
+std::string describeRange(const ParamDecl& d);              // "64..8192", "none|constant|slope"
 std::string formatValue(const ParamDecl& d, double value);  // "slope", "true", "2048", "0.0005"
 std::string uniformName(const std::string& key);            // "bias.slope" -> "u_bias_slope"
 

@@ -21,9 +21,7 @@ namespace sl {
 
 namespace {
 
-bool nearlyEqual(float a, float b) {
-  return std::abs(a - b) <= 1e-6f * std::max({1.0f, std::abs(a), std::abs(b)});
-}
+bool nearlyEqual(float a, float b) { return std::abs(a - b) <= 1e-6f * std::max({1.0f, std::abs(a), std::abs(b)}); }
 bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) {
   return nearlyEqual(a.x, b.x) && nearlyEqual(a.y, b.y) && nearlyEqual(a.z, b.z);
 }
@@ -33,9 +31,9 @@ bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) {
 RestKeyChange compareRestKeys(const RestKey& a, const RestKey& b) {
   RestKeyChange c;
   const Camera &p = a.camera, &q = b.camera;
-  c.camera = !nearlyEqual(p.position, q.position) || !nearlyEqual(p.target, q.target) ||
-             !nearlyEqual(p.up, q.up) || !nearlyEqual(p.fovDeg, q.fovDeg) ||
-             !nearlyEqual(p.nearPlane, q.nearPlane) || !nearlyEqual(p.farPlane, q.farPlane);
+  c.camera = !nearlyEqual(p.position, q.position) || !nearlyEqual(p.target, q.target) || !nearlyEqual(p.up, q.up) ||
+             !nearlyEqual(p.fovDeg, q.fovDeg) || !nearlyEqual(p.nearPlane, q.nearPlane) ||
+             !nearlyEqual(p.farPlane, q.farPlane);
   c.size = a.width != b.width || a.height != b.height;
   c.time = a.time != b.time;
   c.scene = a.sceneGeneration != b.sceneGeneration;
@@ -178,8 +176,7 @@ ViewportCost viewportFrameMs(const std::vector<PassTiming>& passes, int viewport
       c.gbufferMs += p.ms;
       continue;
     }
-    const bool mine = p.name.size() > tag.size() &&
-                      p.name.compare(p.name.size() - tag.size(), tag.size(), tag) == 0;
+    const bool mine = p.name.size() > tag.size() && p.name.compare(p.name.size() - tag.size(), tag.size(), tag) == 0;
     if (!mine || p.name.rfind("view.", 0) == 0) continue;
     c.ownMs = std::max(c.ownMs, 0.0) + p.ms;
   }
@@ -408,7 +405,7 @@ void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width
   // Per-viewport timing windows, always (the ms column does not need a reference).
   const FrameStats& stats = renderer.stats();
   timing_ = renderer.timePasses && !stats.passes.empty();
-  int index = 0;  // the renderer's viewport index: position among the non-empty shown slots
+  int index = 0;                           // the renderer's viewport index: position among the non-empty shown slots
   std::vector<std::pair<int, int>> shown;  // (slot, renderer index)
   for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
     if (!state.slots[size_t(i)].viewport) continue;
@@ -433,8 +430,7 @@ void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width
   currentRef_ = ref ? ref->id : 0;
   if (!ref) {
     const bool failedHere = haveFailed_ && sameRestKey(failedKey_, key);
-    if (rendered_ && rest_.resting() && !active_ && retiring_.empty() && !failedHere)
-      startJob(state, renderer, key);
+    if (rendered_ && rest_.resting() && !active_ && retiring_.empty() && !failedHere) startJob(state, renderer, key);
     return;
   }
 
@@ -443,8 +439,7 @@ void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width
     (void)renderIndex;
     ViewportAccuracy& va = viewports_[slot];
     const std::string& config = va.timedConfig;
-    const bool due = va.referenceId != ref->id || va.config != config ||
-                     now_ - va.measuredAt >= kRemeasureSeconds ||
+    const bool due = va.referenceId != ref->id || va.config != config || now_ - va.measuredAt >= kRemeasureSeconds ||
                      (wantImage && va.errorTextureReference != ref->id);
     if (due) measure(state, *ref, slot, wantImage);
   }
@@ -540,9 +535,10 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
                   progress * 100.0f, now_ - job.started);
     ImGui::ProgressBar(progress, ImVec2(-1, 0), overlay);
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Ray-traced reference (Embree, %d light samples for area lights, %d threads)\n"
-                        "of this %dx%d frame, on a worker thread. Moving the camera cancels it.",
-                        kReferenceSamples, job.threads, job.key.width, job.key.height);
+      ImGui::SetTooltip(
+          "Ray-traced reference (Embree, %d light samples for area lights, %d threads)\n"
+          "of this %dx%d frame, on a worker thread. Moving the camera cancels it.",
+          kReferenceSamples, job.threads, job.key.width, job.key.height);
   } else if (!jobError_.empty() && haveFailed_ && sameRestKey(failedKey_, rest_.key())) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.38f, 0.35f, 1.0f));
     ImGui::TextWrapped("reference failed: %s", jobError_.c_str());
@@ -554,8 +550,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
     ImGui::TextDisabled("no frame rendered");
   } else if (!rest_.resting()) {
     const RestKeyChange& c = rest_.lastChange();
-    const char* why = c.time ? "scene moving: pause time (Scene panel) to measure"
-                      : c.size ? "window resized: waiting for it to settle"
+    const char* why = c.time    ? "scene moving: pause time (Scene panel) to measure"
+                      : c.size  ? "window resized: waiting for it to settle"
                       : c.scene ? "new scene: waiting for the camera to rest"
                                 : "camera moving: let it rest to measure";
     ImGui::TextDisabled("%s", why);
@@ -564,20 +560,20 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   }
 
   // Per-viewport table.
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
   if (ImGui::BeginTable("accuracy", 7, flags)) {
     const char* headers[7] = {"#", "wrong", "f.shadow", "f.light", "rmse", "NaN", "ms"};
-    const char* tips[7] = {
-        "Viewport (colour of its points in the chart)",
-        "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
-        "False shadow, %: dark where the truth is lit (orange in the error view)",
-        "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
-        "Root mean square visibility error over covered pixels",
-        "Non-finite (NaN/Inf) visibility values, counted as wrong",
-        "ms per frame of this viewport: its own passes (names ending in [v]; debug views\n"
-        "'view.*' excluded) plus the whole shared G-buffer pass, which a technique alone\n"
-        "pays too, so the figure does not depend on how many viewports are shown.\n"
-        "Median of the last 15 frames (see Timings for the passes)."};
+    const char* tips[7] = {"Viewport (colour of its points in the chart)",
+                           "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+                           "False shadow, %: dark where the truth is lit (orange in the error view)",
+                           "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+                           "Root mean square visibility error over covered pixels",
+                           "Non-finite (NaN/Inf) visibility values, counted as wrong",
+                           "ms per frame of this viewport: its own passes (names ending in [v]; debug views\n"
+                           "'view.*' excluded) plus the whole shared G-buffer pass, which a technique alone\n"
+                           "pays too, so the figure does not depend on how many viewports are shown.\n"
+                           "Median of the last 15 frames (see Timings for the passes)."};
     const float weights[7] = {0.4f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
     for (int c = 0; c < 7; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
     ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
@@ -589,8 +585,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
     for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
       if (!state.slots[size_t(i)].viewport) continue;
       const ViewportAccuracy& va = viewports_[i];
-      const bool current = va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ &&
-                           va.config == va.timedConfig;
+      const bool current =
+          va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ && va.config == va.timedConfig;
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kViewportColors[i]));
@@ -633,7 +629,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
           ImGui::SetTooltip("%.2f ms own passes + %.2f ms G-buffer (shared by all viewports)", own, gb);
       } else {
         ImGui::TextDisabled("-");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timing_ ? "no timed pass yet" : "Timings > Time passes is off");
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", timing_ ? "no timed pass yet" : "Timings > Time passes is off");
       }
     }
     ImGui::EndTable();
@@ -647,11 +644,12 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("One point per configuration (technique + changed parameters) measured this\n"
-                      "session, the latest measurement kept. Dashed: the Pareto front, configurations\n"
-                      "that no other is both faster and more accurate than. Numbered points are what\n"
-                      "the viewports show now; grey ones were tried earlier (possibly from another\n"
-                      "camera: compare points measured at the same view).");
+    ImGui::SetTooltip(
+        "One point per configuration (technique + changed parameters) measured this\n"
+        "session, the latest measurement kept. Dashed: the Pareto front, configurations\n"
+        "that no other is both faster and more accurate than. Numbered points are what\n"
+        "the viewports show now; grey ones were tried earlier (possibly from another\n"
+        "camera: compare points measured at the same view).");
   ImGui::SameLine(ImGui::GetContentRegionAvail().x - 40.0f);
   if (ImGui::SmallButton("clear")) points_.clear();
 
@@ -721,7 +719,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   // Points: the configurations shown now in their viewport's colour and number, others grey.
   std::vector<std::string> shownConfigs(4);
   for (int i = 0; i < state.viewportCount && i < 4; ++i)
-    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport) shownConfigs[size_t(i)] = viewports_[i].timedConfig;
+    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport)
+      shownConfigs[size_t(i)] = viewports_[i].timedConfig;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   int hovered = -1;
   float hoveredDist = 8.0f * 8.0f;

@@ -32,7 +32,7 @@ struct Technique;
 struct RestKey {
   Camera camera;
   int width = 0, height = 0;
-  double time = 0.0;          // scene time; 0 for scenes without motion (time does not matter)
+  double time = 0.0;             // scene time; 0 for scenes without motion (time does not matter)
   uint64_t sceneGeneration = 0;  // bumped whenever the explorer replaces its scene
 };
 
@@ -70,7 +70,7 @@ struct ChartPoint {
   std::string config;  // technique label + parameters changed from its preset
   double ms = 0;       // per frame (see viewportFrameMs)
   double wrongPct = 0;
-  int viewport = -1;   // viewport it was last measured in (0-based), for its colour
+  int viewport = -1;  // viewport it was last measured in (0-based), for its colour
 };
 // Adds or replaces (same config string) a point; the latest measurement wins.
 void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& point);
@@ -82,7 +82,7 @@ std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points);
 struct ChartAxis {
   double lo = 0, hi = 1;
   bool log = false;
-  double toUnit(double v) const;     // 0 at lo, 1 at hi (clamped values outside)
+  double toUnit(double v) const;      // 0 at lo, 1 at hi (clamped values outside)
   std::vector<double> ticks() const;  // "nice" values inside [lo, hi]
 };
 // Log scale when hi/lo exceeds `logRatio` (values below `floor` are drawn at `floor`); the
@@ -161,7 +161,7 @@ class ErrorPanel {
     std::string config;  // of the last measurement
     bool haveMetrics = false;
     ErrorMetrics metrics;
-    ViewportCost cost;   // medians at the last measurement
+    ViewportCost cost;  // medians at the last measurement
     double measuredAt = -1e9;
     uint64_t referenceId = 0;
     std::string timedConfig;  // config the timing window belongs to

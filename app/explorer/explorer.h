@@ -8,14 +8,14 @@
 namespace sl {
 
 struct ExplorerOptions {
-  std::string scene = "basic";          // builtin id or path to a .json/.gltf/.glb
-  std::string technique = "standard";   // preset id for the first viewport
-  std::vector<std::string> overrides;   // "key=value" applied to the first viewport's technique
-  std::string camera;                   // named scene camera to start from ("" = the first one)
-  int width = 1280, height = 720;       // window size in screen coordinates
-  int maxFrames = 0;                    // 0 = until the window is closed
-  std::string screenshotOnExit;         // PNG of the whole window written before exiting, or ""
-  std::string shaderDir, assetsDir;     // "" = defaultShaderDir() / defaultAssetsDir()
+  std::string scene = "basic";         // builtin id or path to a .json/.gltf/.glb
+  std::string technique = "standard";  // preset id for the first viewport
+  std::vector<std::string> overrides;  // "key=value" applied to the first viewport's technique
+  std::string camera;                  // named scene camera to start from ("" = the first one)
+  int width = 1280, height = 720;      // window size in screen coordinates
+  int maxFrames = 0;                   // 0 = until the window is closed
+  std::string screenshotOnExit;        // PNG of the whole window written before exiting, or ""
+  std::string shaderDir, assetsDir;    // "" = defaultShaderDir() / defaultAssetsDir()
   // Start-up state of the window, so a comparison can be scripted (slides, smoke tests).
   std::vector<std::string> compareTechniques;  // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
   std::vector<std::string> debugViews;         // debug views shown as thumbnails from the start

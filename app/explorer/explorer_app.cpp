@@ -57,8 +57,8 @@ GLFWwindow* createWindow(const ExplorerOptions& options) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);  // the renderer writes display-ready colours
-  return glfwCreateWindow(std::max(320, options.width), std::max(240, options.height),
-                          "shadowlab explorer", nullptr, nullptr);
+  return glfwCreateWindow(std::max(320, options.width), std::max(240, options.height), "shadowlab explorer", nullptr,
+                          nullptr);
 }
 
 void setUpImGui(GLFWwindow* window) {
@@ -110,8 +110,7 @@ FlyInput readFlyInput(GLFWwindow* window, ExplorerState& state) {
     auto axis = [window](int negative, int positive) {
       return float(keyDown(window, positive)) - float(keyDown(window, negative));
     };
-    input.move = glm::vec3(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E),
-                           axis(GLFW_KEY_S, GLFW_KEY_W));
+    input.move = glm::vec3(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E), axis(GLFW_KEY_S, GLFW_KEY_W));
     input.fast = keyDown(window, GLFW_KEY_LEFT_SHIFT) || keyDown(window, GLFW_KEY_RIGHT_SHIFT);
   }
   if (state.looking) input.lookPixels = glm::vec2(io.MouseDelta.x, io.MouseDelta.y);
@@ -304,8 +303,7 @@ bool prepareState(const ExplorerOptions& options, ExplorerState& state, std::vec
   if (!options.camera.empty()) {
     start = state.scene->findCamera(options.camera);
     if (!start) {
-      std::cerr << "shadowlab: scene '" << state.scene->name << "' has no camera '" << options.camera
-                << "'; it has:";
+      std::cerr << "shadowlab: scene '" << state.scene->name << "' has no camera '" << options.camera << "'; it has:";
       for (const Camera& c : state.scene->cameras) std::cerr << " " << c.name;
       std::cerr << "\n";
       return false;
@@ -333,8 +331,7 @@ int runExplorer(const ExplorerOptions& options) {
   }
   GLFWwindow* window = createWindow(options);
   if (!window) {
-    std::cerr << kNoDisplayMessage << "  (GLFW could not open an OpenGL 4.5 core window: "
-              << g_lastGlfwError << ")\n";
+    std::cerr << kNoDisplayMessage << "  (GLFW could not open an OpenGL 4.5 core window: " << g_lastGlfwError << ")\n";
     glfwTerminate();
     return 2;
   }

@@ -109,8 +109,7 @@ void applySelectedViews(ExplorerState& state) {
     slot.viewport->shownViews.clear();
     for (const std::string& name : slot.viewport->availableViews())
       if (state.selectedViews.count(name)) slot.viewport->shownViews.push_back(name);
-    if (!slot.enlargedView.empty() && !state.selectedViews.count(slot.enlargedView))
-      slot.enlargedView.clear();
+    if (!slot.enlargedView.empty() && !state.selectedViews.count(slot.enlargedView)) slot.enlargedView.clear();
   }
 }
 

@@ -13,9 +13,7 @@ constexpr float kMaxPitch = 1.55f;  // ~89 degrees: at 90 the view matrix's up v
 const glm::vec3 kWorldUp{0.0f, 1.0f, 0.0f};
 }  // namespace
 
-bool FlyInput::empty() const {
-  return move == glm::vec3(0.0f) && lookPixels == glm::vec2(0.0f) && scrollSteps == 0.0f;
-}
+bool FlyInput::empty() const { return move == glm::vec3(0.0f) && lookPixels == glm::vec2(0.0f) && scrollSteps == 0.0f; }
 
 void FlyCamera::setPose(const Camera& camera) {
   base_ = camera;

@@ -32,34 +32,31 @@ void drawMagnifier(const MagnifierTarget& target, ImVec2 mouse) {
   const int firstY = std::clamp(texelY - kTexelsAcross / 2, 0, std::max(0, texH - kTexelsAcross));
   // GL rows run bottom-up, so the top screen row firstY is v = 1 - firstY / texH.
   const ImVec2 uvTopLeft(float(firstX) / texW, 1.0f - float(firstY) / texH);
-  const ImVec2 uvBottomRight(float(firstX + kTexelsAcross) / texW,
-                             1.0f - float(firstY + kTexelsAcross) / texH);
+  const ImVec2 uvBottomRight(float(firstX + kTexelsAcross) / texW, 1.0f - float(firstY + kTexelsAcross) / texH);
 
   // Keep the lens on screen: flip to the other side of the mouse near the right/bottom edge.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float lensW = kLensPixels + 2.0f * ImGui::GetStyle().WindowPadding.x;
-  const float lensH = kLensPixels + ImGui::GetTextLineHeightWithSpacing() * 3.0f +
-                      2.0f * ImGui::GetStyle().WindowPadding.y;
+  const float lensH =
+      kLensPixels + ImGui::GetTextLineHeightWithSpacing() * 3.0f + 2.0f * ImGui::GetStyle().WindowPadding.y;
   ImVec2 pos(mouse.x + kOffsetFromMouse, mouse.y + kOffsetFromMouse);
   if (pos.x + lensW > display.x) pos.x = mouse.x - kOffsetFromMouse - lensW;
   if (pos.y + lensH > display.y) pos.y = mouse.y - kOffsetFromMouse - lensH;
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowBgAlpha(0.92f);
 
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoFocusOnAppearing |
-                                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings;
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings;
   if (ImGui::Begin("##magnifier", nullptr, flags)) {
     const ImVec2 lensMin = ImGui::GetCursorScreenPos();
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(target.texture)),
-                 ImVec2(kLensPixels, kLensPixels), uvTopLeft, uvBottomRight);
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(target.texture)), ImVec2(kLensPixels, kLensPixels),
+                 uvTopLeft, uvBottomRight);
     // Outline the texel under the mouse, in a colour visible on both light and dark pixels.
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 cellMin(lensMin.x + float((texelX - firstX) * kZoom),
-                         lensMin.y + float((texelY - firstY) * kZoom));
+    const ImVec2 cellMin(lensMin.x + float((texelX - firstX) * kZoom), lensMin.y + float((texelY - firstY) * kZoom));
     const ImVec2 cellMax(cellMin.x + kZoom, cellMin.y + kZoom);
-    draw->AddRect(ImVec2(cellMin.x - 1, cellMin.y - 1), ImVec2(cellMax.x + 1, cellMax.y + 1),
-                  IM_COL32(0, 0, 0, 255));
+    draw->AddRect(ImVec2(cellMin.x - 1, cellMin.y - 1), ImVec2(cellMax.x + 1, cellMax.y + 1), IM_COL32(0, 0, 0, 255));
     draw->AddRect(cellMin, cellMax, IM_COL32(255, 60, 200, 255));
     // Texel coordinates in GL convention (y up) so they match shader gl_FragCoord values.
     // Wrapped to the lens width: a long technique label must not widen the window.

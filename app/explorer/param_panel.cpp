@@ -28,8 +28,7 @@ bool drawWidget(const ParamDecl& decl, ParamSet& params, double& newValue) {
       float v = static_cast<float>(current);
       ImGuiSliderFlags flags = decl.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
       flags |= ImGuiSliderFlags_AlwaysClamp;  // typed-in values beyond the range would be rejected
-      if (!ImGui::SliderFloat(label, &v, float(decl.min), float(decl.max), kFloatFormat, flags))
-        return false;
+      if (!ImGui::SliderFloat(label, &v, float(decl.min), float(decl.max), kFloatFormat, flags)) return false;
       newValue = v;
       return true;
     }
@@ -37,8 +36,7 @@ bool drawWidget(const ParamDecl& decl, ParamSet& params, double& newValue) {
       int v = static_cast<int>(std::lround(current));
       ImGuiSliderFlags flags = decl.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
       flags |= ImGuiSliderFlags_AlwaysClamp;
-      if (!ImGui::SliderInt(label, &v, int(std::lround(decl.min)), int(std::lround(decl.max)), "%d",
-                            flags))
+      if (!ImGui::SliderInt(label, &v, int(std::lround(decl.min)), int(std::lround(decl.max)), "%d", flags))
         return false;
       newValue = v;
       return true;
@@ -51,9 +49,8 @@ bool drawWidget(const ParamDecl& decl, ParamSet& params, double& newValue) {
     }
     case ParamType::Enum: {
       int index = static_cast<int>(std::lround(current));
-      const char* preview = (index >= 0 && index < int(decl.choices.size()))
-                                ? decl.choices[size_t(index)].c_str()
-                                : "?";
+      const char* preview =
+          (index >= 0 && index < int(decl.choices.size())) ? decl.choices[size_t(index)].c_str() : "?";
       bool changed = false;
       if (ImGui::BeginCombo(label, preview)) {
         for (int i = 0; i < int(decl.choices.size()); ++i) {

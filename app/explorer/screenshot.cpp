@@ -27,8 +27,7 @@ std::string writeWindowPng(int width, int height, const std::string& path) {
     std::memcpy(top, bottom, rowBytes);
     std::memcpy(bottom, row.data(), rowBytes);
   }
-  if (!stbi_write_png(path.c_str(), width, height, 3, pixels.data(), int(rowBytes)))
-    return "could not write " + path;
+  if (!stbi_write_png(path.c_str(), width, height, 3, pixels.data(), int(rowBytes))) return "could not write " + path;
   return "";
 }
 

@@ -75,8 +75,8 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
   }
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - ImGui::GetStyle().FramePadding.x * 2 -
                           ImGui::GetStyle().ItemSpacing.x);
-  const bool entered = ImGui::InputTextWithHint("##scenePath", ".json / .gltf / .glb path",
-                                                &state.scenePathInput, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered = ImGui::InputTextWithHint("##scenePath", ".json / .gltf / .glb path", &state.scenePathInput,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if ((ImGui::Button("Load") || entered) && !state.scenePathInput.empty())
     switchScene(state, renderer, state.scenePathInput);
@@ -116,14 +116,15 @@ void drawCameraPanel(ExplorerState& state) {
   }
   ImGui::TextDisabled("speed %.2f units/s   controls (?)", state.camera.speed());
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("With the mouse over a viewport:\n"
-                      "  right-drag   look around\n"
-                      "  W A S D      move\n"
-                      "  Q / E        down / up\n"
-                      "  Shift        4x faster\n"
-                      "  wheel        change speed\n"
-                      "  hold M       magnifier (8x, unfiltered)\n"
-                      "Camera buttons jump (a cut: accumulated history is reset).");
+    ImGui::SetTooltip(
+        "With the mouse over a viewport:\n"
+        "  right-drag   look around\n"
+        "  W A S D      move\n"
+        "  Q / E        down / up\n"
+        "  Shift        4x faster\n"
+        "  wheel        change speed\n"
+        "  hold M       magnifier (8x, unfiltered)\n"
+        "Camera buttons jump (a cut: accumulated history is reset).");
 }
 
 void drawViewportPanels(ExplorerState& state) {
@@ -184,8 +185,9 @@ void drawDebugViewPanel(ExplorerState& state) {
         state.selectedViews.erase(name);
     }
     if (name == ErrorPanel::kViewName && ImGui::IsItemHovered())
-      ImGui::SetTooltip("Difference to the ray-traced reference (needs a resting camera):\n"
-                        "grey = agrees, orange = false shadow, blue = false light, magenta = NaN.");
+      ImGui::SetTooltip(
+          "Difference to the ray-traced reference (needs a resting camera):\n"
+          "grey = agrees, orange = false shadow, blue = false light, magenta = NaN.");
     ImGui::NextColumn();
   }
   ImGui::Columns(1);
@@ -198,8 +200,9 @@ void drawTimingPanel(Renderer& renderer) {
   ImGui::SameLine();
   ImGui::TextDisabled("timer: %s", stats.timer.empty() ? "-" : stats.timer.c_str());
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("gpu-query: GL timer queries.\ncpu-fence: glFinish around each pass "
-                      "(software GL, where queries measure nothing); slows the frame down.");
+    ImGui::SetTooltip(
+        "gpu-query: GL timer queries.\ncpu-fence: glFinish around each pass "
+        "(software GL, where queries measure nothing); slows the frame down.");
   double total = 0.0;
   for (const PassTiming& p : stats.passes) total += p.ms;
   ImGui::Text("frame %.2f ms, passes %.2f ms", stats.frameMs, total);
@@ -231,9 +234,8 @@ void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary
   ImGui::SetNextWindowSize(ImVec2(std::min(kSidePanelWidth, display.x), display.y));
   // No background: the window is cleared to the same colour, and a blended full-height
   // rectangle is a measurable cost on a software rasterizer.
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                 ImGuiWindowFlags_NoBackground;
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground;
   ImGui::Begin("shadowlab explorer", nullptr, flags);
   drawStatusHeader(state, renderer, shaders);
   drawScenePanel(state, renderer);

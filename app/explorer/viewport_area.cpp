@@ -10,13 +10,11 @@ namespace sl {
 
 namespace {
 
-constexpr float kGap = 6.0f;                 // between tiles and around thumbnails
-constexpr float kThumbnailShare = 0.22f;     // of a tile's height, when thumbnails are shown
+constexpr float kGap = 6.0f;              // between tiles and around thumbnails
+constexpr float kThumbnailShare = 0.22f;  // of a tile's height, when thumbnails are shown
 const ImU32 kHighlight = IM_COL32(255, 190, 60, 255);
 
-ImTextureID toImTexture(const Texture2D* t) {
-  return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t->id()));
-}
+ImTextureID toImTexture(const Texture2D* t) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t->id())); }
 
 // GL textures start at the bottom row; ImGui images at the top.
 void addFlippedImage(ImDrawList* draw, const Texture2D* t, ImVec2 min, ImVec2 max) {
@@ -38,15 +36,14 @@ void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSl
     if (!status.empty()) text += "   " + status;
   }
   const float textY = tile.headerMin.y + (tile.headerSize.y - ImGui::GetTextLineHeight()) * 0.5f;
-  draw->PushClipRect(tile.headerMin,
-                     ImVec2(tile.headerMin.x + tile.headerSize.x, tile.headerMin.y + tile.headerSize.y), true);
+  draw->PushClipRect(tile.headerMin, ImVec2(tile.headerMin.x + tile.headerSize.x, tile.headerMin.y + tile.headerSize.y),
+                     true);
   draw->AddText(ImVec2(tile.headerMin.x + 4.0f, textY), IM_COL32(235, 235, 235, 255), text.c_str());
   draw->PopClipRect();
 }
 
 // The texture of a debug view: the renderer's, or the accuracy panel's for `error`.
-const Texture2D* debugViewTexture(const ExplorerState& state, const Viewport& vp, int index,
-                                  const std::string& name) {
+const Texture2D* debugViewTexture(const ExplorerState& state, const Viewport& vp, int index, const std::string& name) {
   if (name == ErrorPanel::kViewName) return state.errorPanel ? state.errorPanel->errorTexture(index) : nullptr;
   return vp.viewTexture(name);
 }
@@ -94,11 +91,10 @@ void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& sl
       draw->AddRect(ImVec2(min.x - 2, min.y - 2), ImVec2(max.x + 2, max.y + 2),
                     enlarged ? kHighlight : IM_COL32(200, 200, 200, 255), 0.0f, 0, 2.0f);
     draw->PushClipRect(ImVec2(min.x, max.y), ImVec2(min.x + slotW, max.y + labelH + 2), true);
-    draw->AddText(ImVec2(min.x, max.y + 1), enlarged ? kHighlight : IM_COL32(200, 200, 200, 255),
-                  name.c_str());
+    draw->AddText(ImVec2(min.x, max.y + 1), enlarged ? kHighlight : IM_COL32(200, 200, 200, 255), name.c_str());
     draw->PopClipRect();
-    if (hovered) ImGui::SetTooltip("%s: click to %s", name.c_str(),
-                                   enlarged ? "show the colour image again" : "enlarge");
+    if (hovered)
+      ImGui::SetTooltip("%s: click to %s", name.c_str(), enlarged ? "show the colour image again" : "enlarge");
     if (clicked) slot.enlargedView = enlarged ? "" : name;
   }
 }

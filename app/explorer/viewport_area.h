@@ -25,8 +25,8 @@ struct MainAreaLayout {
 
 // Tiles the area: 1 = full, 2 = side by side, 4 = 2x2. All images get the same size because
 // the renderer draws every viewport of a frame at one resolution.
-MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount,
-                              bool withThumbnails, ImVec2 framebufferScale);
+MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, bool withThumbnails,
+                              ImVec2 framebufferScale);
 
 // A big image copied straight to the window (glBlitFramebuffer) before ImGui draws on top:
 // drawing it as a blended ImGui quad costs a third of the frame on a software rasterizer.
@@ -36,7 +36,7 @@ struct ScreenBlit {
 };
 
 struct MainAreaResult {
-  int hoveredViewport = -1;    // image under the mouse, -1 = none
+  int hoveredViewport = -1;      // image under the mouse, -1 = none
   MagnifierTarget hoveredImage;  // what the magnifier would enlarge there
   std::vector<ScreenBlit> blits;
 };

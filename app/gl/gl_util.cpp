@@ -91,9 +91,8 @@ void Texture2D::setClampToEdge() {
 
 std::vector<float> Texture2D::readFloats(int channels) const {
   static const GLenum formats[] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
-  GLenum fmt = (format_ == GL_DEPTH_COMPONENT32F || format_ == GL_DEPTH_COMPONENT24)
-                   ? GL_DEPTH_COMPONENT
-                   : formats[channels];
+  GLenum fmt =
+      (format_ == GL_DEPTH_COMPONENT32F || format_ == GL_DEPTH_COMPONENT24) ? GL_DEPTH_COMPONENT : formats[channels];
   std::vector<float> out(static_cast<size_t>(width_) * height_ * channels);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTextureImage(id_, 0, fmt, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());

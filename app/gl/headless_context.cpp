@@ -43,21 +43,26 @@ HeadlessContext::HeadlessContext() {
   if (display == EGL_NO_DISPLAY)
     throw std::runtime_error("EGL: no surfaceless or device display (is libegl-mesa0 installed?)");
   if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: cannot bind the OpenGL API");
-  const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                  EGL_NONE};
+  const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint numConfigs = 0;
   // Surfaceless contexts need no config; pass one when the driver offers it.
   eglChooseConfig(display, configAttribs, &config, 1, &numConfigs);
-  const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                   EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
-  EGLContext ctx = eglCreateContext(display, numConfigs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
-                                    contextAttribs);
+  const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                   4,
+                                   EGL_CONTEXT_MINOR_VERSION,
+                                   5,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_CONTEXT_OPENGL_DEBUG,
+                                   EGL_TRUE,
+                                   EGL_NONE};
+  EGLContext ctx =
+      eglCreateContext(display, numConfigs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttribs);
   if (ctx == EGL_NO_CONTEXT) {
     eglTerminate(display);
-    throw std::runtime_error("EGL: cannot create an OpenGL 4.5 core context (error 0x" +
-                             std::to_string(eglGetError()) + ")");
+    throw std::runtime_error("EGL: cannot create an OpenGL 4.5 core context (error 0x" + std::to_string(eglGetError()) +
+                             ")");
   }
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
     eglDestroyContext(display, ctx);

@@ -16,7 +16,7 @@
 namespace sl {
 
 struct ProgramSpec {
-  std::string name;  // for labels and messages
+  std::string name;                                    // for labels and messages
   std::vector<std::pair<GLenum, std::string>> stages;  // stage, file relative to the shader folder
   std::string prelude;  // generated text placed after #version (technique module includes, defines)
   std::string key() const;
@@ -60,8 +60,7 @@ class ShaderLibrary {
   int buildCount() const { return builds_; }
 
   // Expands includes for a stage; public for tests. Throws std::runtime_error for a missing file.
-  std::string assemble(const std::string& file, const std::string& prelude,
-                       std::vector<std::string>& fileNames) const;
+  std::string assemble(const std::string& file, const std::string& prelude, std::vector<std::string>& fileNames) const;
 
  private:
   void build(const ProgramSpec& spec, Program& program);

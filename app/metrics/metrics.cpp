@@ -18,8 +18,7 @@ bool isValid(const uint8_t* valid, size_t i) { return valid == nullptr || valid[
 
 }  // namespace
 
-ErrorMetrics compareVisibility(const float* technique, const float* reference, const uint8_t* valid,
-                               size_t count) {
+ErrorMetrics compareVisibility(const float* technique, const float* reference, const uint8_t* valid, size_t count) {
   ErrorMetrics m;
   if (count == 0) return m;
   if (!technique || !reference)
@@ -90,12 +89,10 @@ double meanTemporalChange(const std::vector<std::vector<float>>& frames, const u
   return samples > 0 ? sum / static_cast<double>(samples) : 0.0;
 }
 
-std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid,
-                                size_t count) {
+std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid, size_t count) {
   std::vector<uint8_t> rgba(count * 4, 0);
   if (count == 0) return rgba;
-  if (!technique || !reference)
-    throw std::invalid_argument("errorImage: technique and reference must not be null");
+  if (!technique || !reference) throw std::invalid_argument("errorImage: technique and reference must not be null");
   const double threshold = static_cast<double>(kWrongThreshold);
   auto put = [&](size_t i, uint8_t r, uint8_t g, uint8_t b) {
     rgba[4 * i + 0] = r;

@@ -8,26 +8,24 @@
 namespace sl {
 
 struct ErrorMetrics {
-  double wrongPixelPct = 0;  // |v - ref| > 30/255, percent of valid pixels
-  double falseShadowPct = 0; // v darker than ref by the threshold (dark where truth is lit)
-  double falseLightPct = 0;  // v brighter than ref by the threshold (light leaks)
-  double rmse = 0;           // of visibility over valid pixels
+  double wrongPixelPct = 0;   // |v - ref| > 30/255, percent of valid pixels
+  double falseShadowPct = 0;  // v darker than ref by the threshold (dark where truth is lit)
+  double falseLightPct = 0;   // v brighter than ref by the threshold (light leaks)
+  double rmse = 0;            // of visibility over valid pixels
   long long validPixels = 0;
-  long long nonfinite = 0;   // NaN/Inf in the technique's visibility (counted as wrong)
+  long long nonfinite = 0;  // NaN/Inf in the technique's visibility (counted as wrong)
 };
 
 constexpr float kWrongThreshold = 30.0f / 255.0f;
 
 // valid may be null (all pixels valid); else nonzero marks pixels covered by geometry.
-ErrorMetrics compareVisibility(const float* technique, const float* reference, const uint8_t* valid,
-                               size_t count);
+ErrorMetrics compareVisibility(const float* technique, const float* reference, const uint8_t* valid, size_t count);
 
 // Mean absolute frame-to-frame change of visibility over valid pixels, across a sequence.
 double meanTemporalChange(const std::vector<std::vector<float>>& frames, const uint8_t* valid);
 
 // Error image for the `error` debug view: RGBA8, grey = agree, orange = false shadow,
 // blue = false light (colours chosen to be told apart by colour-blind viewers too).
-std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid,
-                                size_t count);
+std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid, size_t count);
 
 }  // namespace sl

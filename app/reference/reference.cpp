@@ -100,9 +100,7 @@ void orthonormalBasis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
   b = glm::cross(n, t);
 }
 
-bool isFinite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -120,8 +118,8 @@ struct ReferenceTracer::Impl {
     auto* self = static_cast<Impl*>(user);
     std::lock_guard<std::mutex> lock(self->errorMutex);
     if (self->firstError.empty())
-      self->firstError = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
-                         (message ? message : "(no message)");
+      self->firstError =
+          "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "(no message)");
   }
 
   void throwIfEmbreeFailed(const char* stage) {
@@ -228,15 +226,13 @@ struct ReferenceTracer::Impl {
 ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Impl) {
   std::unique_ptr<Impl> impl(impl_);  // released only if construction succeeds
   impl->light = scene.light;
-  if (glm::length(impl->light.direction) > 0.0f)
-    impl->light.direction = glm::normalize(impl->light.direction);
+  if (glm::length(impl->light.direction) > 0.0f) impl->light.direction = glm::normalize(impl->light.direction);
 
   impl->device = rtcNewDevice(nullptr);
   if (!impl->device) {
     const RTCError code = rtcGetDeviceError(nullptr);
     throw std::runtime_error("ReferenceTracer: could not create the Embree device (error " +
-                             std::to_string(static_cast<int>(code)) +
-                             "); is the CPU supported by libembree3?");
+                             std::to_string(static_cast<int>(code)) + "); is the CPU supported by libembree3?");
   }
   rtcSetDeviceErrorFunction(impl->device, &Impl::onEmbreeError, impl.get());
   impl->scene = rtcNewScene(impl->device);
@@ -260,10 +256,10 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
 
     const glm::mat4 toWorld = inst.transformAt(time);
     RTCGeometry geom = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triCount));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.positions.size()));
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triCount));
     if (!vertices || !indices) {
       rtcReleaseGeometry(geom);
       impl->throwIfEmbreeFailed("allocating geometry buffers");
@@ -291,8 +287,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
       const int t = material.baseColorTexture;
       if (t >= 0 && static_cast<size_t>(t) < scene.textures.size()) {
         const Texture& texture = scene.textures[t];
-        if (texture.rgba.size() >= static_cast<size_t>(texture.width) * texture.height * 4)
-          alpha->texture = texture;
+        if (texture.rgba.size() >= static_cast<size_t>(texture.width) * texture.height * 4) alpha->texture = texture;
       }
       rtcSetGeometryUserData(geom, alpha.get());
       rtcSetGeometryOccludedFilterFunction(geom, &alphaOcclusionFilter);
@@ -316,8 +311,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
 
 ReferenceTracer::~ReferenceTracer() { delete impl_; }
 
-std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer,
-                                               const ReferenceOptions& options) const {
+std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const ReferenceOptions& options) const {
   if (gbuffer.width <= 0 || gbuffer.height <= 0) return {};
   if (!gbuffer.worldPosition || !gbuffer.worldNormal)
     throw std::invalid_argument("ReferenceTracer::visibility: G-buffer has no position or normal data");
@@ -339,8 +333,8 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer,
         const float* pos = gbuffer.worldPosition + 4 * pixel;
         if (!(pos[3] > 0.5f)) continue;  // background stays 0
         const float* nrm = gbuffer.worldNormal + 4 * pixel;
-        result[pixel] = impl_->shade(glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]),
-                                     gridSize, pixel);
+        result[pixel] =
+            impl_->shade(glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), gridSize, pixel);
       }
     }
   };

@@ -19,7 +19,7 @@ struct GBufferView {
 };
 
 struct ReferenceOptions {
-  double time = 0.0;   // scene time, for moving instances
+  double time = 0.0;      // scene time, for moving instances
   int lightSamples = 64;  // used only when scene.light.radius > 0
   int threads = 0;        // 0 = hardware concurrency
 };

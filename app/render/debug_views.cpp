@@ -45,7 +45,8 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
     const std::string modules = needsTechnique ? prelude : "";
     Texture2D* target = vp.views_[name].get();
     g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, modules, visTex] {
-             ProgramSpec spec{"view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
+             ProgramSpec spec{
+                 "view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
              Program& p = shaders_.get(spec);
              if (!p.valid()) return;
              Framebuffer fbo("view target");
@@ -78,8 +79,12 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
   if (vp.views_.count("lightspace")) {
     Texture2D* target = vp.views_["lightspace"].get();
     g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag}, [this, &vp, target, &in] {
-             ProgramSpec sceneSpec{"view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
-             ProgramSpec lineSpec{"view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
+             ProgramSpec sceneSpec{
+                 "view overview",
+                 {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}},
+                 ""};
+             ProgramSpec lineSpec{
+                 "view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
              Program& lp = shaders_.get(lineSpec);
              if (!lp.valid()) return;
              Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
@@ -94,9 +99,10 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              float radius = glm::length(b.extent()) * 0.5f + 1e-3f;
              glm::vec3 center = b.center();
              glm::vec3 eye = center + glm::normalize(glm::vec3(0.7f, 1.2f, 0.9f)) * radius * 2.2f;
-             glm::mat4 overview = glm::perspective(glm::radians(45.0f), float(target->width()) / float(target->height()),
-                                                   radius * 0.05f, radius * 6.0f) *
-                                  glm::lookAt(eye, center, glm::vec3(0, 1, 0));
+             glm::mat4 overview =
+                 glm::perspective(glm::radians(45.0f), float(target->width()) / float(target->height()), radius * 0.05f,
+                                  radius * 6.0f) *
+                 glm::lookAt(eye, center, glm::vec3(0, 1, 0));
              glEnable(GL_DEPTH_TEST);
              PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p) {
                p.set("u_viewProj", overview);
@@ -110,7 +116,9 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
              addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f), glm::vec3(1.0f, 0.85f, 0.1f));
              addBox(lines, unprojectCube(vp.lightSpace.viewProj, -1.0f, 1.0f), glm::vec3(0.2f, 0.9f, 1.0f));
-             glNamedBufferSubData(linesVbo_, 0, static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)), lines.data());
+             glNamedBufferSubData(linesVbo_, 0,
+                                  static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
+                                  lines.data());
              lp.use();
              lp.set("u_viewProj", overview);
              glDisable(GL_DEPTH_TEST);

@@ -24,8 +24,8 @@ std::vector<bool> FrameGraph::liveMask() const {
   std::set<std::string> needed(sinks_.begin(), sinks_.end());
   for (size_t k = passes_.size(); k-- > 0;) {
     const Pass& p = passes_[k];
-    bool producesNeeded = std::any_of(p.writes.begin(), p.writes.end(),
-                                      [&](const std::string& w) { return needed.count(w) > 0; });
+    bool producesNeeded =
+        std::any_of(p.writes.begin(), p.writes.end(), [&](const std::string& w) { return needed.count(w) > 0; });
     if (!producesNeeded) continue;
     live[k] = true;
     // A resource written here and also read here (ping-pong history) stays needed upstream.
@@ -54,8 +54,7 @@ std::vector<std::string> FrameGraph::compile() const {
   return order;
 }
 
-void FrameGraph::execute(
-    const std::function<void(const Pass&, const std::function<void()>&)>& wrapper) const {
+void FrameGraph::execute(const std::function<void(const Pass&, const std::function<void()>&)>& wrapper) const {
   std::vector<bool> live = liveMask();
   for (size_t k = 0; k < passes_.size(); ++k)
     if (live[k]) wrapper(passes_[k], passes_[k].execute);

@@ -24,7 +24,7 @@ struct PassTiming {
 class FrameGraph {
  public:
   void add(Pass pass);
-  void requestSink(const std::string& resource);  // something shown or read back needs it
+  void requestSink(const std::string& resource);     // something shown or read back needs it
   void importResource(const std::string& resource);  // lives across frames (e.g. last frame's history)
   // Names of the passes that will run, in submission order. Throws if a read resource is
   // produced by no pass earlier in the list (a wiring mistake, not user input).

@@ -154,7 +154,8 @@ void Renderer::drawSky() {
   for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void Renderer::drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup, double time) {
+void Renderer::drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup,
+                                double time) {
   glEnable(GL_DEPTH_TEST);
   PassPrograms programs(shaders_, spec, [this, &setup](const Program& p) {
     setup(p);
@@ -207,13 +208,15 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
                for (int i = 0; i < (needMotion ? 4 : 3); ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
                glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                glEnable(GL_DEPTH_TEST);
-               PassPrograms programs(shaders_,
-                                     {"gbuffer", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-                                      needMotion ? "#define SL_WRITE_MOTION\n" : ""},
-                                     [this](const Program& p) {
-                                       p.set("u_viewProj", proj_ * view_);
-                                       p.set("u_prevViewProj", prevProj_ * prevView_);
-                                     });
+               PassPrograms programs(
+                   shaders_,
+                   {"gbuffer",
+                    {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+                    needMotion ? "#define SL_WRITE_MOTION\n" : ""},
+                   [this](const Program& p) {
+                     p.set("u_viewProj", proj_ * view_);
+                     p.set("u_prevViewProj", prevProj_ * prevView_);
+                   });
                gpu_->draw(programs, in.time, prevTime_);
                glDisable(GL_DEPTH_TEST);
              }});
@@ -249,7 +252,8 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
       auto t0 = std::chrono::steady_clock::now();
       run();
       glFinish();
-      stats_.passes.push_back({pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
+      stats_.passes.push_back(
+          {pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
     }
   });
   for (size_t k = 0; k < queries.size(); ++k) {
@@ -296,11 +300,12 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
            vp.shadowFbo_.bind();
            glClearNamedFramebufferfi(vp.shadowFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
            glEnable(GL_DEPTH_TEST);
-           PassPrograms programs(shaders_,
-                                 {"shadowmap " + t.layout->id(),
-                                  {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
-                                  shadowPrelude},
-                                 [this, &vp](const Program& p) { setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light); });
+           PassPrograms programs(
+               shaders_,
+               {"shadowmap " + t.layout->id(),
+                {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
+                shadowPrelude},
+               [this, &vp](const Program& p) { setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light); });
            static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
            gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
            glDisable(GL_DEPTH_TEST);
@@ -342,18 +347,20 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   }
 
   if (vp.accumulation->needsVisibilityPass())
-  g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude, bindVisibilityInputs] {
-           Technique& t = vp.technique;
-           ProgramSpec spec{"visibility " + t.layout->id() + "+" + t.representation->id(),
-                            {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}}, prelude};
-           Program& p = shaders_.get(spec);
-           if (!p.valid()) return;
-           vp.visibilityFbo_.bind();
-           p.use();
-           bindVisibilityInputs(p);
-           drawFullscreen();
-           glBindSampler(2, 0);
-         }});
+    g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude, bindVisibilityInputs] {
+             Technique& t = vp.technique;
+             ProgramSpec spec{
+                 "visibility " + t.layout->id() + "+" + t.representation->id(),
+                 {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}},
+                 prelude};
+             Program& p = shaders_.get(spec);
+             if (!p.valid()) return;
+             vp.visibilityFbo_.bind();
+             p.use();
+             bindVisibilityInputs(p);
+             drawFullscreen();
+             glBindSampler(2, 0);
+           }});
 
   AccumulationContext ctx;
   ctx.viewportTag = tag;
@@ -398,7 +405,8 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const Texture2D* visTex = vp.accumulated_ ? vp.finalVisibility_.get() : vp.rawVisibility_.get();
 
   g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
-           ProgramSpec spec{"shade", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}}, ""};
+           ProgramSpec spec{
+               "shade", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}}, ""};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
            vp.colorFbo_.bind();

@@ -26,9 +26,9 @@ const std::vector<std::string>& commonViewNames();
 
 // Screen-space inputs an accumulation reads and the output it must write.
 struct AccumulationContext {
-  std::string viewportTag;        // unique per viewport, used in pass/resource names
-  std::string rawVisibility;      // resource: RG16F (visibility, confidence)
-  std::string finalVisibility;    // resource the accumulation must write: R channel = visibility
+  std::string viewportTag;      // unique per viewport, used in pass/resource names
+  std::string rawVisibility;    // resource: RG16F (visibility, confidence)
+  std::string finalVisibility;  // resource the accumulation must write: R channel = visibility
   const Texture2D* rawVisibilityTex = nullptr;
   Texture2D* finalVisibilityTex = nullptr;
   const Texture2D* gPosition = nullptr;  // RGBA32F world position, w = 1 where covered
@@ -59,7 +59,7 @@ struct AccumulationContext {
   std::function<void(const ProgramSpec&, const std::function<void(const Program&)>&)> drawScene;
   std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
-  bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
+  bool wroteColor = false;                   // set by the accumulation when its pass shaded the frame
 };
 
 // A viewport: one technique with its own state and targets, sharing the camera with the others.

@@ -74,8 +74,7 @@ class GltfImporter {
     }
     if (n.rotation.size() == 4) {
       // glTF stores quaternions as x,y,z,w; glm's constructor takes w first.
-      const glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]),
-                        float(n.rotation[2]));
+      const glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
       m = m * glm::mat4_cast(glm::normalize(q));
     }
     if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
@@ -127,8 +126,8 @@ class GltfImporter {
 
   // Reads an accessor into floats (or exact integers for index types). `allowed` lists
   // accepted component types; normalized integer types are only accepted when `normalizedOk`.
-  AccessorData readAccessor(int index, const std::string& where, int expectedType,
-                            std::initializer_list<int> allowed, bool normalizedOk) const {
+  AccessorData readAccessor(int index, const std::string& where, int expectedType, std::initializer_list<int> allowed,
+                            bool normalizedOk) const {
     const std::string aw = where + " (accessor " + std::to_string(index) + ")";
     if (index < 0 || size_t(index) >= model_.accessors.size()) fail(aw + ": accessor index out of range");
     const tinygltf::Accessor& acc = model_.accessors[index];
@@ -162,8 +161,8 @@ class GltfImporter {
     const size_t stride = bv.byteStride ? bv.byteStride : elemSize;
     if (stride < elemSize) fail(aw + ": byteStride smaller than the element size");
     if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset) {
-      fail(aw + ": bufferView range exceeds buffer " + std::to_string(bv.buffer) + " (" +
-           std::to_string(data.size()) + " bytes)");
+      fail(aw + ": bufferView range exceeds buffer " + std::to_string(bv.buffer) + " (" + std::to_string(data.size()) +
+           " bytes)");
     }
     if (out.count == 0) return out;
     // Checked in this order so that a huge count cannot overflow the byte arithmetic.
@@ -185,17 +184,26 @@ class GltfImporter {
 
   static float component(const unsigned char* p, int type, bool normalized) {
     switch (type) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(*p) / 255.0f : float(*p);
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float v;
+        std::memcpy(&v, p, 4);
+        return v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalized ? float(*p) / 255.0f : float(*p);
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t v; std::memcpy(&v, p, 2);
+        uint16_t v;
+        std::memcpy(&v, p, 2);
         return normalized ? float(v) / 65535.0f : float(v);
       }
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
         // Only used for indices; callers read those through readIndices to stay exact.
-        uint32_t v; std::memcpy(&v, p, 4); return float(v);
+        uint32_t v;
+        std::memcpy(&v, p, 4);
+        return float(v);
       }
-      default: return 0.0f;
+      default:
+        return 0.0f;
     }
   }
 
@@ -220,8 +228,7 @@ class GltfImporter {
 
   int convertPrimitive(int meshIndex, int primIndex) {
     const tinygltf::Primitive& prim = model_.meshes[meshIndex].primitives[primIndex];
-    const std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" +
-                              std::to_string(primIndex) + "]";
+    const std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(primIndex) + "]";
     // Points, lines and strips/fans are skipped: shadow casters here are triangle lists.
     if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) return -1;
     auto attr = [&](const char* name) {
@@ -230,8 +237,8 @@ class GltfImporter {
     };
     const int posAcc = attr("POSITION");
     if (posAcc < 0) fail(where + ": no POSITION attribute");
-    const AccessorData pos = readAccessor(posAcc, where + ".POSITION", TINYGLTF_TYPE_VEC3,
-                                          {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+    const AccessorData pos =
+        readAccessor(posAcc, where + ".POSITION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
     const size_t vertexCount = pos.count;
     Mesh mesh;
     mesh.name = model_.meshes[meshIndex].name + "/" + std::to_string(primIndex);
@@ -245,8 +252,8 @@ class GltfImporter {
     }
     const int nrmAcc = attr("NORMAL");
     if (nrmAcc >= 0) {
-      const AccessorData n = readAccessor(nrmAcc, where + ".NORMAL", TINYGLTF_TYPE_VEC3,
-                                          {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
+      const AccessorData n =
+          readAccessor(nrmAcc, where + ".NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false);
       if (n.count != vertexCount) fail(where + ".NORMAL: count differs from POSITION count");
       mesh.normals.resize(vertexCount);
       for (size_t i = 0; i < vertexCount; ++i) {
@@ -256,10 +263,10 @@ class GltfImporter {
     mesh.uvs.assign(vertexCount, glm::vec2(0.0f));
     const int uvAcc = attr("TEXCOORD_0");
     if (uvAcc >= 0) {
-      const AccessorData t = readAccessor(
-          uvAcc, where + ".TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, true);
+      const AccessorData t = readAccessor(uvAcc, where + ".TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                          true);
       if (t.count != vertexCount) fail(where + ".TEXCOORD_0: count differs from POSITION count");
       for (size_t i = 0; i < vertexCount; ++i) mesh.uvs[i] = glm::vec2(t.values[i * 2], t.values[i * 2 + 1]);
     }
@@ -267,8 +274,8 @@ class GltfImporter {
       mesh.indices = readIndices(prim.indices, where + ".indices");
       for (size_t i = 0; i < mesh.indices.size(); ++i) {
         if (mesh.indices[i] >= vertexCount) {
-          fail(where + ".indices: index " + std::to_string(mesh.indices[i]) + " at position " +
-               std::to_string(i) + " out of range (vertex count " + std::to_string(vertexCount) + ")");
+          fail(where + ".indices: index " + std::to_string(mesh.indices[i]) + " at position " + std::to_string(i) +
+               " out of range (vertex count " + std::to_string(vertexCount) + ")");
         }
       }
     } else {
@@ -343,7 +350,8 @@ class GltfImporter {
     if (size_t(tex) >= model_.textures.size()) fail(where + ": texture index " + std::to_string(tex) + " out of range");
     const int source = model_.textures[tex].source;
     if (source < 0) return -1;  // e.g. only an extension source we don't decode: untextured
-    if (size_t(source) >= model_.images.size()) fail(where + ": image index " + std::to_string(source) + " out of range");
+    if (size_t(source) >= model_.images.size())
+      fail(where + ": image index " + std::to_string(source) + " out of range");
     auto it = imageCache_.find(source);
     if (it != imageCache_.end()) return it->second;
     const tinygltf::Image& img = model_.images[source];
@@ -357,8 +365,8 @@ class GltfImporter {
     const int comps = img.component;
     const int bytesPerComp = img.bits == 16 ? 2 : 1;
     if (comps < 1 || comps > 4 || (img.bits != 8 && img.bits != 16)) {
-      fail(iw + ": unsupported pixel format (" + std::to_string(comps) + " channels, " +
-           std::to_string(img.bits) + " bits)");
+      fail(iw + ": unsupported pixel format (" + std::to_string(comps) + " channels, " + std::to_string(img.bits) +
+           " bits)");
     }
     const size_t pixels = size_t(img.width) * size_t(img.height);
     if (img.image.size() < pixels * size_t(comps) * size_t(bytesPerComp)) fail(iw + ": pixel data too short");

@@ -32,8 +32,8 @@ Camera CameraPath::sample(float t, const Camera& base) const {
     a = b = &keys.back();
   } else if (t > keys.front().time) {
     // First key strictly after t; keys are sorted with increasing times.
-    auto it = std::upper_bound(keys.begin(), keys.end(), t,
-                               [](float v, const CameraKeyframe& k) { return v < k.time; });
+    auto it =
+        std::upper_bound(keys.begin(), keys.end(), t, [](float v, const CameraKeyframe& k) { return v < k.time; });
     b = &*it;
     a = &*(it - 1);
   }
@@ -85,8 +85,7 @@ std::vector<std::string> builtinSceneIds(const std::string& assetsDir) {
   namespace fs = std::filesystem;
   std::vector<std::string> ids;
   std::error_code ec;
-  for (fs::directory_iterator it(fs::path(assetsDir) / "scenes", ec), end; !ec && it != end;
-       it.increment(ec)) {
+  for (fs::directory_iterator it(fs::path(assetsDir) / "scenes", ec), end; !ec && it != end; it.increment(ec)) {
     if (it->path().extension() == ".json") ids.push_back(it->path().stem().string());
   }
   std::sort(ids.begin(), ids.end(), [](const std::string& a, const std::string& b) {

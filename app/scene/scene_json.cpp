@@ -79,7 +79,8 @@ class Reader {
       if (!known) {
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(where.empty() ? it.key() : where + "." + it.key(), "unknown key '" + it.key() + "' (allowed: " + list + ")");
+        fail(where.empty() ? it.key() : where + "." + it.key(),
+             "unknown key '" + it.key() + "' (allowed: " + list + ")");
       }
     }
   }
@@ -161,8 +162,10 @@ class Reader {
     }
     if (const json* v = find(j, "scale")) {
       glm::vec3 s;
-      if (v->is_number()) s = glm::vec3(number(*v, where + ".scale"));
-      else s = vec3(*v, where + ".scale");
+      if (v->is_number())
+        s = glm::vec3(number(*v, where + ".scale"));
+      else
+        s = vec3(*v, where + ".scale");
       if (s.x == 0.0f || s.y == 0.0f || s.z == 0.0f) expected(where + ".scale", "non-zero scale factors", *v);
       t = glm::scale(t, s);
     }
@@ -266,8 +269,7 @@ void parseObject(const Reader& r, const json& j, const std::string& where, Scene
     const json* h = Reader::find(j, "height");
     const json* seg = Reader::find(j, "segments");
     const json* cap = Reader::find(j, "capped");
-    mesh = makeCylinder(rad ? r.positive(*rad, where + ".radius") : 0.5f,
-                        h ? r.positive(*h, where + ".height") : 1.0f,
+    mesh = makeCylinder(rad ? r.positive(*rad, where + ".radius") : 0.5f, h ? r.positive(*h, where + ".height") : 1.0f,
                         seg ? r.integer(*seg, where + ".segments", 3, 1024) : 24,
                         cap ? r.boolean(*cap, where + ".capped") : true);
   } else {
@@ -317,8 +319,10 @@ Light parseLight(const Reader& r, const json& j) {
   l.direction = kAutoLightDirection;
   if (const json* t = Reader::find(j, "type")) {
     const std::string type = r.string(*t, where + ".type");
-    if (type == "spot") l.type = Light::Type::Spot;
-    else if (type != "directional") r.fail(where + ".type", "unknown light type '" + type + "' (expected directional or spot)");
+    if (type == "spot")
+      l.type = Light::Type::Spot;
+    else if (type != "directional")
+      r.fail(where + ".type", "unknown light type '" + type + "' (expected directional or spot)");
   }
   if (const json* d = Reader::find(j, "direction")) {
     const glm::vec3 v = r.vec3(*d, where + ".direction");
@@ -328,7 +332,8 @@ Light parseLight(const Reader& r, const json& j) {
   if (const json* p = Reader::find(j, "position")) l.position = r.vec3(*p, where + ".position");
   if (const json* f = Reader::find(j, "fov_deg")) {
     l.fovDeg = float(r.number(*f, where + ".fov_deg"));
-    if (!(l.fovDeg > 0.0f && l.fovDeg < 180.0f)) r.expected(where + ".fov_deg", "a field of view in (0,180) degrees", *f);
+    if (!(l.fovDeg > 0.0f && l.fovDeg < 180.0f))
+      r.expected(where + ".fov_deg", "a field of view in (0,180) degrees", *f);
   }
   if (const json* rad = Reader::find(j, "radius")) {
     l.radius = float(r.number(*rad, where + ".radius"));
@@ -473,8 +478,9 @@ Scene loadJsonScene(const std::string& path) {
       } catch (const SceneError& e) {
         const bool shared = given.compare(0, 8, "$SHARED/") == 0;
         r.fail(where + ".file", e.what() + std::string(shared ? " ($SHARED/ is resolved through the "
-                                                                 "SHADOWLAB_SHARED environment variable, "
-                                                                 "else <source dir>/../shared)" : ""));
+                                                                "SHADOWLAB_SHARED environment variable, "
+                                                                "else <source dir>/../shared)"
+                                                              : ""));
       }
     }
   }
@@ -490,7 +496,8 @@ Scene loadJsonScene(const std::string& path) {
     for (size_t i = 0; i < cams->size(); ++i) {
       const std::string where = "cameras[" + std::to_string(i) + "]";
       scene.cameras.push_back(parseCamera(r, (*cams)[i], where, i));
-      if (!names.insert(scene.cameras.back().name).second) r.fail(where + ".name", "duplicate camera name '" + scene.cameras.back().name + "'");
+      if (!names.insert(scene.cameras.back().name).second)
+        r.fail(where + ".name", "duplicate camera name '" + scene.cameras.back().name + "'");
     }
   }
   names.clear();
@@ -498,7 +505,8 @@ Scene loadJsonScene(const std::string& path) {
     for (size_t i = 0; i < paths->size(); ++i) {
       const std::string where = "paths[" + std::to_string(i) + "]";
       scene.paths.push_back(parsePath(r, (*paths)[i], where, i));
-      if (!names.insert(scene.paths.back().name).second) r.fail(where + ".name", "duplicate path name '" + scene.paths.back().name + "'");
+      if (!names.insert(scene.paths.back().name).second)
+        r.fail(where + ".name", "duplicate path name '" + scene.paths.back().name + "'");
     }
   }
   finish(scene, light != nullptr);
@@ -525,8 +533,8 @@ Scene loadScene(const std::string& idOrPath, const std::string& assetsDir) {
     if (idOrPath.empty() || !fs::is_regular_file(path, ec)) {
       std::string ids;
       for (const auto& id : builtinSceneIds(assetsDir)) ids += (ids.empty() ? "" : ", ") + id;
-      throw SceneError(path + ": unknown builtin scene id '" + idOrPath + "' (available: " +
-                       (ids.empty() ? "none found in " + assetsDir + "/scenes" : ids) + ")");
+      throw SceneError(path + ": unknown builtin scene id '" + idOrPath +
+                       "' (available: " + (ids.empty() ? "none found in " + assetsDir + "/scenes" : ids) + ")");
     }
   }
   std::string ext = fs::path(path).extension().string();

@@ -17,8 +17,8 @@ uint32_t addVertex(Mesh& m, const glm::vec3& p, const glm::vec3& n, const glm::v
 
 // Grid of (cols+1)*(rows+1) vertices spanning origin + u*[0,1] + v*[0,1]; triangles wind so that
 // their face normal is cross(u, v), which callers make equal to `normal`.
-void addGrid(Mesh& m, const glm::vec3& origin, const glm::vec3& u, const glm::vec3& v,
-             const glm::vec3& normal, int cols, int rows) {
+void addGrid(Mesh& m, const glm::vec3& origin, const glm::vec3& u, const glm::vec3& v, const glm::vec3& normal,
+             int cols, int rows) {
   const uint32_t base = static_cast<uint32_t>(m.positions.size());
   for (int r = 0; r <= rows; ++r) {
     for (int c = 0; c <= cols; ++c) {
@@ -70,8 +70,7 @@ Mesh makeSphere(float radius, int segments) {
     const float theta = kPi * float(r) / float(rings);  // 0 at the north pole
     for (int s = 0; s <= slices; ++s) {
       const float phi = 2.0f * kPi * float(s) / float(slices);
-      const glm::vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
-                        -std::sin(theta) * std::sin(phi)};
+      const glm::vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
       addVertex(m, n * radius, n, {float(s) / float(slices), float(r) / float(rings)});
     }
   }
@@ -117,8 +116,10 @@ Mesh makeCylinder(float radius, float height, int segments, bool capped) {
       for (int s = 0; s < slices; ++s) {
         const uint32_t a = center + 1 + uint32_t(s), b = a + 1;
         // The ring runs counter-clockwise seen from +Y, so the bottom cap reverses it.
-        if (side == 0) m.indices.insert(m.indices.end(), {center, a, b});
-        else m.indices.insert(m.indices.end(), {center, b, a});
+        if (side == 0)
+          m.indices.insert(m.indices.end(), {center, a, b});
+        else
+          m.indices.insert(m.indices.end(), {center, b, a});
       }
     }
   }

@@ -29,8 +29,7 @@ LayoutJitter pixelCorrectJitter(const ParamSet& params, int index) {
     const float a = params.f("pc.jitter_amplitude");
     j.offsetTexels = glm::vec2(halton(i, 2) - 0.5f, halton(i, 3) - 0.5f) * a;
   }
-  if (params.b("pc.rotate"))
-    j.rotationRad = (2.0f * halton(i, 5) - 1.0f) * glm::radians(params.f("pc.rotation_deg"));
+  if (params.b("pc.rotate")) j.rotationRad = (2.0f * halton(i, 5) - 1.0f) * glm::radians(params.f("pc.rotation_deg"));
   return j;
 }
 
@@ -45,7 +44,9 @@ float pixelCorrectNextExponent(const ParamSet& params, float previous, bool movi
   return std::clamp(previous + params.f("pc.m_step"), mLow, mMax);
 }
 
-LayoutJitter PixelCorrectState::jitter(const ParamSet& params) const { return pixelCorrectJitter(params, jitterIndex_); }
+LayoutJitter PixelCorrectState::jitter(const ParamSet& params) const {
+  return pixelCorrectJitter(params, jitterIndex_);
+}
 
 void PixelCorrectState::reset() {
   hasHistory_ = false;
@@ -142,9 +143,14 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
 
   // One scene pass, as in the paper: test, reprojection, update and shading with multiple
   // render targets; the previous-frame position comes from the vertex shader.
-  graph.add({"pixel-correct" + tag, {ctx.shadowMap, prevRes}, {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility},
+  graph.add({"pixel-correct" + tag,
+             {ctx.shadowMap, prevRes},
+             {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility},
              [c, prevTex, fbo, hasHistory, m, prelude] {
-               ProgramSpec spec{"pixel-correct", {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}}, prelude};
+               ProgramSpec spec{
+                   "pixel-correct",
+                   {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}},
+                   prelude};
                fbo->bind();
                glViewport(0, 0, c.width, c.height);
                // Background: lit, no history (depth 0), raw test lit with no confidence.
@@ -170,7 +176,9 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
     const std::string res = std::string("view.") + name + tag;
     const std::string file = std::string("accumulation/views_") + name + ".frag";
     graph.add({res, {"gbuffer", ctx.rawVisibility, prevRes}, {res}, [c, prevTex, target, file, hasHistory, m, prelude] {
-                 ProgramSpec spec{"view " + file, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}}, prelude};
+                 ProgramSpec spec{"view " + file,
+                                  {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}},
+                                  prelude};
                  Program& p = c.shaders->get(spec);
                  if (!p.valid()) return;
                  Framebuffer fb("view target");
@@ -204,40 +212,126 @@ class PixelCorrectAccumulation : public Accumulation {
   }
   std::vector<ParamDecl> params() const override {
     return {
-        {"pc.m", ParamType::Float, 1, 30, 15, "",
-         "confidence exponent m (w = conf^m, eq. 6): high = slow, noise-free, pixel-exact; low = fast, noisy", {}},
-        {"pc.adaptive", ParamType::Bool, 0, 1, 1, "",
+        {"pc.m",
+         ParamType::Float,
+         1,
+         30,
+         15,
+         "",
+         "confidence exponent m (w = conf^m, eq. 6): high = slow, noise-free, pixel-exact; low = fast, noisy",
+         {}},
+        {"pc.adaptive",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
          "adaptive m: pc.m_moving while the camera moves, then + pc.m_step per still frame up to pc.m (after a "
-         "cut: pc.m with pc.warmup, else pc.m_moving)", {}},
-        {"pc.m_moving", ParamType::Float, 1, 30, 3, "", "exponent m while the camera moves (adaptive; also after a cut without pc.warmup)", {}},
+         "cut: pc.m with pc.warmup, else pc.m_moving)",
+         {}},
+        {"pc.m_moving",
+         ParamType::Float,
+         1,
+         30,
+         3,
+         "",
+         "exponent m while the camera moves (adaptive; also after a cut without pc.warmup)",
+         {}},
         {"pc.m_step", ParamType::Float, 0, 2, 0.1, "per frame", "increase of m per still frame (adaptive)", {}},
-        {"pc.warmup", ParamType::Bool, 0, 1, 1, "",
+        {"pc.warmup",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
          "beyond the paper: update weight w / max(W + w, 1) with W the pixel's accumulated weight, so a fresh "
-         "history converges as a confidence-weighted mean; off = eq. 2 with w = conf^m from the first frame", {}},
-        {"pc.jitter", ParamType::Bool, 0, 1, 1, "", "sub-texel translation of the light window, Halton(2,3) per frame", {}},
-        {"pc.jitter_amplitude", ParamType::Float, 0, 2, 1, "texels",
-         "translation range: offsets in [-0.5,0.5] x amplitude texels", {}},
-        {"pc.rotate", ParamType::Bool, 0, 1, 1, "",
-         "in-plane rotation of the light window, Halton(5) per frame (translation alone repeats edge patterns)", {}},
+         "history converges as a confidence-weighted mean; off = eq. 2 with w = conf^m from the first frame",
+         {}},
+        {"pc.jitter",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
+         "sub-texel translation of the light window, Halton(2,3) per frame",
+         {}},
+        {"pc.jitter_amplitude",
+         ParamType::Float,
+         0,
+         2,
+         1,
+         "texels",
+         "translation range: offsets in [-0.5,0.5] x amplitude texels",
+         {}},
+        {"pc.rotate",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
+         "in-plane rotation of the light window, Halton(5) per frame (translation alone repeats edge patterns)",
+         {}},
         {"pc.rotation_deg", ParamType::Float, 0, 45, 10, "degrees", "rotation range: angles in [-a, a]", {}},
-        {"pc.pause_jitter", ParamType::Bool, 0, 1, 0, "",
-         "keep the current jitter (the history still updates); render one frame to single-step", {}},
-        {"pc.disocclusion", ParamType::Float, 0.001, 0.5, 0.02, "relative depth",
+        {"pc.pause_jitter",
+         ParamType::Bool,
+         0,
+         1,
+         0,
+         "",
+         "keep the current jitter (the history still updates); render one frame to single-step",
+         {}},
+        {"pc.disocclusion",
+         ParamType::Float,
+         0.001,
+         0.5,
+         0.02,
+         "relative depth",
          "history tap rejected when |expected - stored view depth| > this x expected depth",
-         {}, true},
-        {"pc.history_filter", ParamType::Enum, 0, 0, 0, "",
+         {},
+         true},
+        {"pc.history_filter",
+         ParamType::Enum,
+         0,
+         0,
+         0,
+         "",
          "history resampling: bilinear (the paper) blurs edges a little more every frame while the camera moves; "
-         "catmull-rom (beyond the paper) halves that error but adds ringing that flickers", {"bilinear", "catmull-rom"}},
-        {"pc.history_format", ParamType::Enum, 0, 0, 0, "",
-         "history buffer precision (s, depth, W): fp16 as in the paper, or fp32", {"fp16", "fp32"}},
-        {"pc.reject", ParamType::Float, 0, 1, 0.05, "visibility",
+         "catmull-rom (beyond the paper) halves that error but adds ringing that flickers",
+         {"bilinear", "catmull-rom"}},
+        {"pc.history_format",
+         ParamType::Enum,
+         0,
+         0,
+         0,
+         "",
+         "history buffer precision (s, depth, W): fp16 as in the paper, or fp32",
+         {"fp16", "fp32"}},
+        {"pc.reject",
+         ParamType::Float,
+         0,
+         1,
+         0.05,
+         "visibility",
          "moving casters (beyond the paper): history replaced by the current test when they differ by more than "
-         "this and the test is unambiguous (confident, or its whole neighbourhood agrees); 1 = off", {}},
-        {"pc.reject_confidence", ParamType::Float, 0, 1, 0.9, "",
-         "confidence above which a disagreeing test replaces the history (with pc.reject)", {}},
-        {"pc.reject_neighbours", ParamType::Bool, 0, 1, 1, "",
+         "this and the test is unambiguous (confident, or its whole neighbourhood agrees); 1 = off",
+         {}},
+        {"pc.reject_confidence",
+         ParamType::Float,
+         0,
+         1,
+         0.9,
+         "",
+         "confidence above which a disagreeing test replaces the history (with pc.reject)",
+         {}},
+        {"pc.reject_neighbours",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
          "a disagreeing test also replaces the history when the map gives the same answer one texel around the "
-         "receiver in every direction (no jitter could change it: the caster moved) (with pc.reject)", {}},
+         "receiver in every direction (no jitter could change it: the caster moved) (with pc.reject)",
+         {}},
     };
   }
   std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<PixelCorrectState>(); }

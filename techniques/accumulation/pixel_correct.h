@@ -45,8 +45,8 @@ class PixelCorrectState : public AccumulationState {
   int current_ = 0;  // history_[current_] holds the latest frame
   bool hasHistory_ = false;
   float m_ = 0.0f;
-  int frames_ = 0;      // frames since the last reset
-  int jitterIndex_ = 0; // Halton index of the next frame
+  int frames_ = 0;       // frames since the last reset
+  int jitterIndex_ = 0;  // Halton index of the next frame
   bool adaptive_ = true;
 };
 

@@ -8,9 +8,11 @@ namespace {
 
 class DepthRepresentation : public Representation {
  public:
-  DepthRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> params,
-                      bool compare)
-      : id_(std::move(id)), help_(std::move(help)), module_(std::move(module)), params_(std::move(params)),
+  DepthRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> params, bool compare)
+      : id_(std::move(id)),
+        help_(std::move(help)),
+        module_(std::move(module)),
+        params_(std::move(params)),
         compare_(compare) {}
   std::string id() const override { return id_; }
   std::string help() const override { return help_; }
@@ -36,12 +38,11 @@ void registerDepthRepresentations(std::vector<std::unique_ptr<Representation>>& 
   out.push_back(std::make_unique<DepthRepresentation>(
       "depth-pcf", "percentage-closer filtering over an NxN box of texels (Reeves et al. 1987)",
       "representations/depth_pcf.glsl",
-      std::vector<ParamDecl>{{"pcf.kernel", ParamType::Int, 2, 9, 3, "texels",
-                              "box filter width N: N x N depth tests are averaged"}},
+      std::vector<ParamDecl>{
+          {"pcf.kernel", ParamType::Int, 2, 9, 3, "texels", "box filter width N: N x N depth tests are averaged"}},
       false));
   out.push_back(std::make_unique<DepthRepresentation>(
-      "depth-poisson",
-      "PCF over a Poisson disk, rotated per pixel to trade banding for noise (Reeves et al. 1987)",
+      "depth-poisson", "PCF over a Poisson disk, rotated per pixel to trade banding for noise (Reeves et al. 1987)",
       "representations/depth_poisson.glsl",
       std::vector<ParamDecl>{
           {"poisson.samples", ParamType::Int, 4, 32, 16, "samples", "number of Poisson-disk depth tests"},

@@ -20,7 +20,8 @@ class UniformLayout : public Layout {
     auto corners = boxCorners(in.scene->boundsAt(in.time));
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
-    if (light.type == Light::Type::Spot) return fitPerspective(light, view, corners, corners, size, false, snap, in.jitter);
+    if (light.type == Light::Type::Spot)
+      return fitPerspective(light, view, corners, corners, size, false, snap, in.jitter);
     return fitOrthographic(view, corners, corners, size, snap, in.jitter);
   }
 };
@@ -44,7 +45,8 @@ class FocusedLayout : public Layout {
     if (receivers.empty()) receivers = casters;  // looking away from the scene: nothing to focus on
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
-    if (light.type == Light::Type::Spot) return fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter);
+    if (light.type == Light::Type::Spot)
+      return fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter);
     return fitOrthographic(view, receivers, casters, size, snap, in.jitter);
   }
 };

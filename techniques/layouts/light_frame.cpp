@@ -60,7 +60,8 @@ static Polygon orderCap(std::vector<glm::vec3> pts, const glm::vec3& n) {
   glm::vec3 c(0.0f);
   for (auto& p : pts) c += p;
   c /= static_cast<float>(pts.size());
-  glm::vec3 u = glm::normalize(std::abs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0)) : glm::cross(n, glm::vec3(0, 1, 0)));
+  glm::vec3 u =
+      glm::normalize(std::abs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0)) : glm::cross(n, glm::vec3(0, 1, 0)));
   glm::vec3 v = glm::cross(n, u);
   std::sort(pts.begin(), pts.end(), [&](const glm::vec3& a, const glm::vec3& b) {
     return std::atan2(glm::dot(a - c, v), glm::dot(a - c, u)) < std::atan2(glm::dot(b - c, v), glm::dot(b - c, u));
@@ -98,8 +99,7 @@ float quantizeTexelSize(float texel) {
 }
 
 LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
-                           const std::vector<glm::vec3>& casters, int size, bool snap,
-                           const LayoutJitter& jitter) {
+                           const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter) {
   glm::vec2 lo(1e30f), hi(-1e30f);
   float zNear = 1e30f, zFar = -1e30f;  // as positive distances along the light direction
   for (const auto& p : receivers) {
@@ -155,7 +155,11 @@ LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const 
     glm::vec2 clo(1e30f), chi(-1e30f);
     for (const auto& p : receivers) {
       glm::vec4 c = proj * lightView * glm::vec4(p, 1.0f);
-      if (c.w <= 1e-6f) { clo = glm::vec2(-1.0f); chi = glm::vec2(1.0f); break; }
+      if (c.w <= 1e-6f) {
+        clo = glm::vec2(-1.0f);
+        chi = glm::vec2(1.0f);
+        break;
+      }
       glm::vec2 ndc = glm::vec2(c) / c.w;
       clo = glm::min(clo, ndc);
       chi = glm::max(chi, ndc);
