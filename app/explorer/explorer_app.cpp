@@ -214,10 +214,12 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       continue;
     }
     const double now = glfwGetTime();
-    const float dt = std::min(float(now - lastTime), kMaxFrameSeconds);
-    if (frame > 5) frameSeconds.push_back(now - lastTime);  // skip start-up and shader builds
+    const double frameTime = now - lastTime;
     lastTime = now;
-    state.smoothedFrameMs += (dt * 1000.0f - state.smoothedFrameMs) * 0.1f;
+    const float dt = std::min(float(frameTime), kMaxFrameSeconds);
+    if (frame > 5) frameSeconds.push_back(frameTime);  // skip start-up and shader builds
+    // The display shows the real frame time; only camera motion uses the clamped step.
+    state.smoothedFrameMs += (float(frameTime) * 1000.0f - state.smoothedFrameMs) * 0.1f;
     if (now - lastShaderPoll >= kShaderPollSeconds) {
       shaders.reloadChanged();
       lastShaderPoll = now;
