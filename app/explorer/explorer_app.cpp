@@ -149,6 +149,8 @@ void prepareDefaultFramebuffer(int width, int height) {
 
 // Returns false when the frame failed (the panel shows why).
 bool renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLayout& layout) {
+  if (state.frozen && !state.stepRequested) return false;
+  state.stepRequested = false;
   FrameInput in;
   in.camera = state.camera.camera();
   in.time = state.sceneTime;

@@ -36,6 +36,10 @@ struct ExplorerState {
   std::string sceneError;      // last failed load; the previous scene stays
   double sceneTime = 0.0;
   bool paused = false;
+  // Frame stepping for teaching: while frozen no frame is rendered (the images stay), and each
+  // step renders exactly one, so a lecturer can watch accumulating techniques converge.
+  bool frozen = false;
+  bool stepRequested = false;
 
   // Camera. `cutPending` tells the renderer that history from earlier frames is invalid.
   FlyCamera camera;

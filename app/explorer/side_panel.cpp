@@ -89,6 +89,13 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
   ImGui::Checkbox("Pause time", &state.paused);
   ImGui::SameLine();
   ImGui::Text("t = %.2f s", state.sceneTime);
+  ImGui::Checkbox("Freeze frames", &state.frozen);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("render no new frame; Step renders one (watch pixel-correct converge frame by frame)");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!state.frozen);
+  if (ImGui::Button("Step")) state.stepRequested = true;
+  ImGui::EndDisabled();
 }
 
 void drawCameraPanel(ExplorerState& state) {
