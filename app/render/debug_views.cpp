@@ -54,16 +54,9 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              fbo.bind();
              p.use();
              setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-             glBindTextureUnit(0, gPosition_->id());
-             glBindTextureUnit(1, gNormal_->id());
-             glBindTextureUnit(2, gAlbedo_->id());
-             glBindTextureUnit(3, visTex->id());
+             bindGBuffer(p, visTex);
              glBindTextureUnit(4, vp.shadowMap_->id());
              glBindSampler(4, shadowSampler_);
-             p.set("u_gPosition", 0);
-             p.set("u_gNormal", 1);
-             p.set("u_gAlbedo", 2);
-             p.set("u_visibility", 3);
              p.set("u_shadowMap", 4);
              p.set("u_viewSize", glm::vec2(target->width(), target->height()));
              drawFullscreen();

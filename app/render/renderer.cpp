@@ -32,23 +32,39 @@ std::vector<std::string> Viewport::availableViews() const {
   return v;
 }
 
+// Clamped samplers for the shadow map: raw depth (nearest) or hardware comparison (linear).
+static GLuint makeShadowSampler(bool compare, const std::string& name) {
+  GLuint sampler = 0;
+  glCreateSamplers(1, &sampler);
+  const GLint filter = compare ? GL_LINEAR : GL_NEAREST;
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  if (compare) {
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  }
+  label(GL_SAMPLER, sampler, name);
+  return sampler;
+}
+
+void Renderer::bindGBuffer(const Program& p, const Texture2D* visibility) const {
+  glBindTextureUnit(0, gPosition_->id());
+  glBindTextureUnit(1, gNormal_->id());
+  glBindTextureUnit(2, gAlbedo_->id());
+  glBindTextureUnit(3, visibility->id());
+  p.set("u_gPosition", 0);
+  p.set("u_gNormal", 1);
+  p.set("u_gAlbedo", 2);
+  p.set("u_visibility", 3);
+}
+
 Renderer::Renderer(ShaderLibrary& shaders) : shaders_(shaders) {
   glCreateVertexArrays(1, &emptyVao_);
   label(GL_VERTEX_ARRAY, emptyVao_, "fullscreen triangle");
-  glCreateSamplers(1, &shadowSampler_);
-  glSamplerParameteri(shadowSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(shadowSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glSamplerParameteri(shadowSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(shadowSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  label(GL_SAMPLER, shadowSampler_, "shadow map: raw depth");
-  glCreateSamplers(1, &compareSampler_);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(compareSampler_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  label(GL_SAMPLER, compareSampler_, "shadow map: hardware compare");
+  shadowSampler_ = makeShadowSampler(false, "shadow map: raw depth");
+  compareSampler_ = makeShadowSampler(true, "shadow map: hardware compare");
   glCreateBuffers(1, &linesVbo_);
   glNamedBufferData(linesVbo_, 4096 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
   glCreateVertexArrays(1, &linesVao_);
@@ -412,14 +428,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
            vp.colorFbo_.bind();
            p.use();
            setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-           glBindTextureUnit(0, gPosition_->id());
-           glBindTextureUnit(1, gNormal_->id());
-           glBindTextureUnit(2, gAlbedo_->id());
-           glBindTextureUnit(3, visTex->id());
-           p.set("u_gPosition", 0);
-           p.set("u_gNormal", 1);
-           p.set("u_gAlbedo", 2);
-           p.set("u_visibility", 3);
+           bindGBuffer(p, visTex);
            drawFullscreen();
          }});
   g.requestSink("color" + tag);

@@ -126,6 +126,8 @@ class Renderer {
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
   std::string techniquePrelude(const Technique& t, const LightSpace& ls) const;
   void drawFullscreen();
+  // Units 0-3: position, normal, albedo, a visibility (u_gPosition, u_gNormal, u_gAlbedo, u_visibility).
+  void bindGBuffer(const Program& p, const Texture2D* visibility) const;
   void drawSky();
   void drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup, double time);
 
