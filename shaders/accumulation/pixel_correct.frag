@@ -4,16 +4,15 @@
 // multiple render targets.
 //   f(n) = this frame's shadow test, conf (eq. 5), w = conf^m (eq. 6)
 //   s(n) = a f(n) + (1 - a) s(n-1)       (eq. 2/3), s(n) = f(n) where there is no history
-//   a    = w (the paper), or with pc.warmup a = w / max(W + w, 1), W = accumulated weight
-//          (min(sum of w, 1)): a confidence-weighted mean until the pixel has gathered a total
-//          weight of 1, exactly the paper's update from then on.
+//   a    = w (the paper), or with pc.warmup a = w / (W + w), W = accumulated weight
+//          (min(sum of w, 1), shrunk when the history was interpolated between texels): a
+//          confidence-weighted mean whose memory is capped and fades under reprojection blur.
 // Needs the technique prelude (layout + representation modules).
 #include "common/surface.glsl"
 #include "common/visibility_term.glsl"
 #include "common/shading.glsl"
 #include "accumulation/pixel_correct.glsl"
 
-uniform float u_pc_warmup;
 uniform float u_m;
 
 layout(location = 0) out vec4 o_color;
@@ -34,7 +33,7 @@ void main() {
   float s = f;
   float a = 1.0, W = w;
   if (h.state == PC_VALID) {
-    a = u_pc_warmup > 0.5 ? w / max(h.W + w, 1.0) : w;
+    a = u_pc_warmup > 0.5 ? (h.W + w > 0.0 ? w / (h.W + w) : 1.0) : w;
     s = clamp(a * f + (1.0 - a) * h.s, 0.0, 1.0);
     W = min(h.W + w, 1.0);
   }

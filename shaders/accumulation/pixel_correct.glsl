@@ -11,6 +11,7 @@ uniform float u_hasHistory;     // 0 after a cut / on the first frame
 uniform mat4 u_view;            // current camera view
 uniform mat4 u_invPrevProj;     // inverse of the previous frame's projection
 uniform float u_pc_disocclusion;
+uniform float u_pc_warmup;
 uniform float u_pc_reject;
 uniform float u_pc_reject_confidence;
 
@@ -78,7 +79,12 @@ PcHistory pcLookupFrom(vec4 m, float expected) {
   h.state = PC_DISOCCLUDED;
   if (!(tap.y > 0.0) || abs(tap.y - expected) > u_pc_disocclusion * expected) return h;
   h.s = clamp(tap.x, 0.0, 1.0);
-  h.W = clamp(tap.z, 0.0, 1.0);
+  // A history value interpolated between texels is a weaker estimate for this exact point than
+  // one read on a texel centre: its accumulated weight shrinks by the bilinear weights' sum of
+  // squares (1 on a centre, 1/16 halfway in both axes), so a moving camera lets fresh tests in.
+  vec2 fr = fract((m.xy * 0.5 + 0.5) * vec2(textureSize(u_history, 0)) - 0.5);
+  vec2 sq = (1.0 - fr) * (1.0 - fr) + fr * fr;
+  h.W = clamp(tap.z, 0.0, 1.0) * (u_pc_warmup > 0.5 ? sq.x * sq.y : 1.0);
   h.state = PC_VALID;
   return h;
 }

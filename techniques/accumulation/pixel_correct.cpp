@@ -244,8 +244,8 @@ class PixelCorrectAccumulation : public Accumulation {
          1,
          1,
          "",
-         "beyond the paper: update weight w / max(W + w, 1) with W the pixel's accumulated weight, so a fresh "
-         "history converges as a confidence-weighted mean; off = eq. 2 with w = conf^m from the first frame",
+         "beyond the paper: update weight w / (W + w) with W the pixel's accumulated weight (capped at 1, and "
+         "shrunk when the history is interpolated between texels), a confidence-weighted mean; off = eq. 2",
          {}},
         {"pc.jitter",
          ParamType::Bool,
