@@ -12,9 +12,10 @@ namespace sl {
 
 static void printParams(const std::vector<ParamDecl>& decls) {
   for (const auto& d : decls) {
-    std::cout << "    " << std::left << std::setw(20) << d.key << std::setw(6) << paramTypeName(d.type) << std::setw(24)
-              << describeRange(d) << " default " << std::setw(9) << formatValue(d, d.defaultValue) << " " << d.help
-              << (d.unit.empty() ? "" : " [" + d.unit + "]") << "\n";
+    // Columns are padded but never run together: a long key or range just pushes the rest right.
+    std::cout << "    " << std::left << std::setw(22) << d.key << " " << std::setw(5) << paramTypeName(d.type) << " "
+              << std::setw(24) << describeRange(d) << " default " << std::setw(9) << formatValue(d, d.defaultValue)
+              << " " << d.help << (d.unit.empty() ? "" : " [" + d.unit + "]") << "\n";
   }
 }
 
@@ -41,8 +42,15 @@ int runListCommand(int, char**) {
   for (const auto& a : allAccumulations()) {
     std::cout << "  " << std::setw(16) << a->id() << " " << a->help() << "\n";
     printParams(a->params());
+    auto views = a->createState()->views();
+    if (!views.empty()) {
+      std::cout << "    debug views:";
+      for (const auto& v : views) std::cout << " " << v;
+      std::cout << "\n";
+    }
   }
-  std::cout << "\ndebug views (--view NAME):";
+  std::cout << "\ndebug views of every technique (--view NAME; accumulations add theirs, above; the explorer adds "
+               "`error`):";
   for (const auto& v : commonViewNames()) std::cout << " " << v;
   std::cout << "\n\nscenes (--scene ID or a path to .json/.gltf/.glb):\n";
   try {
