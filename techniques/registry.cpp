@@ -3,6 +3,7 @@
 
 #include "depth/depth_representations.h"
 #include "layouts/layouts.h"
+#include "layouts/lispsm.h"
 
 namespace sl {
 
@@ -44,6 +45,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
   static const auto list = [] {
     std::vector<std::unique_ptr<Layout>> v;
     registerBasicLayouts(v);
+    registerWarpedLayouts(v);
     return v;
   }();
   return list;
@@ -77,6 +79,18 @@ const std::vector<Preset>& allPresets() {
       {"pixel-correct",
        "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
        "focused",
+       "depth-nearest",
+       "pixel-correct",
+       {}},
+      {"lispsm",
+       "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
+       "lispsm",
+       "depth-nearest",
+       "none",
+       {}},
+      {"pixel-correct-lispsm",
+       "pixel-correct over a LiSPSM layout, as the paper pairs them",
+       "lispsm",
        "depth-nearest",
        "pixel-correct",
        {}},

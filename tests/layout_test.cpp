@@ -49,6 +49,45 @@ TEST(Layout, FocusedCoversEveryVisibleReceiverAndTheCastersTowardTheLight) {
   }
 }
 
+TEST(Layout, LispsmCoversEveryVisibleReceiverAndTheirCasters) {
+  for (const std::string id : {"basic", "columns", "dueling-frusta", "terrain", "thin-casters"}) {
+    Scene scene = loadScene(id, defaultAssetsDir());
+    for (const Camera& cam : scene.cameras) {
+      LightSpace ls = computeFor("lispsm", scene, cam);
+      Bounds b = scene.boundsAt(0);
+      auto receivers = clipFrustumToBox(cameraView(cam), cameraProjection(cam, 16.0f / 9.0f), b);
+      for (const auto& p : receivers) {
+        glm::vec4 c = ls.viewProj * glm::vec4(p, 1.0f);
+        ASSERT_GT(c.w, 0.0f) << id << "/" << cam.name;
+        EXPECT_LE(std::abs(c.x / c.w), 1.0001f) << id << "/" << cam.name;
+        EXPECT_LE(std::abs(c.y / c.w), 1.0001f) << id << "/" << cam.name;
+        EXPECT_LE(std::abs(c.z / c.w), 1.0001f) << id << "/" << cam.name;  // not clipped
+        EXPECT_GE(depth01(ls, p), 0.0f);
+        EXPECT_LE(depth01(ls, p), 1.0f);
+      }
+      for (const auto& p : boxCorners(b)) EXPECT_GE(depth01(ls, p), 0.0f) << id << "/" << cam.name;
+    }
+  }
+}
+
+// The point of the warp: near the viewer a texel covers less ground than with focusing alone.
+TEST(Layout, LispsmPutsMoreTexelsNearTheViewer) {
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  const Camera& cam = scene.cameras.front();
+  LightSpace focused = computeFor("standard", scene, cam), warped = computeFor("lispsm", scene, cam);
+  // A ground point just in front of the camera, and one texel-sized step on the ground there.
+  glm::vec3 viewDir = glm::normalize(cam.target - cam.position);
+  glm::vec3 p = cam.position + glm::normalize(glm::vec3(viewDir.x, 0.0f, viewDir.z)) * 3.0f;
+  p.y = 0.0f;
+  auto texelsPerMetre = [&](const LightSpace& ls) {
+    glm::vec4 a = ls.viewProj * glm::vec4(p, 1.0f), c = ls.viewProj * glm::vec4(p + glm::vec3(0.0f, 0.0f, 0.1f), 1.0f);
+    glm::vec4 d = ls.viewProj * glm::vec4(p + glm::vec3(0.1f, 0.0f, 0.0f), 1.0f);
+    glm::vec2 pa = glm::vec2(a) / a.w;
+    return 0.5f * ls.size / 0.1f * std::max(glm::length(glm::vec2(c) / c.w - pa), glm::length(glm::vec2(d) / d.w - pa));
+  };
+  EXPECT_GT(texelsPerMetre(warped), 3.0f * texelsPerMetre(focused));
+}
+
 TEST(Layout, FocusedIsSmallerThanUniformOnALargeScene) {
   Scene scene = loadScene("terrain", defaultAssetsDir());
   Camera cam = scene.cameras.front();

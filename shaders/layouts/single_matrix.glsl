@@ -29,9 +29,17 @@ vec4 layoutProject(vec3 worldPos) {
 }
 
 // World size of one texel at this point: what normal offset and slope bias are scaled by.
+// Perspective and warped maps (SL_PERSPECTIVE_MAP) measure it from the projection itself, one
+// step along each light-plane axis, so every such layout gets it right without its own formula.
 float layoutTexelWorldSize(vec3 worldPos) {
 #ifdef SL_PERSPECTIVE_MAP
-  return u_lightTexelWorld * max(-(u_lightView * vec4(worldPos, 1.0)).z, 1e-4);
+  vec3 ax = vec3(u_lightView[0][0], u_lightView[1][0], u_lightView[2][0]);
+  vec3 ay = vec3(u_lightView[0][1], u_lightView[1][1], u_lightView[2][1]);
+  float h = 1e-3 * (u_lightFar - u_lightNear);
+  vec4 c0 = layoutClip(worldPos), cx = layoutClip(worldPos + ax * h), cy = layoutClip(worldPos + ay * h);
+  vec2 p0 = c0.xy / c0.w;
+  float texelsPerUnit = 0.5 * u_shadowMapSize / h * min(length(cx.xy / cx.w - p0), length(cy.xy / cy.w - p0));
+  return 1.0 / max(texelsPerUnit, 1e-6);
 #else
   return u_lightTexelWorld;
 #endif
