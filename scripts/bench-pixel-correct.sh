@@ -16,6 +16,9 @@ for scene in basic columns; do
     bench --scene "$scene" --techniques standard,pixel-correct --set shadowmap.size=512 \
       --sweep pc.warmup=off,on --sweep pc.adaptive=off,on --sweep pc.m=3,15 --approach "$approach" \
       --size 320x180 --frames 60 --json "$out/$scene-$history.json" --report "$out/$scene-$history"
+    # Over a LiSPSM layout, as the paper pairs them for large scenes (defaults: adaptive m).
+    bench --scene "$scene" --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 --approach "$approach" \
+      --size 320x180 --frames 60 --json "$out/$scene-$history-lispsm.json"
   done
   # What standard reaches with 64 times the texels.
   bench --scene "$scene" --techniques standard --set shadowmap.size=4096 --size 320x180 --frames 3 \
@@ -26,6 +29,8 @@ done
 # minus the reference's).
 bench --scene basic --techniques standard,pixel-correct --set shadowmap.size=512 --sweep layout.snap=off,on \
   --size 320x180 --path drift --frames 60 --json "$out/basic-drift-flicker.json"
+bench --scene basic --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 \
+  --size 320x180 --path drift --frames 60 --json "$out/basic-drift-flicker-lispsm.json"
 
 # Cost: frame time of both in the same run, at the paper's shadow-map size and a window size.
 bench --scene basic --techniques standard,pixel-correct --set shadowmap.size=1024 --size 1280x720 --frames 30 \
