@@ -373,7 +373,7 @@ TEST(PixelCorrect, HotReloadOfTheUpdateShader) {
 
   // Fixed: rebuilt, and a visible change (w forced to 1: s = f) takes effect.
   rewriteFile(file, "float s = f +* ;", "float s = f;");
-  rewriteFile(file, "o_visibility = vec2(s, a);", "o_visibility = vec2(f, a);");
+  rewriteFile(file, "o_history = vec4(s,", "o_history = vec4(f,");
   EXPECT_GE(h.shaders.reloadChanged(), 1);
   EXPECT_TRUE(h.shaders.errors().empty());
   h.renderer.render(in, {&pc});

@@ -410,7 +410,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   };
   ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
+  ctx.keepRawVisibility = keepGBuffer;
   vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
+  vp.shownVisibility_ = ctx.shownVisibilityTex ? ctx.shownVisibilityTex : vp.finalVisibility_.get();
   if (ctx.wroteColor) {
     g.requestSink("color" + tag);
     g.requestSink(fin);
@@ -418,7 +420,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     return;
   }
   const std::string visibility = vp.accumulated_ ? fin : raw;
-  const Texture2D* visTex = vp.accumulated_ ? vp.finalVisibility_.get() : vp.rawVisibility_.get();
+  const Texture2D* visTex = vp.visibilityTexture();
 
   g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
            ProgramSpec spec{

@@ -59,6 +59,11 @@ struct AccumulationContext {
   std::function<void(const ProgramSpec&, const std::function<void(const Program&)>&)> drawScene;
   std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
+  // The raw test must be written even when no view of this frame reads it (readback, tests).
+  bool keepRawVisibility = true;
+  // An accumulation may show a texture of its own (R = visibility) instead of writing
+  // finalVisibilityTex: one render target less per pixel on a software rasterizer.
+  const Texture2D* shownVisibilityTex = nullptr;
   bool wroteColor = false;                   // set by the accumulation when its pass shaded the frame
 };
 
@@ -73,7 +78,7 @@ class Viewport {
   // Outputs of the last frame (owned by the renderer's per-viewport targets).
   const Texture2D* colorTexture() const { return color_.get(); }
   // The visibility the shade pass used (after accumulation, if any): R = visibility.
-  const Texture2D* visibilityTexture() const { return accumulated_ ? finalVisibility_.get() : rawVisibility_.get(); }
+  const Texture2D* visibilityTexture() const { return accumulated_ ? shownVisibility_ : rawVisibility_.get(); }
   const Texture2D* rawVisibilityTexture() const { return rawVisibility_.get(); }
   const Texture2D* viewTexture(const std::string& name) const;
   std::vector<std::string> availableViews() const;
@@ -86,6 +91,7 @@ class Viewport {
   Framebuffer shadowFbo_, visibilityFbo_, colorFbo_, forwardFbo_;
   int targetsW_ = 0, targetsH_ = 0, shadowSize_ = 0;
   bool accumulated_ = false;
+  const Texture2D* shownVisibility_ = nullptr;  // finalVisibility_ or the accumulation's own texture
 };
 
 struct FrameInput {

@@ -16,9 +16,10 @@
 uniform float u_m;
 
 layout(location = 0) out vec4 o_color;
-layout(location = 1) out vec2 o_visibility;  // r: s(n) shown, g: update weight a (1 = no history)
-layout(location = 2) out vec4 o_history;     // r: s(n), g: linear view depth (0 = none), b: W
-layout(location = 3) out vec2 o_raw;         // this frame's test and confidence, for the views
+layout(location = 1) out vec4 o_history;  // r: s(n) (also what is shown), g: linear view depth (0 = none), b: W
+#ifdef PC_WRITE_RAW
+layout(location = 2) out vec2 o_raw;  // this frame's test and confidence, for the views and readback
+#endif
 
 void main() {
   materialAlphaTest(v_uv);
@@ -39,8 +40,9 @@ void main() {
   }
   if (!pcFinite(s)) s = h.state == PC_VALID ? h.s : 1.0;
   float depth = pcLinearDepth(P);
+#ifdef PC_WRITE_RAW
   o_raw = raw;
-  o_visibility = vec2(s, a);
+#endif
   o_history = vec4(s, pcFinite(depth) && depth > 0.0 ? depth : 0.0, W, 0.0);
   o_color = shadeSurface(materialColor(v_uv).rgb, P, N, s);
 }

@@ -67,7 +67,7 @@ void PixelCorrectState::ensureHistory(int w, int h, GLenum format) {
     history_[i]->setFilter(GL_LINEAR, GL_LINEAR);  // the paper's bilinear history lookup
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(history_[i]->id(), 0, GL_RGBA, GL_FLOAT, zero);
-    fboFinal_[i] = nullptr;
+    fboRaw_[i] = nullptr;
     fboColor_[i] = nullptr;
   }
   hasHistory_ = false;
@@ -127,17 +127,26 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   graph.importResource(prevRes);
   const AccumulationContext c = ctx;  // passes run after this returns: keep a copy
   Texture2D* prevTex = history_[read].get();
-  if (fboFinal_[write] != ctx.finalVisibilityTex || fboColor_[write] != ctx.colorTex) {
+  // The raw test is a render target of its own: written only when a view or a readback wants it.
+  static const char* kViews[] = {"confidence", "history", "disocclusion"};
+  bool writeRaw = ctx.keepRawVisibility;
+  for (const char* name : kViews) writeRaw = writeRaw || (ctx.viewTargets.count(name) && ctx.viewTargets.at(name));
+  Texture2D* rawTarget = writeRaw ? ctx.rawVisibilityTarget : nullptr;
+  if (fboRaw_[write] != rawTarget || fboColor_[write] != ctx.colorTex || !fbo_[write].id()) {
     fbo_[write] = Framebuffer("pixel-correct update");
-    fbo_[write].attach({ctx.colorTex, ctx.finalVisibilityTex, history_[write].get(), ctx.rawVisibilityTarget},
-                       ctx.depthTex);
-    fboFinal_[write] = ctx.finalVisibilityTex;
+    std::vector<const Texture2D*> targets = {ctx.colorTex, history_[write].get()};
+    if (rawTarget) targets.push_back(rawTarget);
+    fbo_[write].attach(targets, ctx.depthTex);
+    fboRaw_[write] = rawTarget;
     fboColor_[write] = ctx.colorTex;
   }
   Framebuffer* fbo = &fbo_[write];
+  // The shown visibility is the history's R channel (s(n)): no separate target to write.
+  ctx.shownVisibilityTex = history_[write].get();
   // Switches that change the shader's work are defines, not uniform branches (llvmpipe pays for
   // both sides of a branch).
   std::string prelude = ctx.techniquePrelude;
+  if (writeRaw) prelude += "#define PC_WRITE_RAW\n";
   if (params.choice("pc.history_filter") == "catmull-rom") prelude += "#define PC_CATMULL_ROM\n";
   if (params.b("pc.reject_neighbours")) prelude += "#define PC_REJECT_NEIGHBOURS\n";
 
@@ -145,19 +154,19 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   // render targets; the previous-frame position comes from the vertex shader.
   graph.add({"pixel-correct" + tag,
              {ctx.shadowMap, prevRes},
-             {ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility},
-             [c, prevTex, fbo, hasHistory, m, prelude] {
+             writeRaw ? std::vector<std::string>{ctx.color, ctx.finalVisibility, nextRes, ctx.rawVisibility}
+                      : std::vector<std::string>{ctx.color, ctx.finalVisibility, nextRes},
+             [c, prevTex, fbo, hasHistory, m, prelude, writeRaw] {
                ProgramSpec spec{
                    "pixel-correct",
                    {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "accumulation/pixel_correct.frag"}},
                    prelude};
                fbo->bind();
                glViewport(0, 0, c.width, c.height);
-               // Background: lit, no history (depth 0), raw test lit with no confidence.
-               const float visibility[4] = {1, 1, 0, 0}, history[4] = {0, 0, 0, 0}, raw[4] = {1, 0, 0, 0};
-               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 1, visibility);
-               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 2, history);
-               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 3, raw);
+               // Background: lit (s = 1) with no history (depth 0); raw test lit with no confidence.
+               const float history[4] = {1, 0, 0, 0}, raw[4] = {1, 0, 0, 0};
+               glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 1, history);
+               if (writeRaw) glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 2, raw);
                glClearNamedFramebufferfi(fbo->id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                c.drawScene(spec, [&](const Program& p) {
                  bindInputs(c, p, prevTex, false);
@@ -168,7 +177,6 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
              }});
   ctx.wroteColor = true;
 
-  static const char* kViews[] = {"confidence", "history", "disocclusion"};
   for (const char* name : kViews) {
     auto it = ctx.viewTargets.find(name);
     if (it == ctx.viewTargets.end() || !it->second) continue;

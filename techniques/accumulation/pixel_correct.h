@@ -39,8 +39,8 @@ class PixelCorrectState : public AccumulationState {
  private:
   void ensureHistory(int w, int h, GLenum format);
   std::array<std::unique_ptr<Texture2D>, 2> history_;  // r = s, g = linear view depth (0 = none), b = W
-  std::array<Framebuffer, 2> fbo_;                     // colour, final visibility, history[i], raw
-  const Texture2D* fboFinal_[2] = {nullptr, nullptr};
+  std::array<Framebuffer, 2> fbo_;                     // colour, history[i] (= shown), raw if wanted
+  const Texture2D* fboRaw_[2] = {nullptr, nullptr};
   const Texture2D* fboColor_[2] = {nullptr, nullptr};
   int current_ = 0;  // history_[current_] holds the latest frame
   bool hasHistory_ = false;
