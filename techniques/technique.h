@@ -78,7 +78,8 @@ class Representation {
 class AccumulationState {
  public:
   virtual ~AccumulationState() = default;
-  virtual LayoutJitter jitter(const ParamSet& params) const { return {}; }
+  // cameraMoved: the camera differs from the previous frame's.
+  virtual LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const { return {}; }
   virtual void reset() {}  // camera cut: forget everything from earlier frames
   // Adds passes that read ctx.rawVisibility and write ctx.finalVisibility; returns false when
   // the accumulation does nothing, in which case the raw visibility is used directly.

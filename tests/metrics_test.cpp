@@ -97,6 +97,24 @@ TEST(Metrics, MeanTemporalChange) {
   EXPECT_THROW(meanTemporalChange({{1, 0}, {1}}, nullptr), std::invalid_argument);
 }
 
+TEST(Metrics, FlickerExcessCountsExtraChangesNotLag) {
+  // Truth: pixel 0 flips once (frame 1), pixel 1 steady, pixel 2 flips once (frame 2).
+  const std::vector<std::vector<float>> truth = {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {1, 1, 1}};
+  const auto ref = temporalChangeMap(truth, nullptr);
+  EXPECT_NEAR(ref[0], 1.0 / 3.0, 1e-6);
+  EXPECT_NEAR(ref[1], 0.0, 1e-6);
+  // Late (pixel 0 flips a frame later) and blurred (pixel 2 in two half steps): no flicker.
+  const std::vector<std::vector<float>> lagging = {{0, 1, 0}, {0, 1, 0}, {1, 1, 0.5f}, {1, 1, 1}};
+  EXPECT_NEAR(flickerExcess(temporalChangeMap(lagging, nullptr), ref, nullptr), 0.0, 1e-9);
+  // Pixel 1 goes dark and back (2 changes the truth does not have), the rest as the truth:
+  // 2/3 per frame pair on one of three pixels. The lag elsewhere does not cancel it.
+  const std::vector<std::vector<float>> flickering = {{0, 1, 0}, {0, 0, 0}, {1, 1, 0.5f}, {1, 1, 1}};
+  EXPECT_NEAR(flickerExcess(temporalChangeMap(flickering, nullptr), ref, nullptr), (2.0 / 3.0) / 3.0, 1e-6);
+  const std::vector<uint8_t> valid = {1, 0, 1};  // the flickering pixel excluded
+  EXPECT_NEAR(flickerExcess(temporalChangeMap(flickering, nullptr), ref, valid.data()), 0.0, 1e-9);
+  EXPECT_THROW(flickerExcess({0.0f}, {0.0f, 1.0f}, nullptr), std::invalid_argument);
+}
+
 TEST(Metrics, ErrorImageColours) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<float> ref = {1, 1, 0, 1, 1};

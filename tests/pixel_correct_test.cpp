@@ -98,6 +98,13 @@ TEST(PixelCorrect, RegisteredWithItsParametersPresetsAndViews) {
     LayoutJitter k = pixelCorrectJitter(t.params, i + 1);
     EXPECT_NE(j.offsetTexels, k.offsetTexels);
   }
+  // pc.jitter_moving off: the layout's own rasterization while the camera moves, jitter at rest.
+  PixelCorrectState state;
+  EXPECT_NE(state.jitter(t.params, true).offsetTexels, glm::vec2(0.0f));  // default: the paper
+  t.params.set("pc.jitter_moving", 0);
+  EXPECT_EQ(state.jitter(t.params, true).offsetTexels, glm::vec2(0.0f));
+  EXPECT_EQ(state.jitter(t.params, true).rotationRad, 0.0f);
+  EXPECT_NE(state.jitter(t.params, false).offsetTexels, glm::vec2(0.0f));
   t.params.set("pc.jitter", 0);
   t.params.set("pc.rotate", 0);
   EXPECT_EQ(pixelCorrectJitter(t.params, 5).offsetTexels, glm::vec2(0.0f));

@@ -62,6 +62,7 @@ struct BenchEntry {
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;
   long long nonfinite = 0;            // NaN/Inf visibility pixels in the last frame
   std::vector<float> lastVisibility;  // for the report's images
+  std::vector<float> changeMap;       // per pixel mean |frame-to-frame change| along a path (report)
 };
 
 struct BenchResult {
@@ -72,6 +73,8 @@ struct BenchResult {
   int referencesTraced = 0, referencesCached = 0;
   double referenceTraceMs = 0;  // total, over the references traced in this run
   double referenceFlicker = 0;
+  std::vector<float> referenceChangeMap;  // per pixel, along a path
+  std::vector<uint8_t> pathValid;         // pixels covered in every frame of the path (flicker is over these)
   ReferenceImage lastReference;  // reference of the last frame (the one `error` compares with)
   std::vector<BenchEntry> entries;
   std::vector<std::string> shaderErrors;  // any: the affected entries measured a broken shader

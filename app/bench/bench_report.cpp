@@ -16,6 +16,10 @@ namespace sl {
 
 namespace {
 
+// Excess mean change per frame shown white in the flicker map: an edge pixel the truth flips
+// once in a path of 60 frames changes by ~0.017 per frame.
+constexpr float kFlickerFullScale = 0.1f;
+
 // Okabe-Ito palette: distinguishable with the common colour-vision deficiencies.
 const char* kColors[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"};
 const char* kDashes[] = {"", "6 4", "2 3", "10 3 2 3"};
@@ -331,6 +335,9 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
     writePng(dir + "/" + base + "-visibility.png", w, h, visibilityToRgba(e.lastVisibility));
     writePng(dir + "/" + base + "-error.png", w, h,
              errorImage(e.lastVisibility.data(), ref.visibility.data(), ref.valid.data(), e.lastVisibility.size()));
+    if (!e.changeMap.empty() && e.changeMap.size() == r.referenceChangeMap.size())
+      writePng(dir + "/" + base + "-flicker.png", w, h,
+               flickerImage(e.changeMap, r.referenceChangeMap, r.pathValid.data(), kFlickerFullScale));
   }
   auto styles = entryStyles(r);
   const bool path = !r.options.path.empty();
@@ -390,7 +397,12 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
        "and the <b>error view</b>: grey = agrees (reference at half brightness),<span class='swatch' "
        "style='background:#e67800'></span>orange = false shadow,<span class='swatch' style='background:#2878ff'>"
        "</span>blue = false light (light leak),<span class='swatch' style='background:#f0f'></span>magenta = "
-       "NaN/Inf, black = background.</p>\n";
+       "NaN/Inf, black = background."
+    << (path ? " <b>Flicker map</b> (along the path): per pixel, the technique's mean frame-to-frame change minus "
+               "the reference's; grey = as steady as the truth, yellow to white = flickers more (white at " +
+                   fixed(kFlickerFullScale, 2) + " per frame), blue = steadier (edges that lag or blur)."
+             : std::string())
+    << "</p>\n";
   for (size_t i = 0; i < r.entries.size(); ++i) {
     const auto& e = r.entries[i];
     s << "<h3 id='e" << i + 1 << "'>" << esc(e.label) << " — " << fixed(e.error.wrongPixelPct, 2) << " % wrong, "
@@ -398,7 +410,11 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
       << "-visibility.png' alt='technique'><figcaption>" << esc(e.technique)
       << "</figcaption></figure><figure><img src='reference.png' alt='reference'><figcaption>reference (ray "
          "traced)</figcaption></figure><figure><img src='"
-      << names[i] << "-error.png' alt='error view'><figcaption>error view</figcaption></figure></div>\n";
+      << names[i] << "-error.png' alt='error view'><figcaption>error view</figcaption></figure>";
+    if (!e.changeMap.empty())
+      s << "<figure><img src='" << names[i] << "-flicker.png' alt='flicker map'><figcaption>flicker map</figcaption>"
+        << "</figure>";
+    s << "</div>\n";
   }
   s << kSortScript << "\n</body></html>\n";
   std::ofstream f(dir + "/index.html");

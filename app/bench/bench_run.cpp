@@ -225,6 +225,8 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     std::vector<std::vector<float>> refFrames;
     for (const auto& ref : refs) refFrames.push_back(ref.visibility);
     r.referenceFlicker = meanTemporalChange(refFrames, commonValid.data());
+    r.referenceChangeMap = temporalChangeMap(refFrames, commonValid.data());
+    r.pathValid = commonValid;
   }
   r.lastReference = refs.back();
 
@@ -260,9 +262,17 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
       renderer.render(in, {&viewport});
     }
     viewport.setTechnique(p.technique);
-    // Coherent camera motion into the measured view (filled history), not timed.
+    // Coherent camera motion into the measured view (filled history), not timed: along the path
+    // itself when there is one, else a rotation about the target.
     for (int a = 0; a < o.approach; ++a) {
       FrameInput in = inputs.front();
+      in.cut = a == 0;
+      if (path) {
+        in.time = o.time - (o.approach - a) / 30.0;
+        in.camera = path->sample(static_cast<float>(in.time), camera);
+        renderer.render(in, {&viewport});
+        continue;
+      }
       const float angle =
           glm::radians(o.approachDeg) * static_cast<float>(o.approach - a) / static_cast<float>(o.approach);
       const glm::vec3 offset = in.camera.position - in.camera.target;
@@ -305,8 +315,9 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     if (!still) {
       out.hasFlicker = true;
       out.flickerTechnique = meanTemporalChange(frames, commonValid.data());
+      out.changeMap = temporalChangeMap(frames, commonValid.data());
       out.flickerReference = r.referenceFlicker;
-      out.flicker = out.flickerTechnique - r.referenceFlicker;
+      out.flicker = flickerExcess(out.changeMap, r.referenceChangeMap, commonValid.data());
     }
     r.timer = out.timer;
     log << "bench: [" << e + 1 << "/" << plan.size() << "] " << out.label << ": " << out.msMedian

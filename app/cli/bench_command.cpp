@@ -20,8 +20,9 @@ static const char* kBenchUsage =
     "  camera stands still and `convergence` is the error per frame against one reference;\n"
     "  with --path the camera moves at 30 fps and `flicker` compares temporal change with the\n"
     "  reference traced per frame. References are cached (see `shadowlab reference`).\n"
-    "  --approach N renders N frames of camera rotation into the view before the measured frames,\n"
-    "  so accumulating techniques start with a filled history (default 0: empty history).\n";
+    "  --approach N renders N frames of coherent motion before the measured frames, so accumulating\n"
+    "  techniques start with a filled history (default 0: empty history): with --camera a rotation\n"
+    "  into the view, with --path the N path frames before --time (the path clamps at its start).\n";
 
 int runBenchCommand(int argc, char** argv) {
   try {

@@ -89,6 +89,63 @@ double meanTemporalChange(const std::vector<std::vector<float>>& frames, const u
   return samples > 0 ? sum / static_cast<double>(samples) : 0.0;
 }
 
+std::vector<float> temporalChangeMap(const std::vector<std::vector<float>>& frames, const uint8_t* valid) {
+  const size_t count = frames.empty() ? 0 : frames.front().size();
+  std::vector<float> map(count, 0.0f);
+  std::vector<int> samples(count, 0);
+  for (size_t f = 1; f < frames.size(); ++f) {
+    if (frames[f].size() != count || frames[f - 1].size() != count)
+      throw std::invalid_argument("temporalChangeMap: all frames must have the same pixel count");
+    for (size_t i = 0; i < count; ++i) {
+      const float a = frames[f - 1][i], b = frames[f][i];
+      if (!isValid(valid, i) || !std::isfinite(a) || !std::isfinite(b)) continue;
+      map[i] += std::abs(b - a);
+      ++samples[i];
+    }
+  }
+  for (size_t i = 0; i < count; ++i) map[i] = samples[i] > 0 ? map[i] / static_cast<float>(samples[i]) : 0.0f;
+  return map;
+}
+
+double flickerExcess(const std::vector<float>& techniqueMap, const std::vector<float>& referenceMap,
+                     const uint8_t* valid) {
+  if (techniqueMap.size() != referenceMap.size())
+    throw std::invalid_argument("flickerExcess: technique and reference maps differ in size");
+  double sum = 0.0;
+  long long pixels = 0;
+  for (size_t i = 0; i < techniqueMap.size(); ++i) {
+    if (!isValid(valid, i)) continue;
+    sum += std::max(0.0, static_cast<double>(techniqueMap[i]) - referenceMap[i]);
+    ++pixels;
+  }
+  return pixels > 0 ? sum / static_cast<double>(pixels) : 0.0;
+}
+
+std::vector<uint8_t> flickerImage(const std::vector<float>& technique, const std::vector<float>& reference,
+                                  const uint8_t* valid, float fullScale) {
+  if (technique.size() != reference.size())
+    throw std::invalid_argument("flickerImage: technique and reference maps differ in size");
+  if (!(fullScale > 0.0f)) throw std::invalid_argument("flickerImage: fullScale must be positive");
+  std::vector<uint8_t> rgba(technique.size() * 4, 0);
+  for (size_t i = 0; i < technique.size(); ++i) {
+    rgba[4 * i + 3] = 255;
+    if (!isValid(valid, i)) continue;
+    const float excess = (technique[i] - reference[i]) / fullScale;
+    auto byte = [](float x) { return static_cast<uint8_t>(std::lround(255.0f * std::clamp(x, 0.0f, 1.0f))); };
+    if (excess > 0.0f) {  // grey -> yellow -> white as the excess grows
+      rgba[4 * i + 0] = byte(0.35f + 0.65f * std::min(1.0f, 2.0f * excess));
+      rgba[4 * i + 1] = byte(0.35f + 0.65f * std::min(1.0f, 2.0f * excess) * 0.85f + 0.15f * excess);
+      rgba[4 * i + 2] = byte(0.35f * (1.0f - std::min(1.0f, 2.0f * excess)) + std::max(0.0f, 2.0f * excess - 1.0f));
+    } else {  // grey -> blue where steadier than the truth (lagging or blurred edges)
+      const float t = std::min(1.0f, -excess);
+      rgba[4 * i + 0] = byte(0.35f * (1.0f - t));
+      rgba[4 * i + 1] = byte(0.35f * (1.0f - t) + 0.45f * t);
+      rgba[4 * i + 2] = byte(0.35f + 0.65f * t);
+    }
+  }
+  return rgba;
+}
+
 std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid, size_t count) {
   std::vector<uint8_t> rgba(count * 4, 0);
   if (count == 0) return rgba;

@@ -24,6 +24,23 @@ ErrorMetrics compareVisibility(const float* technique, const float* reference, c
 // Mean absolute frame-to-frame change of visibility over valid pixels, across a sequence.
 double meanTemporalChange(const std::vector<std::vector<float>>& frames, const uint8_t* valid);
 
+// Per pixel: mean absolute frame-to-frame change (0 where invalid or never finite twice in a row).
+std::vector<float> temporalChangeMap(const std::vector<std::vector<float>>& frames, const uint8_t* valid);
+
+// Flicker: per pixel, how much more the technique's value changed along the sequence than the
+// truth's (clipped at 0), averaged over valid pixels; from temporalChangeMap of both. Per pixel so
+// that one pixel's lag cannot cancel another's noise, and lag or blur (changes spread over more
+// frames, or late) does not count: a pixel that flips once, like the truth, adds 0 whenever it
+// flips; one that flips back and forth adds the extra changes.
+double flickerExcess(const std::vector<float>& techniqueMap, const std::vector<float>& referenceMap,
+                     const uint8_t* valid);
+
+// Where a technique flickers more than the truth: RGBA8 from per-pixel mean changes of technique
+// and reference. Black = invalid, grey = as stable as the reference, yellow to white = excess
+// change (saturating at `fullScale`), blue = steadier than the reference.
+std::vector<uint8_t> flickerImage(const std::vector<float>& technique, const std::vector<float>& reference,
+                                  const uint8_t* valid, float fullScale);
+
 // Error image for the `error` debug view: RGBA8, grey = agree, orange = false shadow,
 // blue = false light (colours chosen to be told apart by colour-blind viewers too).
 std::vector<uint8_t> errorImage(const float* technique, const float* reference, const uint8_t* valid, size_t count);

@@ -305,7 +305,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.cameraView = view_;
   li.cameraProj = proj_;
   li.params = &t.params;
-  li.jitter = vp.accumulation->jitter(t.params);
+  li.jitter = vp.accumulation->jitter(t.params, view_ != prevView_ || proj_ != prevProj_);
   vp.lightSpace = t.layout->compute(li);
   const std::string prelude = techniquePrelude(t, vp.lightSpace);
   const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;

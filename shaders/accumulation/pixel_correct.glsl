@@ -60,7 +60,12 @@ vec3 pcHistorySample(vec2 uv) {
         texture(u_history, vec2(c3.x, c12.y)).rgb * w3.x) * w12.y;
   r += (texture(u_history, vec2(c0.x, c3.y)).rgb * w0.x + texture(u_history, vec2(c12.x, c3.y)).rgb * w12.x +
         texture(u_history, vec2(c3.x, c3.y)).rgb * w3.x) * w3.y;
-  return r;
+  // The spline overshoots next to edges (ringing that flickers as the sub-pixel offset changes):
+  // clamp to the range of the four texels the bilinear filter would have mixed.
+  ivec2 i0 = clamp(ivec2(t1), ivec2(0), ivec2(size) - 1), i1 = clamp(ivec2(t1) + 1, ivec2(0), ivec2(size) - 1);
+  vec3 a = texelFetch(u_history, i0, 0).rgb, b = texelFetch(u_history, ivec2(i1.x, i0.y), 0).rgb;
+  vec3 c = texelFetch(u_history, ivec2(i0.x, i1.y), 0).rgb, d = texelFetch(u_history, i1, 0).rgb;
+  return clamp(r, min(min(a, b), min(c, d)), max(max(a, b), max(c, d)));
 #endif
 }
 

@@ -44,7 +44,9 @@ float pixelCorrectNextExponent(const ParamSet& params, float previous, bool movi
   return std::clamp(previous + params.f("pc.m_step"), mLow, mMax);
 }
 
-LayoutJitter PixelCorrectState::jitter(const ParamSet& params) const {
+LayoutJitter PixelCorrectState::jitter(const ParamSet& params, bool cameraMoved) const {
+  // Without jitter the layout's own (snapped, world-stable) rasterization is used.
+  if (cameraMoved && !params.b("pc.jitter_moving")) return {};
   return pixelCorrectJitter(params, jitterIndex_);
 }
 
@@ -263,6 +265,15 @@ class PixelCorrectAccumulation : public Accumulation {
          "",
          "sub-texel translation of the light window, Halton(2,3) per frame",
          {}},
+        {"pc.jitter_moving",
+         ParamType::Bool,
+         0,
+         1,
+         1,
+         "",
+         "jitter (and rotate) while the camera moves, as the paper does; off = the layout's own stable rasterization "
+         "while moving (no jitter noise, no refinement until the camera rests)",
+         {}},
         {"pc.jitter_amplitude",
          ParamType::Float,
          0,
@@ -304,7 +315,7 @@ class PixelCorrectAccumulation : public Accumulation {
          0,
          "",
          "history resampling: bilinear (the paper) blurs edges a little more every frame while the camera moves; "
-         "catmull-rom (beyond the paper) halves that error but adds ringing that flickers",
+         "catmull-rom (beyond the paper) keeps them sharper, clamped to the bilinear footprint's range (no ringing)",
          {"bilinear", "catmull-rom"}},
         {"pc.history_format",
          ParamType::Enum,

@@ -25,7 +25,7 @@ float pixelCorrectNextExponent(const ParamSet& params, float previous, bool movi
 
 class PixelCorrectState : public AccumulationState {
  public:
-  LayoutJitter jitter(const ParamSet& params) const override;
+  LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const override;
   void reset() override;
   bool addPasses(FrameGraph& graph, AccumulationContext& ctx) override;
   std::vector<std::string> views() const override { return {"confidence", "history", "disocclusion"}; }
