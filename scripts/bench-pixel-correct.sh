@@ -25,13 +25,30 @@ for scene in basic columns; do
     --json "$out/$scene-standard-4096.json"
 done
 
-# Temporal aliasing along a slow camera path (flicker = technique's mean frame-to-frame change
-# minus the reference's).
-bench --scene basic --techniques standard,pixel-correct --set shadowmap.size=512 --sweep layout.snap=off,on \
-  --size 320x180 --path drift --frames 60 --json "$out/basic-drift-flicker.json"
-bench --scene basic --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 \
-  --size 320x180 --path drift --frames 60 --json "$out/basic-drift-flicker-lispsm.json"
+# Temporal aliasing along camera paths, with the history filled by the 30 path frames before
+# the measured ones (flicker = per pixel, how much more the technique's value changed than the
+# truth's; see docs/benchmarks.md). standard with and without the snapped (world-stable) grid;
+# pixel-correct as the paper (jitter always), without jitter while moving, and with the clamped
+# Catmull-Rom history.
+flicker() {
+  local scene=$1 path=$2
+  bench --scene "$scene" --techniques standard --set shadowmap.size=512 --sweep layout.snap=off,on \
+    --size 320x180 --path "$path" --time 1 --approach 30 --frames 60 --json "$out/$scene-$path-standard.json"
+  bench --scene "$scene" --techniques pixel-correct --set shadowmap.size=512 --sweep pc.jitter_moving=on,off \
+    --sweep pc.history_filter=bilinear,catmull-rom --size 320x180 --path "$path" --time 1 --approach 30 \
+    --frames 60 --json "$out/$scene-$path-pixel-correct.json" --report "$out/$scene-$path"
+  bench --scene "$scene" --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 \
+    --size 320x180 --path "$path" --time 1 --approach 30 --frames 60 --json "$out/$scene-$path-lispsm.json"
+}
+flicker basic drift
+flicker basic orbit
+flicker columns walk
 
 # Cost: frame time of both in the same run, at the paper's shadow-map size and a window size.
-bench --scene basic --techniques standard,pixel-correct --set shadowmap.size=1024 --size 1280x720 --frames 30 \
-  --json "$out/basic-cost-1280x720.json"
+for scene in basic columns; do
+  bench --scene "$scene" --techniques standard,pixel-correct --set shadowmap.size=1024 --size 1280x720 \
+    --frames 30 --json "$out/$scene-cost-1280x720.json"
+done
+
+# Tables for techniques/accumulation/README.md.
+python3 scripts/pixel-correct-tables.py "$out"

@@ -263,9 +263,14 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
     s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
       << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16 << "' text-anchor='middle' class='axis'>frame "
-    << (r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) +
-                                     " frames of camera rotation: filled history)"
-                               : "(after warm-up; history starts empty at frame 1)")
+    << (!r.options.path.empty()
+            ? "along the path at 30 fps" + (r.options.approach > 0 ? " (history filled by the " +
+                                                                       std::to_string(r.options.approach) +
+                                                                       " path frames before)"
+                                                                 : std::string(" (history starts empty)"))
+        : r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) +
+                                       " frames of camera rotation: filled history)"
+                                 : "(after warm-up; history starts empty at frame 1)")
     << "</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
     << ") rotate(-90)' text-anchor='middle' class='axis'>wrong pixels, %" << (ya.log ? " (log scale)" : "")
@@ -319,6 +324,17 @@ std::string fileSafe(const std::string& s) {
 
 }  // namespace
 
+// The chart as a file of its own (docs embed it): its namespace and the page's chart styles.
+static std::string standaloneSvg(const std::string& svg) {
+  const size_t open = svg.find("<svg ");
+  const size_t close = svg.find('>', open);
+  if (open == std::string::npos || close == std::string::npos) return svg;
+  return svg.substr(0, open) + "<svg xmlns='http://www.w3.org/2000/svg' " + svg.substr(open + 5, close - open - 5) +
+         " font-family='system-ui,sans-serif' font-size='14'>\n<style>.grid{stroke:#e3e3e3}.axis{font-size:16px;"
+         "font-weight:600}</style>\n" +
+         svg.substr(close + 1);
+}
+
 void writeBenchReport(const BenchResult& r, const std::string& dir) {
   std::filesystem::create_directories(dir);
   writeBenchCsv(r, dir + "/results.csv");
@@ -370,7 +386,13 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
        "Lower left is better. Wrong pixels are those whose visibility differs from the ray-traced reference by "
        "more than 30/255 (Scherzer et al. 2007), in percent of pixels covered by geometry, in the last frame.</p>\n";
 
-  s << "<h2>Convergence</h2>\n" << convergenceSvg(r, styles);
+  const std::string convergence = convergenceSvg(r, styles);
+  {
+    std::ofstream svg(dir + "/convergence.svg");
+    if (!svg) throw std::runtime_error(dir + "/convergence.svg: cannot write");
+    svg << standaloneSvg(convergence);
+  }
+  s << "<h2>Convergence</h2>\n" << convergence;
   s << "<p class='caption'>Wrong pixels per measured frame, "
     << (path ? "each frame against its own reference (the camera moves)" : "against one reference (still camera)")
     << ". Techniques without temporal accumulation are flat.</p>\n";
