@@ -75,7 +75,7 @@ struct BenchResult {
   double referenceFlicker = 0;
   std::vector<float> referenceChangeMap;  // per pixel, along a path
   std::vector<uint8_t> pathValid;         // pixels covered in every frame of the path (flicker is over these)
-  ReferenceImage lastReference;  // reference of the last frame (the one `error` compares with)
+  ReferenceImage lastReference;           // reference of the last frame (the one `error` compares with)
   std::vector<BenchEntry> entries;
   std::vector<std::string> shaderErrors;  // any: the affected entries measured a broken shader
 };

@@ -264,10 +264,10 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
       << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16 << "' text-anchor='middle' class='axis'>frame "
     << (!r.options.path.empty()
-            ? "along the path at 30 fps" + (r.options.approach > 0 ? " (history filled by the " +
-                                                                       std::to_string(r.options.approach) +
-                                                                       " path frames before)"
-                                                                 : std::string(" (history starts empty)"))
+            ? "along the path at 30 fps" +
+                  (r.options.approach > 0
+                       ? " (history filled by the " + std::to_string(r.options.approach) + " path frames before)"
+                       : std::string(" (history starts empty)"))
         : r.options.approach > 0 ? "(still camera after " + std::to_string(r.options.approach) +
                                        " frames of camera rotation: filled history)"
                                  : "(after warm-up; history starts empty at frame 1)")

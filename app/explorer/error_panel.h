@@ -170,6 +170,15 @@ class ErrorPanel {
     uint64_t errorTextureReference = 0;  // reference the texture was computed against (0 = stale)
   };
 
+  // What the panel shows of the active trace (the worker's state stays in error_panel.cpp).
+  struct JobProgress {
+    float fraction = 0;  // rows traced / rows
+    bool building = false;
+    double seconds = 0;
+    int threads = 0, samples = 0, width = 0, height = 0;
+  };
+  JobProgress activeProgress() const;  // requires active_
+
   const Reference* findReference(const RestKey& key) const;
   const Reference* currentReference() const;
   void pollJobs();

@@ -64,7 +64,7 @@ struct AccumulationContext {
   // An accumulation may show a texture of its own (R = visibility) instead of writing
   // finalVisibilityTex: one render target less per pixel on a software rasterizer.
   const Texture2D* shownVisibilityTex = nullptr;
-  bool wroteColor = false;                   // set by the accumulation when its pass shaded the frame
+  bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
 };
 
 // A viewport: one technique with its own state and targets, sharing the camera with the others.

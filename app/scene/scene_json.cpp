@@ -2,6 +2,7 @@
 // Validation is strict on purpose: a typo in a key or a degenerate value must be reported with
 // the file and the JSON location instead of silently producing a different scene.
 #include "scene/gltf_loader.h"
+#include "scene/json_reader.h"
 #include "scene/scene.h"
 #include "scene/shapes.h"
 
@@ -32,152 +33,6 @@ using nlohmann::json;
 
 const glm::vec3 kAutoLightDirection = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
 
-// Compact, bounded rendering of a JSON value for error messages. Non-finite numbers are spelled
-// out because json::dump() would print them as null.
-std::string describe(const json& j) {
-  std::string s;
-  if (j.is_number()) {
-    const double v = j.get<double>();
-    if (std::isnan(v)) return "nan";
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-  }
-  if (j.is_array()) {
-    s = "[";
-    for (size_t i = 0; i < j.size() && s.size() < 80; ++i) s += (i ? "," : "") + describe(j[i]);
-    s += "]";
-  } else {
-    s = j.dump();
-  }
-  if (s.size() > 80) s = s.substr(0, 77) + "...";
-  return s;
-}
-
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw SceneError(file_ + ": " + (where.empty() ? "" : where + ": ") + what);
-  }
-  [[noreturn]] void expected(const std::string& where, const std::string& what, const json& got) const {
-    fail(where, "expected " + what + ", got " + describe(got));
-  }
-
-  void checkObject(const json& j, const std::string& where) const {
-    if (!j.is_object()) expected(where, "an object", j);
-  }
-
-  // Rejects keys outside `allowed`, listing the allowed ones so typos are easy to fix.
-  void checkKeys(const json& j, const std::string& where, const std::vector<std::string>& allowed) const {
-    checkObject(j, where);
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      bool known = false;
-      for (const auto& a : allowed) known = known || a == it.key();
-      if (!known) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(where.empty() ? it.key() : where + "." + it.key(),
-             "unknown key '" + it.key() + "' (allowed: " + list + ")");
-      }
-    }
-  }
-
-  static const json* find(const json& j, const char* key) {
-    auto it = j.find(key);
-    return it == j.end() ? nullptr : &*it;
-  }
-
-  // Values are stored as float, so "finite" means finite as a float (1e300 is not).
-  static bool finiteNumber(const json& j) {
-    return j.is_number() && std::isfinite(j.get<double>()) && std::isfinite(float(j.get<double>()));
-  }
-  double number(const json& j, const std::string& where) const {
-    if (!finiteNumber(j)) expected(where, "a finite number", j);
-    return j.get<double>();
-  }
-  float positive(const json& j, const std::string& where) const {
-    if (!finiteNumber(j) || !(j.get<double>() > 0.0)) {
-      expected(where, "a positive finite number", j);
-    }
-    return float(j.get<double>());
-  }
-  int integer(const json& j, const std::string& where, int lo, int hi) const {
-    const std::string what = "an integer in [" + std::to_string(lo) + "," + std::to_string(hi) + "]";
-    if (!j.is_number() || !std::isfinite(j.get<double>())) expected(where, what, j);
-    const double v = j.get<double>();
-    if (v != std::floor(v) || v < lo || v > hi) expected(where, what, j);
-    return int(v);
-  }
-  bool boolean(const json& j, const std::string& where) const {
-    if (!j.is_boolean()) expected(where, "true or false", j);
-    return j.get<bool>();
-  }
-  std::string string(const json& j, const std::string& where) const {
-    if (!j.is_string()) expected(where, "a string", j);
-    return j.get<std::string>();
-  }
-  // `n` finite numbers, optionally all > 0.
-  std::vector<float> numbers(const json& j, const std::string& where, size_t n, bool positiveOnly) const {
-    const std::string what = std::to_string(n) + (positiveOnly ? " positive" : "") + " finite numbers";
-    if (!j.is_array() || j.size() != n) expected(where, what, j);
-    std::vector<float> out;
-    for (const json& e : j) {
-      if (!e.is_number()) expected(where, what, j);
-      const double v = e.get<double>();
-      if (!std::isfinite(v) || (positiveOnly && !(v > 0.0)) || !std::isfinite(float(v))) expected(where, what, j);
-      out.push_back(float(v));
-    }
-    return out;
-  }
-  glm::vec3 vec3(const json& j, const std::string& where, bool positiveOnly = false) const {
-    const auto v = numbers(j, where, 3, positiveOnly);
-    return {v[0], v[1], v[2]};
-  }
-  glm::vec3 nonZeroVec3(const json& j, const std::string& where) const {
-    const glm::vec3 v = vec3(j, where);
-    if (!(glm::length(v) > 1e-12f)) expected(where, "a non-zero vector", j);
-    return v;
-  }
-
-  // {"translate","rotate_deg","scale"} as T * Rz * Ry * Rx * S, or {"matrix": 16 column-major}.
-  glm::mat4 transform(const json& j, const std::string& where) const {
-    checkKeys(j, where, {"translate", "rotate_deg", "scale", "matrix"});
-    if (const json* m = find(j, "matrix")) {
-      if (j.size() != 1) fail(where, "'matrix' cannot be combined with translate/rotate_deg/scale");
-      const auto v = numbers(*m, where + ".matrix", 16, false);
-      const glm::mat4 mat = glm::make_mat4(v.data());
-      if (!(std::fabs(glm::determinant(glm::mat3(mat))) > 1e-20f)) fail(where + ".matrix", "matrix is singular");
-      return mat;
-    }
-    glm::mat4 t(1.0f);
-    if (const json* v = find(j, "translate")) t = glm::translate(t, vec3(*v, where + ".translate"));
-    if (const json* v = find(j, "rotate_deg")) {
-      const glm::vec3 r = glm::radians(vec3(*v, where + ".rotate_deg"));
-      t = glm::rotate(t, r.z, {0, 0, 1});
-      t = glm::rotate(t, r.y, {0, 1, 0});
-      t = glm::rotate(t, r.x, {1, 0, 0});
-    }
-    if (const json* v = find(j, "scale")) {
-      glm::vec3 s;
-      if (v->is_number())
-        s = glm::vec3(number(*v, where + ".scale"));
-      else
-        s = vec3(*v, where + ".scale");
-      if (s.x == 0.0f || s.y == 0.0f || s.z == 0.0f) expected(where + ".scale", "non-zero scale factors", *v);
-      t = glm::scale(t, s);
-    }
-    return t;
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
-};
-
 std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open file");
@@ -199,9 +54,9 @@ std::string resolveModelPath(const std::string& file, const fs::path& sceneDir) 
   return (sceneDir / p).lexically_normal().string();
 }
 
-Motion parseMotion(const Reader& r, const json& j, const std::string& where, glm::vec3* pivot) {
+Motion parseMotion(const JsonReader& r, const json& j, const std::string& where, glm::vec3* pivot) {
   r.checkObject(j, where);
-  const json* type = Reader::find(j, "type");
+  const json* type = JsonReader::find(j, "type");
   if (!type) r.fail(where, "missing 'type' (oscillate, rotate or none)");
   const std::string t = r.string(*type, where + ".type");
   Motion m;
@@ -212,19 +67,19 @@ Motion parseMotion(const Reader& r, const json& j, const std::string& where, glm
   if (t == "oscillate") {
     r.checkKeys(j, where, {"type", "vector", "period"});
     m.type = Motion::Type::Oscillate;
-    const json* v = Reader::find(j, "vector");
+    const json* v = JsonReader::find(j, "vector");
     if (!v) r.fail(where, "missing 'vector' (displacement amplitude)");
     m.vector = r.vec3(*v, where + ".vector");
   } else if (t == "rotate") {
     r.checkKeys(j, where, {"type", "axis", "pivot", "period"});
     m.type = Motion::Type::Rotate;
-    const json* a = Reader::find(j, "axis");
+    const json* a = JsonReader::find(j, "axis");
     m.vector = a ? glm::normalize(r.nonZeroVec3(*a, where + ".axis")) : glm::vec3(0, 1, 0);
-    if (const json* p = Reader::find(j, "pivot")) *pivot = r.vec3(*p, where + ".pivot");
+    if (const json* p = JsonReader::find(j, "pivot")) *pivot = r.vec3(*p, where + ".pivot");
   } else {
     r.fail(where + ".type", "unknown motion type '" + t + "' (expected oscillate, rotate or none)");
   }
-  if (const json* p = Reader::find(j, "period")) m.period = r.positive(*p, where + ".period");
+  if (const json* p = JsonReader::find(j, "period")) m.period = r.positive(*p, where + ".period");
   return m;
 }
 
@@ -235,9 +90,9 @@ void transformMesh(Mesh& mesh, const glm::mat4& m) {
   for (auto& n : mesh.normals) n = glm::normalize(normalMatrix * n);
 }
 
-void parseObject(const Reader& r, const json& j, const std::string& where, Scene& scene) {
+void parseObject(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
   r.checkObject(j, where);
-  const json* shapeJ = Reader::find(j, "shape");
+  const json* shapeJ = JsonReader::find(j, "shape");
   if (!shapeJ) r.fail(where, "missing 'shape' (plane, box, sphere or cylinder)");
   const std::string shape = r.string(*shapeJ, where + ".shape");
   std::vector<std::string> keys = {"name", "shape", "color", "transform", "motion", "double_sided"};
@@ -245,30 +100,30 @@ void parseObject(const Reader& r, const json& j, const std::string& where, Scene
   if (shape == "plane") {
     keys.insert(keys.end(), {"size", "subdivisions"});
     r.checkKeys(j, where, keys);
-    const json* s = Reader::find(j, "size");
+    const json* s = JsonReader::find(j, "size");
     if (!s) r.fail(where, "missing 'size' ([x, z])");
     const auto size = r.numbers(*s, where + ".size", 2, true);
-    const json* d = Reader::find(j, "subdivisions");
+    const json* d = JsonReader::find(j, "subdivisions");
     mesh = makePlane(size[0], size[1], d ? r.integer(*d, where + ".subdivisions", 1, 1024) : 16);
   } else if (shape == "box") {
     keys.insert(keys.end(), {"size"});
     r.checkKeys(j, where, keys);
-    const json* s = Reader::find(j, "size");
+    const json* s = JsonReader::find(j, "size");
     mesh = makeBox(s ? r.vec3(*s, where + ".size", true) : glm::vec3(1.0f));
   } else if (shape == "sphere") {
     keys.insert(keys.end(), {"radius", "segments"});
     r.checkKeys(j, where, keys);
-    const json* rad = Reader::find(j, "radius");
-    const json* seg = Reader::find(j, "segments");
+    const json* rad = JsonReader::find(j, "radius");
+    const json* seg = JsonReader::find(j, "segments");
     mesh = makeSphere(rad ? r.positive(*rad, where + ".radius") : 0.5f,
                       seg ? r.integer(*seg, where + ".segments", 3, 1024) : 32);
   } else if (shape == "cylinder") {
     keys.insert(keys.end(), {"radius", "height", "segments", "capped"});
     r.checkKeys(j, where, keys);
-    const json* rad = Reader::find(j, "radius");
-    const json* h = Reader::find(j, "height");
-    const json* seg = Reader::find(j, "segments");
-    const json* cap = Reader::find(j, "capped");
+    const json* rad = JsonReader::find(j, "radius");
+    const json* h = JsonReader::find(j, "height");
+    const json* seg = JsonReader::find(j, "segments");
+    const json* cap = JsonReader::find(j, "capped");
     mesh = makeCylinder(rad ? r.positive(*rad, where + ".radius") : 0.5f, h ? r.positive(*h, where + ".height") : 1.0f,
                         seg ? r.integer(*seg, where + ".segments", 3, 1024) : 24,
                         cap ? r.boolean(*cap, where + ".capped") : true);
@@ -277,7 +132,7 @@ void parseObject(const Reader& r, const json& j, const std::string& where, Scene
   }
 
   Material mat;
-  if (const json* c = Reader::find(j, "color")) {
+  if (const json* c = JsonReader::find(j, "color")) {
     const size_t n = c->is_array() ? c->size() : 0;
     if (n != 3 && n != 4) r.expected(where + ".color", "3 or 4 numbers in [0,1]", *c);
     const auto v = r.numbers(*c, where + ".color", n, false);
@@ -286,16 +141,16 @@ void parseObject(const Reader& r, const json& j, const std::string& where, Scene
     }
     mat.baseColor = glm::vec4(v[0], v[1], v[2], n == 4 ? v[3] : 1.0f);
   }
-  if (const json* d = Reader::find(j, "double_sided")) mat.doubleSided = r.boolean(*d, where + ".double_sided");
+  if (const json* d = JsonReader::find(j, "double_sided")) mat.doubleSided = r.boolean(*d, where + ".double_sided");
 
   Instance inst;
-  const json* nameJ = Reader::find(j, "name");
+  const json* nameJ = JsonReader::find(j, "name");
   inst.name = nameJ ? r.string(*nameJ, where + ".name") : shape + std::to_string(scene.instances.size());
   mesh.name = inst.name;
-  if (const json* t = Reader::find(j, "transform")) inst.transform = r.transform(*t, where + ".transform");
-  if (const json* m = Reader::find(j, "motion")) {
+  if (const json* t = JsonReader::find(j, "transform")) inst.transform = r.transform(*t, where + ".transform");
+  if (const json* m = JsonReader::find(j, "motion")) {
     glm::vec3 pivot(0.0f);
-    bool hasPivot = Reader::find(*m, "pivot") != nullptr;
+    bool hasPivot = JsonReader::find(*m, "pivot") != nullptr;
     inst.motion = parseMotion(r, *m, where + ".motion", &pivot);
     if (hasPivot) {
       // Motion::at applies in object space, so rotating about a world pivot means making the
@@ -312,41 +167,41 @@ void parseObject(const Reader& r, const json& j, const std::string& where, Scene
   scene.instances.push_back(inst);
 }
 
-Light parseLight(const Reader& r, const json& j) {
+Light parseLight(const JsonReader& r, const json& j) {
   const std::string where = "light";
   r.checkKeys(j, where, {"type", "direction", "position", "fov_deg", "radius", "color"});
   Light l;
   l.direction = kAutoLightDirection;
-  if (const json* t = Reader::find(j, "type")) {
+  if (const json* t = JsonReader::find(j, "type")) {
     const std::string type = r.string(*t, where + ".type");
     if (type == "spot")
       l.type = Light::Type::Spot;
     else if (type != "directional")
       r.fail(where + ".type", "unknown light type '" + type + "' (expected directional or spot)");
   }
-  if (const json* d = Reader::find(j, "direction")) {
+  if (const json* d = JsonReader::find(j, "direction")) {
     const glm::vec3 v = r.vec3(*d, where + ".direction");
     if (!(glm::length(v) > 1e-12f)) r.fail(where + ".direction", "zero-length light direction");
     l.direction = glm::normalize(v);
   }
-  if (const json* p = Reader::find(j, "position")) l.position = r.vec3(*p, where + ".position");
-  if (const json* f = Reader::find(j, "fov_deg")) {
+  if (const json* p = JsonReader::find(j, "position")) l.position = r.vec3(*p, where + ".position");
+  if (const json* f = JsonReader::find(j, "fov_deg")) {
     l.fovDeg = float(r.number(*f, where + ".fov_deg"));
     if (!(l.fovDeg > 0.0f && l.fovDeg < 180.0f))
       r.expected(where + ".fov_deg", "a field of view in (0,180) degrees", *f);
   }
-  if (const json* rad = Reader::find(j, "radius")) {
+  if (const json* rad = JsonReader::find(j, "radius")) {
     l.radius = float(r.number(*rad, where + ".radius"));
     if (l.radius < 0.0f) r.expected(where + ".radius", "a radius >= 0", *rad);
   }
-  if (const json* c = Reader::find(j, "color")) {
+  if (const json* c = JsonReader::find(j, "color")) {
     l.color = r.vec3(*c, where + ".color");
     if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) r.expected(where + ".color", "3 non-negative numbers", *c);
   }
   return l;
 }
 
-void checkCamera(const Reader& r, const Camera& c, const std::string& where) {
+void checkCamera(const JsonReader& r, const Camera& c, const std::string& where) {
   if (!(c.fovDeg > 0.0f && c.fovDeg < 180.0f)) r.fail(where + ".fov_deg", "field of view must be in (0,180) degrees");
   if (!(c.nearPlane > 0.0f)) r.fail(where + ".near", "near plane must be > 0");
   if (!(c.nearPlane < c.farPlane)) r.fail(where + ".far", "near must be < far");
@@ -357,30 +212,30 @@ void checkCamera(const Reader& r, const Camera& c, const std::string& where) {
   }
 }
 
-Camera parseCamera(const Reader& r, const json& j, const std::string& where, size_t index) {
+Camera parseCamera(const JsonReader& r, const json& j, const std::string& where, size_t index) {
   r.checkKeys(j, where, {"name", "position", "target", "up", "fov_deg", "near", "far"});
   Camera c;
-  const json* n = Reader::find(j, "name");
+  const json* n = JsonReader::find(j, "name");
   c.name = n ? r.string(*n, where + ".name") : (index == 0 ? "default" : "camera" + std::to_string(index));
-  const json* p = Reader::find(j, "position");
-  const json* t = Reader::find(j, "target");
+  const json* p = JsonReader::find(j, "position");
+  const json* t = JsonReader::find(j, "target");
   if (!p || !t) r.fail(where, "a camera needs 'position' and 'target'");
   c.position = r.vec3(*p, where + ".position");
   c.target = r.vec3(*t, where + ".target");
-  if (const json* u = Reader::find(j, "up")) c.up = glm::normalize(r.nonZeroVec3(*u, where + ".up"));
-  if (const json* f = Reader::find(j, "fov_deg")) c.fovDeg = float(r.number(*f, where + ".fov_deg"));
-  if (const json* v = Reader::find(j, "near")) c.nearPlane = float(r.number(*v, where + ".near"));
-  if (const json* v = Reader::find(j, "far")) c.farPlane = float(r.number(*v, where + ".far"));
+  if (const json* u = JsonReader::find(j, "up")) c.up = glm::normalize(r.nonZeroVec3(*u, where + ".up"));
+  if (const json* f = JsonReader::find(j, "fov_deg")) c.fovDeg = float(r.number(*f, where + ".fov_deg"));
+  if (const json* v = JsonReader::find(j, "near")) c.nearPlane = float(r.number(*v, where + ".near"));
+  if (const json* v = JsonReader::find(j, "far")) c.farPlane = float(r.number(*v, where + ".far"));
   checkCamera(r, c, where);
   return c;
 }
 
-CameraPath parsePath(const Reader& r, const json& j, const std::string& where, size_t index) {
+CameraPath parsePath(const JsonReader& r, const json& j, const std::string& where, size_t index) {
   r.checkKeys(j, where, {"name", "keys"});
   CameraPath path;
-  const json* n = Reader::find(j, "name");
+  const json* n = JsonReader::find(j, "name");
   path.name = n ? r.string(*n, where + ".name") : "path" + std::to_string(index);
-  const json* keys = Reader::find(j, "keys");
+  const json* keys = JsonReader::find(j, "keys");
   if (!keys || !keys->is_array() || keys->size() < 2) {
     r.fail(where + ".keys", "a path needs at least 2 keys");
   }
@@ -388,9 +243,9 @@ CameraPath parsePath(const Reader& r, const json& j, const std::string& where, s
     const std::string kw = where + ".keys[" + std::to_string(i) + "]";
     const json& k = (*keys)[i];
     r.checkKeys(k, kw, {"time", "position", "target"});
-    const json* t = Reader::find(k, "time");
-    const json* p = Reader::find(k, "position");
-    const json* g = Reader::find(k, "target");
+    const json* t = JsonReader::find(k, "time");
+    const json* p = JsonReader::find(k, "position");
+    const json* g = JsonReader::find(k, "target");
     if (!t || !p || !g) r.fail(kw, "a key needs 'time', 'position' and 'target'");
     CameraKeyframe key;
     key.time = float(r.number(*t, kw + ".time"));
@@ -439,7 +294,7 @@ void finish(Scene& scene, bool haveLight) {
 
 Scene loadJsonScene(const std::string& path) {
   const std::string text = readFile(path);
-  Reader r(path);
+  JsonReader r(path);
   json root;
   try {
     root = json::parse(text);
@@ -452,12 +307,12 @@ Scene loadJsonScene(const std::string& path) {
   r.checkKeys(root, "", {"name", "description", "models", "objects", "light", "cameras", "paths"});
   Scene scene;
   scene.sourcePath = path;
-  const json* name = Reader::find(root, "name");
+  const json* name = JsonReader::find(root, "name");
   scene.name = name ? r.string(*name, "name") : fs::path(path).stem().string();
-  if (const json* d = Reader::find(root, "description")) r.string(*d, "description");
+  if (const json* d = JsonReader::find(root, "description")) r.string(*d, "description");
 
   auto array = [&](const char* key) -> const json* {
-    const json* a = Reader::find(root, key);
+    const json* a = JsonReader::find(root, key);
     if (a && !a->is_array()) r.expected(key, "an array", *a);
     return a;
   };
@@ -467,11 +322,11 @@ Scene loadJsonScene(const std::string& path) {
       const std::string where = "models[" + std::to_string(i) + "]";
       const json& m = (*models)[i];
       r.checkKeys(m, where, {"file", "transform"});
-      const json* f = Reader::find(m, "file");
+      const json* f = JsonReader::find(m, "file");
       if (!f) r.fail(where, "missing 'file'");
       const std::string given = r.string(*f, where + ".file");
       const std::string file = resolveModelPath(given, dir);
-      const json* t = Reader::find(m, "transform");
+      const json* t = JsonReader::find(m, "transform");
       const glm::mat4 xf = t ? r.transform(*t, where + ".transform") : glm::mat4(1.0f);
       try {
         appendGltf(scene, file, xf);
@@ -489,7 +344,7 @@ Scene loadJsonScene(const std::string& path) {
       parseObject(r, (*objects)[i], "objects[" + std::to_string(i) + "]", scene);
     }
   }
-  const json* light = Reader::find(root, "light");
+  const json* light = JsonReader::find(root, "light");
   if (light) scene.light = parseLight(r, *light);
   std::set<std::string> names;
   if (const json* cams = array("cameras")) {

@@ -1,0 +1,269 @@
+// The accuracy panel's drawing: status, per-viewport numbers, the error-vs-time chart with its
+// Pareto front (state and measurement are in error_panel.cpp).
+#include "explorer/error_panel.h"
+
+#include "explorer/explorer_state.h"
+#include "render/renderer.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace sl {
+
+namespace {
+
+const ImVec4 kDim(0.65f, 0.65f, 0.68f, 1.0f);
+const ImVec4 kFalseShadow(1.0f, 0.60f, 0.20f, 1.0f);  // the error view's orange
+const ImVec4 kFalseLight(0.35f, 0.62f, 1.0f, 1.0f);   // and blue
+const ImU32 kViewportColors[4] = {IM_COL32(255, 205, 80, 255), IM_COL32(90, 205, 255, 255),
+                                  IM_COL32(140, 225, 120, 255), IM_COL32(240, 130, 210, 255)};
+const ImU32 kOldPoint = IM_COL32(150, 150, 160, 255);
+
+void dashedLine(ImDrawList* d, ImVec2 a, ImVec2 b, ImU32 col, float thickness, float dash = 5.0f) {
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float len = std::sqrt(dx * dx + dy * dy);
+  if (len <= 0) return;
+  for (float s = 0; s < len; s += 2 * dash) {
+    const float e = std::min(len, s + dash);
+    d->AddLine(ImVec2(a.x + dx * s / len, a.y + dy * s / len), ImVec2(a.x + dx * e / len, a.y + dy * e / len), col,
+               thickness);
+  }
+}
+
+}  // namespace
+
+void ErrorPanel::drawPanel(ExplorerState& state) {
+  if (!ImGui::CollapsingHeader("Accuracy vs ray-traced truth", ImGuiTreeNodeFlags_DefaultOpen)) return;
+
+  // Status: tracing, ready, or why nothing is measured.
+  const Reference* ref = currentReference();
+  if (active_) {
+    const JobProgress job = activeProgress();
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", job.building ? "building BVH" : "tracing",
+                  job.fraction * 100.0f, job.seconds);
+    ImGui::ProgressBar(job.fraction, ImVec2(-1, 0), overlay);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Ray-traced reference (Embree, %d light samples for area lights, %d threads)\n"
+          "of this %dx%d frame, on a worker thread. Moving the camera cancels it.",
+          job.samples, job.threads, job.width, job.height);
+  } else if (!jobError_.empty() && haveFailed_ && sameRestKey(failedKey_, rest_.key())) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.38f, 0.35f, 1.0f));
+    ImGui::TextWrapped("reference failed: %s", jobError_.c_str());
+    ImGui::PopStyleColor();
+  } else if (ref) {
+    ImGui::TextDisabled("reference %dx%d traced in %.1f s (BVH %.2f s)", ref->key.width, ref->key.height,
+                        ref->traceMs / 1000.0, ref->buildMs / 1000.0);
+  } else if (!rendered_) {
+    ImGui::TextDisabled("no frame rendered");
+  } else if (!rest_.resting()) {
+    const RestKeyChange& c = rest_.lastChange();
+    const char* why = c.time    ? "scene moving: pause time (Scene panel) to measure"
+                      : c.size  ? "window resized: waiting for it to settle"
+                      : c.scene ? "new scene: waiting for the camera to rest"
+                                : "camera moving: let it rest to measure";
+    ImGui::TextDisabled("%s", why);
+  } else {
+    ImGui::TextDisabled("waiting for the previous trace to stop");
+  }
+
+  // Per-viewport table.
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+  if (ImGui::BeginTable("accuracy", 7, flags)) {
+    const char* headers[7] = {"#", "wrong", "f.shadow", "f.light", "rmse", "NaN", "ms"};
+    const char* tips[7] = {"Viewport (colour of its points in the chart)",
+                           "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+                           "False shadow, %: dark where the truth is lit (orange in the error view)",
+                           "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+                           "Root mean square visibility error over covered pixels",
+                           "Non-finite (NaN/Inf) visibility values, counted as wrong",
+                           "ms per frame of this viewport: its own passes (names ending in [v]; debug views\n"
+                           "'view.*' excluded) plus the whole shared G-buffer pass, which a technique alone\n"
+                           "pays too, so the figure does not depend on how many viewports are shown.\n"
+                           "Median of the last 15 frames (see Timings for the passes)."};
+    const float weights[7] = {0.4f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
+    for (int c = 0; c < 7; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int c = 0; c < 7; ++c) {
+      ImGui::TableSetColumnIndex(c);
+      ImGui::TableHeader(headers[c]);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
+    }
+    for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
+      if (!state.slots[size_t(i)].viewport) continue;
+      const ViewportAccuracy& va = viewports_[i];
+      const bool current =
+          va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ && va.config == va.timedConfig;
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kViewportColors[i]));
+      ImGui::Text("%d", i + 1);
+      ImGui::PopStyleColor();
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", va.timedConfig.c_str());
+      auto cell = [&](int column, const char* text, const ImVec4* color) {
+        ImGui::TableSetColumnIndex(column);
+        if (!current)
+          ImGui::TextDisabled("%s", text);
+        else if (color)
+          ImGui::TextColored(*color, "%s", text);
+        else
+          ImGui::TextUnformatted(text);
+      };
+      char buf[32];
+      if (va.haveMetrics) {
+        const ErrorMetrics& m = va.metrics;
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.wrongPixelPct);
+        cell(1, buf, nullptr);
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseShadowPct);
+        cell(2, buf, &kFalseShadow);
+        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseLightPct);
+        cell(3, buf, &kFalseLight);
+        std::snprintf(buf, sizeof buf, "%.3f", m.rmse);
+        cell(4, buf, nullptr);
+        std::snprintf(buf, sizeof buf, "%lld", m.nonfinite);
+        cell(5, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
+      } else {
+        for (int c = 1; c <= 5; ++c) {
+          ImGui::TableSetColumnIndex(c);
+          ImGui::TextDisabled("-");
+        }
+      }
+      ImGui::TableSetColumnIndex(6);
+      const double own = va.ownMs.median(), gb = va.gbufferMs.median();
+      if (own >= 0) {
+        ImGui::Text("%.2f", own + gb);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%.2f ms own passes + %.2f ms G-buffer (shared by all viewports)", own, gb);
+      } else {
+        ImGui::TextDisabled("-");
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", timing_ ? "no timed pass yet" : "Timings > Time passes is off");
+      }
+    }
+    ImGui::EndTable();
+  }
+  if (currentRef_ == 0 && std::any_of(std::begin(viewports_), std::end(viewports_),
+                                      [](const ViewportAccuracy& v) { return v.haveMetrics; }))
+    ImGui::TextDisabled("(grey: measured at the previous resting view)");
+
+  // Error vs time chart.
+  ImGui::TextUnformatted("Error vs time, this session");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "One point per configuration (technique + changed parameters) measured this\n"
+        "session, the latest measurement kept. Dashed: the Pareto front, configurations\n"
+        "that no other is both faster and more accurate than. Numbered points are what\n"
+        "the viewports show now; grey ones were tried earlier (possibly from another\n"
+        "camera: compare points measured at the same view).");
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x - 40.0f);
+  if (ImGui::SmallButton("clear")) points_.clear();
+
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = std::max(160.0f, std::min(240.0f, width * 0.55f));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("chart", ImVec2(width, height));
+  const bool chartHovered = ImGui::IsItemHovered();
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  const float line = ImGui::GetTextLineHeight();
+  const float left = origin.x + 44.0f, right = origin.x + width - 8.0f;
+  const float top = origin.y + 6.0f, bottom = origin.y + height - 2.0f * line - 4.0f;
+  d->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(24, 24, 28, 255), 3.0f);
+  d->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(90, 90, 100, 255));
+
+  double msMin = 1e30, msMax = -1e30, errMin = 1e30, errMax = -1e30;
+  for (const ChartPoint& p : points_) {
+    msMin = std::min(msMin, p.ms), msMax = std::max(msMax, p.ms);
+    errMin = std::min(errMin, p.wrongPct), errMax = std::max(errMax, p.wrongPct);
+  }
+  const ChartAxis xAxis = chooseChartAxis(msMin, msMax, 0.01);
+  const ChartAxis yAxis = chooseChartAxis(errMin, errMax, 0.01);
+  auto toScreen = [&](double ms, double err) {
+    return ImVec2(left + float(xAxis.toUnit(ms)) * (right - left), bottom - float(yAxis.toUnit(err)) * (bottom - top));
+  };
+  const ImU32 grid = IM_COL32(60, 60, 68, 255), label = IM_COL32(170, 170, 178, 255);
+  for (double t : xAxis.ticks()) {
+    const float x = toScreen(t, 0).x;
+    d->AddLine(ImVec2(x, top), ImVec2(x, bottom), grid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(std::min(x - w * 0.5f, right - w), bottom + 2.0f), label, s.c_str());
+  }
+  for (double t : yAxis.ticks()) {
+    const float y = toScreen(0, t).y;
+    d->AddLine(ImVec2(left, y), ImVec2(right, y), grid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(left - w - 4.0f, y - line * 0.5f), label, s.c_str());
+  }
+  const std::string xLabel = std::string("ms per frame") + (xAxis.log ? " (log)" : "");
+  const std::string yLabel = std::string("wrong %") + (yAxis.log ? " (log)" : "");
+  d->AddText(ImVec2((left + right - ImGui::CalcTextSize(xLabel.c_str()).x) * 0.5f, bottom + line + 2.0f), label,
+             xLabel.c_str());
+  d->AddText(ImVec2(origin.x + 4.0f, bottom + line + 2.0f), label, yLabel.c_str());
+
+  if (points_.empty()) {
+    const char* msg = "no measurement yet: rest the camera";
+    const ImVec2 s = ImGui::CalcTextSize(msg);
+    d->AddText(ImVec2((left + right - s.x) * 0.5f, (top + bottom - s.y) * 0.5f), label, msg);
+    return;
+  }
+
+  // Pareto front: a dashed staircase (the best error available for a given time budget).
+  const std::vector<size_t> front = paretoFront(points_);
+  const ImU32 frontColor = IM_COL32(230, 230, 230, 200);
+  for (size_t k = 0; k < front.size(); ++k) {
+    const ImVec2 p = toScreen(points_[front[k]].ms, points_[front[k]].wrongPct);
+    const float xEnd = k + 1 < front.size() ? toScreen(points_[front[k + 1]].ms, 0).x : right;
+    dashedLine(d, p, ImVec2(xEnd, p.y), frontColor, 1.5f);
+    if (k + 1 < front.size()) {
+      const ImVec2 q = toScreen(points_[front[k + 1]].ms, points_[front[k + 1]].wrongPct);
+      dashedLine(d, ImVec2(xEnd, p.y), ImVec2(xEnd, q.y), frontColor, 1.5f);
+    }
+  }
+
+  // Points: the configurations shown now in their viewport's colour and number, others grey.
+  std::vector<std::string> shownConfigs(4);
+  for (int i = 0; i < state.viewportCount && i < 4; ++i)
+    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport)
+      shownConfigs[size_t(i)] = viewports_[i].timedConfig;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  int hovered = -1;
+  float hoveredDist = 8.0f * 8.0f;
+  d->PushClipRect(ImVec2(left - 6, top - 6), ImVec2(right + 6, bottom + 6), true);
+  for (size_t n = 0; n < points_.size(); ++n) {
+    const ChartPoint& p = points_[n];
+    const ImVec2 s = toScreen(p.ms, p.wrongPct);
+    int shownIn = -1;
+    for (int i = 0; i < 4; ++i)
+      if (!shownConfigs[size_t(i)].empty() && shownConfigs[size_t(i)] == p.config) shownIn = i;
+    if (shownIn >= 0) {
+      d->AddCircleFilled(s, 5.0f, kViewportColors[shownIn]);
+      const std::string num = std::to_string(shownIn + 1);
+      d->AddText(ImVec2(s.x + 6.0f, s.y - line - 1.0f), kViewportColors[shownIn], num.c_str());
+    } else {
+      d->AddCircle(s, 4.0f, kOldPoint, 0, 1.5f);
+    }
+    const float dx = s.x - mouse.x, dy = s.y - mouse.y;
+    if (chartHovered && dx * dx + dy * dy < hoveredDist) {
+      hoveredDist = dx * dx + dy * dy;
+      hovered = int(n);
+    }
+  }
+  d->PopClipRect();
+  if (hovered >= 0) {
+    const ChartPoint& p = points_[size_t(hovered)];
+    const bool onFront = std::find(front.begin(), front.end(), size_t(hovered)) != front.end();
+    ImGui::SetTooltip("%s\n%.2f ms per frame, %.2f%% wrong pixels%s", p.config.c_str(), p.ms, p.wrongPct,
+                      onFront ? "\non the Pareto front" : "");
+  }
+}
+
+}  // namespace sl
