@@ -16,9 +16,12 @@ for scene in basic columns; do
     bench --scene "$scene" --techniques standard,pixel-correct --set shadowmap.size=512 \
       --sweep pc.warmup=off,on --sweep pc.adaptive=off,on --sweep pc.m=3,15 --approach "$approach" \
       --size 320x180 --frames 60 --json "$out/$scene-$history.json" --report "$out/$scene-$history"
-    # Over a LiSPSM layout, as the paper pairs them for large scenes (defaults: adaptive m).
+    # Over a LiSPSM layout, as the paper pairs them for large scenes (defaults: adaptive m), and
+    # both layouts with the plain test while moving (pc.while_moving=test, beyond the paper).
     bench --scene "$scene" --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 --approach "$approach" \
-      --size 320x180 --frames 60 --json "$out/$scene-$history-lispsm.json"
+      --sweep pc.while_moving=accumulate,test --size 320x180 --frames 60 --json "$out/$scene-$history-lispsm.json"
+    bench --scene "$scene" --techniques pixel-correct-at-rest --set shadowmap.size=512 --approach "$approach" \
+      --size 320x180 --frames 60 --json "$out/$scene-$history-at-rest.json"
   done
   # What standard reaches with 64 times the texels.
   bench --scene "$scene" --techniques standard --set shadowmap.size=4096 --size 320x180 --frames 3 \
@@ -38,7 +41,10 @@ flicker() {
     --sweep pc.history_filter=bilinear,catmull-rom --size 320x180 --path "$path" --time 1 --approach 30 \
     --frames 60 --json "$out/$scene-$path-pixel-correct.json" --report "$out/$scene-$path"
   bench --scene "$scene" --techniques lispsm,pixel-correct-lispsm --set shadowmap.size=512 \
-    --size 320x180 --path "$path" --time 1 --approach 30 --frames 60 --json "$out/$scene-$path-lispsm.json"
+    --sweep pc.while_moving=accumulate,test --size 320x180 --path "$path" --time 1 --approach 30 --frames 60 \
+    --json "$out/$scene-$path-lispsm.json"
+  bench --scene "$scene" --techniques pixel-correct-at-rest --set shadowmap.size=512 \
+    --size 320x180 --path "$path" --time 1 --approach 30 --frames 60 --json "$out/$scene-$path-at-rest.json"
 }
 flicker basic drift
 flicker basic orbit

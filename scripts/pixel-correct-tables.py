@@ -22,7 +22,7 @@ print("| scene, history | entry | frame 1 | frame 20 | frame 60 |")
 print("|---|---|---:|---:|---:|")
 for scene in ("basic", "columns"):
     for history in ("empty", "filled"):
-        for suffix in ("", "-lispsm"):
+        for suffix in ("", "-lispsm", "-at-rest"):
             j = load(f"{scene}-{history}{suffix}.json")
             if not j:
                 continue
@@ -37,7 +37,7 @@ print("\n## Flicker along paths (filled history; 512², 320×180, 60 frames at 3
 print("| scene, path | entry | flicker excess | wrong % (mean over the path) |")
 print("|---|---|---:|---:|")
 for scene, path in (("basic", "drift"), ("basic", "orbit"), ("columns", "walk")):
-    for group in ("standard", "pixel-correct", "lispsm"):
+    for group in ("standard", "pixel-correct", "at-rest", "lispsm"):
         j = load(f"{scene}-{path}-{group}.json")
         if not j:
             continue

@@ -184,6 +184,36 @@ TEST(PixelCorrect, OverLispsmConvergesOnColumnsBelowStandardAt4096) {
   EXPECT_TRUE(h.shaders.errors().empty());
 }
 
+// pc.while_moving=test: while the camera moves the viewport shows the layout's own, unjittered
+// test (exactly what `standard` shows); at rest it accumulates again.
+TEST(PixelCorrect, WhileMovingTestShowsThePlainTestThenAccumulates) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 160, hgt = 90;
+  Viewport pc(makeTechnique("pixel-correct-at-rest", {"shadowmap.size=256"}));
+  Viewport standard(makeTechnique("standard", {"shadowmap.size=256"}));
+  Camera cam = scene.cameras.front();
+  auto differing = [&](const Viewport& a, const Viewport& b) {
+    auto va = a.visibilityTexture()->readFloats(2), vb = b.visibilityTexture()->readFloats(2);
+    int n = 0;
+    for (size_t i = 0; i < va.size(); i += 2) n += va[i] != vb[i];
+    return n;
+  };
+  for (int f = 0; f < 12; ++f) h.renderer.render(frameInput(cam, w, hgt), {&pc, &standard});
+  EXPECT_GT(differing(pc, standard), 0);  // accumulated at rest
+  for (int f = 0; f < 3; ++f) {
+    cam.position += glm::vec3(0.02f, 0.0f, -0.015f);
+    h.renderer.render(frameInput(cam, w, hgt), {&pc, &standard});
+    EXPECT_EQ(differing(pc, standard), 0) << "moving frame " << f;
+    EXPECT_EQ(pc.lightSpace.viewProj, standard.lightSpace.viewProj);
+  }
+  for (int f = 0; f < 12; ++f) h.renderer.render(frameInput(cam, w, hgt), {&pc, &standard});
+  EXPECT_GT(differing(pc, standard), 0);  // and at rest again
+  EXPECT_EQ(test::readFrame(h.renderer, pc, w, hgt).nonfinite(), 0);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 // A cut forgets everything: the first frame after it shows this frame's raw test exactly.
 TEST(PixelCorrect, CameraCutResetsTheHistory) {
   GlHarness h;

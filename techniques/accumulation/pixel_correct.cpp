@@ -46,7 +46,7 @@ float pixelCorrectNextExponent(const ParamSet& params, float previous, bool movi
 
 LayoutJitter PixelCorrectState::jitter(const ParamSet& params, bool cameraMoved) const {
   // Without jitter the layout's own (snapped, world-stable) rasterization is used.
-  if (cameraMoved && !params.b("pc.jitter_moving")) return {};
+  if (cameraMoved && (!params.b("pc.jitter_moving") || params.choice("pc.while_moving") == "test")) return {};
   return pixelCorrectJitter(params, jitterIndex_);
 }
 
@@ -119,10 +119,13 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   adaptive_ = params.b("pc.adaptive");
   const GLenum format = params.choice("pc.history_format") == "fp32" ? GL_RGBA32F : GL_RGBA16F;
   ensureHistory(ctx.width, ctx.height, format);
-  m_ = pixelCorrectNextExponent(params, m_, ctx.cameraMoved, hasHistory_);
+  // pc.while_moving = test: while the camera moves show this frame's test (no history read); the
+  // history restarts from it at rest, like after a cut.
+  const bool testOnly = ctx.cameraMoved && params.choice("pc.while_moving") == "test";
+  m_ = pixelCorrectNextExponent(params, m_, ctx.cameraMoved, hasHistory_ && !testOnly);
 
   const int read = current_, write = 1 - current_;
-  const bool hasHistory = hasHistory_;
+  const bool hasHistory = hasHistory_ && !testOnly;
   const float m = m_;
   const std::string tag = ctx.viewportTag;
   const std::string prevRes = "pc.history.prev" + tag, nextRes = "pc.history" + tag;
@@ -274,6 +277,15 @@ class PixelCorrectAccumulation : public Accumulation {
          "jitter (and rotate) while the camera moves, as the paper does; off = the layout's own stable rasterization "
          "while moving (no jitter noise, no refinement until the camera rests)",
          {}},
+        {"pc.while_moving",
+         ParamType::Enum,
+         0,
+         0,
+         0,
+         "",
+         "accumulate (the paper): the history keeps accumulating jittered tests while the camera moves; test "
+         "(beyond the paper): show the layout's own unjittered test while moving and accumulate only at rest",
+         {"accumulate", "test"}},
         {"pc.jitter_amplitude",
          ParamType::Float,
          0,
