@@ -59,21 +59,33 @@ std::string shortLabel(const BenchEntry& e) {
   return s;
 }
 
+// For legends: the sweep's values with the last part of their keys ("m=3", not "3").
+std::string legendLabel(const BenchEntry& e) {
+  std::string s = e.technique;
+  for (const auto& kv : e.sweepPoint) s += " " + kv.first.substr(kv.first.rfind('.') + 1) + "=" + kv.second;
+  return s;
+}
+
 struct Style {
   std::string color, dash;
 };
 
-// Colour per technique, dash pattern per position in its sweep.
+// Colour per technique and dash pattern per position in its sweep while that tells every entry
+// apart; a technique with more than four sweep points takes the next colours too.
 std::vector<Style> entryStyles(const BenchResult& r) {
-  std::vector<std::string> techs;
   std::vector<Style> out;
   std::map<std::string, int> seen;
+  size_t colour = 0;
+  std::map<std::string, size_t> firstColour;
   for (const auto& e : r.entries) {
-    auto it = std::find(techs.begin(), techs.end(), e.technique);
-    size_t t = it - techs.begin();
-    if (it == techs.end()) techs.push_back(e.technique);
-    int k = seen[e.technique]++;
-    out.push_back({kColors[t % 8], kDashes[k % 4]});
+    if (!firstColour.count(e.technique)) {
+      firstColour[e.technique] = colour;
+      size_t points = 0;
+      for (const auto& o : r.entries) points += o.technique == e.technique;
+      colour += (points + 3) / 4;
+    }
+    const int k = seen[e.technique]++;
+    out.push_back({kColors[(firstColour[e.technique] + k / 4) % 8], kDashes[k % 4]});
   }
   return out;
 }
@@ -238,7 +250,10 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
 }
 
 std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& styles) {
-  const double W = 960, H = 420, L = 80, R = 250, T = 20, B = 60;
+  size_t longest = 0;
+  for (const auto& e : r.entries) longest = std::max(longest, legendLabel(e).size());
+  const double W = 960, H = std::max(420.0, 120.0 + 22.0 * r.entries.size()), L = 80, T = 20, B = 60;
+  const double R = std::clamp(76.0 + 7.6 * longest, 250.0, 480.0);
   int n = 1;
   double ymax = 0;
   for (const auto& e : r.entries) {
@@ -286,7 +301,7 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
     double ly = T + 10 + i * 22.0;
     s << "<line x1='" << W - R + 16 << "' x2='" << W - R + 52 << "' y1='" << ly << "' y2='" << ly << "' stroke='"
       << styles[i].color << "' stroke-width='3' stroke-dasharray='" << styles[i].dash << "'/><text x='" << W - R + 60
-      << "' y='" << ly + 5 << "'>" << esc(shortLabel(r.entries[i])) << "</text>\n";
+      << "' y='" << ly + 5 << "'>" << esc(legendLabel(r.entries[i])) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
