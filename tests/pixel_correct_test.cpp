@@ -160,6 +160,26 @@ TEST(PixelCorrect, ConvergesToTheReferenceWithAStillCamera) {
   EXPECT_TRUE(h.shaders.errors().empty());
 }
 
+// pc.keep_best (the m -> infinity limit of eq. 6) converges faster than the weighted mean.
+TEST(PixelCorrect, KeepBestConvergesFasterThanTheWeightedMean) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const int w = 320, hgt = 180;
+  FrameInput in = frameInput(scene.cameras.front(), w, hgt);
+  Viewport mean(makeTechnique("pixel-correct", {"shadowmap.size=512"}));
+  Viewport best(makeTechnique("pixel-correct", {"shadowmap.size=512", "pc.keep_best=on"}));
+  for (int f = 0; f < 40; ++f) h.renderer.render(in, {&mean, &best});
+  Frame fm = test::readFrame(h.renderer, mean, w, hgt), fb = test::readFrame(h.renderer, best, w, hgt);
+  const double wrongMean = compareToReference(scene, fm, 0.0).metrics.wrongPixelPct;
+  const double wrongBest = compareToReference(scene, fb, 0.0).metrics.wrongPixelPct;
+  std::printf("[pixel-correct] basic, 40 frames: weighted mean %.3f%%, keep best %.3f%%\n", wrongMean, wrongBest);
+  EXPECT_EQ(fb.nonfinite(), 0);
+  EXPECT_LT(wrongBest, wrongMean);
+  EXPECT_LT(wrongBest, 0.05);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 // The paper's large-scene case: over a LiSPSM layout the history converges where a focused
 // map cannot (columns: perspective aliasing near the viewer), below standard at 64x the texels.
 TEST(PixelCorrect, OverLispsmConvergesOnColumnsBelowStandardAt4096) {

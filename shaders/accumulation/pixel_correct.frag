@@ -6,7 +6,8 @@
 //   s(n) = a f(n) + (1 - a) s(n-1)       (eq. 2/3), s(n) = f(n) where there is no history
 //   a    = w (the paper), or with pc.warmup a = w / (W + w), W = accumulated weight
 //          (min(sum of w, 1), shrunk when the history was interpolated between texels): a
-//          confidence-weighted mean whose memory is capped and fades under reprojection blur.
+//          confidence-weighted mean whose memory is capped and fades under reprojection blur;
+//          or with pc.keep_best a = 1 when w beats the best weight W so far, else 0.
 // Needs the technique prelude (layout + representation modules).
 #include "common/surface.glsl"
 #include "common/visibility_term.glsl"
@@ -34,9 +35,16 @@ void main() {
   float s = f;
   float a = 1.0, W = w;
   if (h.state == PC_VALID) {
+#ifdef PC_KEEP_BEST
+    // pc.keep_best, the m -> infinity limit of eq. 6: the most confident test so far wins
+    // outright; W holds its weight (shrunk when the history is resampled between texels).
+    a = w > h.W ? 1.0 : 0.0;
+    W = max(h.W, w);
+#else
     a = u_pc_warmup > 0.5 ? (h.W + w > 0.0 ? w / (h.W + w) : 1.0) : w;
-    s = clamp(a * f + (1.0 - a) * h.s, 0.0, 1.0);
     W = min(h.W + w, 1.0);
+#endif
+    s = clamp(a * f + (1.0 - a) * h.s, 0.0, 1.0);
   }
   if (!pcFinite(s)) s = h.state == PC_VALID ? h.s : 1.0;
   float depth = pcLinearDepth(P);

@@ -89,7 +89,12 @@ PcHistory pcLookupFrom(vec4 m, float expected) {
   // squares (1 on a centre, 1/16 halfway in both axes), so a moving camera lets fresh tests in.
   vec2 fr = fract((m.xy * 0.5 + 0.5) * vec2(textureSize(u_history, 0)) - 0.5);
   vec2 sq = (1.0 - fr) * (1.0 - fr) + fr * fr;
-  h.W = clamp(tap.z, 0.0, 1.0) * (u_pc_warmup > 0.5 ? sq.x * sq.y : 1.0);
+#ifdef PC_KEEP_BEST
+  const bool decay = true;
+#else
+  bool decay = u_pc_warmup > 0.5;
+#endif
+  h.W = clamp(tap.z, 0.0, 1.0) * (decay ? sq.x * sq.y : 1.0);
   h.state = PC_VALID;
   return h;
 }

@@ -154,6 +154,7 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   if (writeRaw) prelude += "#define PC_WRITE_RAW\n";
   if (params.choice("pc.history_filter") == "catmull-rom") prelude += "#define PC_CATMULL_ROM\n";
   if (params.b("pc.reject_neighbours")) prelude += "#define PC_REJECT_NEIGHBOURS\n";
+  if (params.b("pc.keep_best")) prelude += "#define PC_KEEP_BEST\n";
 
   // One scene pass, as in the paper: test, reprojection, update and shading with multiple
   // render targets; the previous-frame position comes from the vertex shader.
@@ -259,6 +260,16 @@ class PixelCorrectAccumulation : public Accumulation {
          "",
          "beyond the paper: update weight w / (W + w) with W the pixel's accumulated weight (capped at 1, and "
          "shrunk when the history is interpolated between texels), a confidence-weighted mean; off = eq. 2",
+         {}},
+        {"pc.keep_best",
+         ParamType::Bool,
+         0,
+         1,
+         0,
+         "",
+         "beyond the paper, the m -> infinity limit of eq. 6: a test replaces the history only when it is more "
+         "confident than the best test the history holds (whose weight shrinks when the history is resampled); "
+         "off = eq. 2 (pc.warmup off) or the confidence-weighted mean (pc.warmup on)",
          {}},
         {"pc.jitter",
          ParamType::Bool,
