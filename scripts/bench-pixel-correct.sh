@@ -64,5 +64,13 @@ for scene in basic columns; do
   done
 done
 
+# The same on Sponza (262k triangles, alpha-tested plants) when the shared real scenes are there.
+if [ -d ../shared/scenes-real/sponza ]; then
+  for run in 1 2 3; do
+    bench --scene sponza --techniques standard,pixel-correct --set shadowmap.size=1024 --size 1280x720 \
+      --frames 20 --json "$out/sponza-cost-1280x720-$run.json"
+  done
+fi
+
 # Tables for techniques/accumulation/README.md.
 python3 scripts/pixel-correct-tables.py "$out" > "$out/tables.md"

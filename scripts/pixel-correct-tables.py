@@ -46,10 +46,10 @@ for scene, path in (("basic", "drift"), ("basic", "orbit"), ("columns", "walk"))
             c = e["convergence"]
             print(f"| {scene}, {path} | {e['label']} | {e['flicker']['excess']:.2e} | {sum(c) / len(c):.3f} |")
 
-print("\n## Cost (1024², 1280×720; both entries in each run, 5 runs)\n")
+print("\n## Cost (1024², 1280×720; both entries in each run, 5 runs, 3 on sponza)\n")
 print("| scene | standard ms (fastest run) | pixel-correct ms (fastest run) | ratio of those | per-run ratios | timer |")
 print("|---|---:|---:|---:|---|---|")
-for scene in ("basic", "columns"):
+for scene in ("basic", "columns", "sponza"):
     runs = [j for j in (load(f"{scene}-cost-1280x720-{r}.json") for r in range(1, 6)) if j]
     if not runs:
         continue
