@@ -227,9 +227,11 @@ TEST(PixelCorrect, WhileMovingTestShowsThePlainTestThenAccumulates) {
     h.renderer.render(frameInput(cam, w, hgt), {&pc, &standard});
     EXPECT_EQ(differing(pc, standard), 0) << "moving frame " << f;
     EXPECT_EQ(pc.lightSpace.viewProj, standard.lightSpace.viewProj);
+    EXPECT_NE(pc.accumulation->status().find("plain test"), std::string::npos) << pc.accumulation->status();
   }
   for (int f = 0; f < 12; ++f) h.renderer.render(frameInput(cam, w, hgt), {&pc, &standard});
   EXPECT_GT(differing(pc, standard), 0);  // and at rest again
+  EXPECT_NE(pc.accumulation->status().find("keep best"), std::string::npos) << pc.accumulation->status();
   EXPECT_EQ(test::readFrame(h.renderer, pc, w, hgt).nonfinite(), 0);
   EXPECT_EQ(glDebugErrorCount(), 0);
 }

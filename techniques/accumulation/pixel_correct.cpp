@@ -57,8 +57,10 @@ void PixelCorrectState::reset() {
 }
 
 std::string PixelCorrectState::status() const {
+  if (showingTest_) return "camera moving: plain test (pc.while_moving)";
   char buf[96];
-  std::snprintf(buf, sizeof buf, "m = %.1f (%s), frame %d", m_, adaptive_ ? "adaptive" : "fixed", frames_);
+  std::snprintf(buf, sizeof buf, "m = %.1f (%s)%s, frame %d", m_, adaptive_ ? "adaptive" : "fixed",
+                keepBest_ ? ", keep best" : "", frames_);
   return buf;
 }
 
@@ -122,6 +124,8 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   // pc.while_moving = test: while the camera moves show this frame's test (no history read); the
   // history restarts from it at rest, like after a cut.
   const bool testOnly = ctx.cameraMoved && params.choice("pc.while_moving") == "test";
+  showingTest_ = testOnly;
+  keepBest_ = params.b("pc.keep_best");
   m_ = pixelCorrectNextExponent(params, m_, ctx.cameraMoved, hasHistory_ && !testOnly);
 
   const int read = current_, write = 1 - current_;

@@ -48,6 +48,8 @@ class PixelCorrectState : public AccumulationState {
   int frames_ = 0;       // frames since the last reset
   int jitterIndex_ = 0;  // Halton index of the next frame
   bool adaptive_ = true;
+  bool keepBest_ = false;     // for the status line
+  bool showingTest_ = false;  // this frame shows the plain test (pc.while_moving=test, camera moving)
 };
 
 }  // namespace sl
