@@ -3,6 +3,8 @@
 #include "cli/commands.h"
 #include "explorer/explorer.h"
 
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 
@@ -12,7 +14,7 @@ const char* kUsage =
     "shadowlab - explore, compare and measure shadow-mapping techniques\n"
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
-    "            [--compare T2]... [--view NAME]... [--magnifier]\n"
+    "            [--compare T2]... [--view NAME]... [--magnifier] [--light AZ,EL]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
@@ -24,7 +26,7 @@ const char* kUsage =
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view"},
+                 "--shaders", "--compare", "--view", "--light"},
                 {"--magnifier"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
@@ -38,6 +40,17 @@ int runExplorerCommand(int argc, char** argv) {
   o.compareTechniques = args.all("--compare");  // more viewports, side by side, same camera
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
+  if (args.has("--light")) {
+    // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
+    const std::string v = args.get("--light");
+    float az = 0, el = 0;
+    char extra = 0;
+    if (std::sscanf(v.c_str(), "%f,%f%c", &az, &el, &extra) != 2 || !std::isfinite(az) || !std::isfinite(el) ||
+        el < -90.0f || el > 90.0f)
+      throw sl::ArgError("--light: expected AZ,EL in degrees with EL in [-90,90], got '" + v + "'");
+    o.lightAngles = glm::vec2(az, el);
+    o.setLight = true;
+  }
   return sl::runExplorer(o);
 }
 

@@ -98,3 +98,13 @@ TEST(ExplorerSmoke, WithoutADisplayExplainsHowToRenderHeadless) {
   EXPECT_NE(result.output.find("no display"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("shadowlab render"), std::string::npos) << result.output;
 }
+
+TEST(ExplorerSmoke, BadLightAnglesAreRejectedBeforeOpeningAWindow) {
+  for (const char* value : {"200,x", "10", "10,95", "nan,10"}) {
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " +
+                                std::string(shellQuote(SHADOWLAB_BINARY)) + " --light " + shellQuote(value);
+    const CommandResult result = runCommand(command);
+    EXPECT_EQ(result.exitCode, 1) << value << "\n" << result.output;
+    EXPECT_NE(result.output.find("--light"), std::string::npos) << result.output;
+  }
+}

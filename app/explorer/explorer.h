@@ -2,6 +2,8 @@
 // and camera, with a parameter panel generated from each technique's declarations.
 #pragma once
 
+#include <glm/glm.hpp>
+
 #include <string>
 #include <vector>
 
@@ -20,6 +22,8 @@ struct ExplorerOptions {
   std::vector<std::string> compareTechniques;  // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
   std::vector<std::string> debugViews;         // debug views shown as thumbnails from the start
   bool magnifier = false;                      // lens on without holding M
+  bool setLight = false;                       // replace the scene's light direction by lightAngles
+  glm::vec2 lightAngles{0.0f};                 // degrees: azimuth about +y from +z, elevation
 };
 
 // Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the

@@ -2,7 +2,10 @@
 
 #include "explorer/error_panel.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
+#include <cmath>
 
 namespace sl {
 
@@ -34,6 +37,29 @@ bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& id
   state.sceneError.clear();
   state.sceneTime = 0.0;
   jumpToCamera(state, state.scene->cameras.front());
+  return true;
+}
+
+glm::vec2 lightAngles(const Light& light) {
+  const glm::vec3 toLight = -glm::normalize(light.direction);
+  return glm::degrees(glm::vec2(std::atan2(toLight.x, toLight.z), std::asin(std::clamp(toLight.y, -1.0f, 1.0f))));
+}
+
+glm::vec3 directionFromLightAngles(float azimuthDeg, float elevationDeg) {
+  const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+  return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
+bool setLightDirection(ExplorerState& state, glm::vec3 direction) {
+  if (!state.scene || !std::isfinite(direction.x) || !std::isfinite(direction.y) || !std::isfinite(direction.z) ||
+      !(glm::length(direction) > 1e-6f))
+    return false;
+  direction = glm::normalize(direction);
+  if (glm::length(direction - state.scene->light.direction) < 1e-6f) return false;
+  // The accuracy panel's worker may be tracing under the old light: stop it first.
+  if (state.errorPanel) state.errorPanel->beforeSceneChange();
+  state.scene->light.direction = direction;
+  state.cutPending = true;
   return true;
 }
 

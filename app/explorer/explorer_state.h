@@ -71,6 +71,14 @@ bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& id
 // Camera cut to a named scene camera (stops path playback).
 void jumpToCamera(ExplorerState& state, const Camera& camera);
 void startCameraPath(ExplorerState& state, const CameraPath& path);
+// The light's direction as angles of the direction towards the light: azimuth about +y from +z,
+// elevation above the horizontal plane (degrees).
+glm::vec2 lightAngles(const Light& light);
+glm::vec3 directionFromLightAngles(float azimuthDeg, float elevationDeg);  // the travel direction
+// Points the scene's light along `direction` (normalised; ignored if zero or not finite). Every
+// accumulation forgets its history (a cut: it was gathered under the old light) and the accuracy
+// panel drops its references (traced under the old light). Returns true when the light changed.
+bool setLightDirection(ExplorerState& state, glm::vec3 direction);
 // Replaces a viewport's technique by a preset with its default overrides.
 void setViewportPreset(ExplorerState& state, int slot, const std::string& presetId);
 // Makes sure the first viewportCount slots exist; new ones get presets not shown yet, so

@@ -86,6 +86,20 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
     ImGui::Text("%zu triangles, %zu instances", state.scene->triangleCount(), state.scene->instances.size());
     ImGui::PopStyleColor();
   }
+  if (state.scene) {
+    // Dragging the light is a cut for accumulations (their history was gathered under the old
+    // light) and drops the accuracy panel's references.
+    glm::vec2 angles = lightAngles(state.scene->light);
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    ImGui::SetNextItemWidth(half);
+    bool changed = ImGui::SliderFloat("##azimuth", &angles.x, -180.0f, 180.0f, "light az %.0f deg");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(half);
+    changed |= ImGui::SliderFloat("##elevation", &angles.y, -90.0f, 90.0f, "elev %.0f deg");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("direction towards the light; changing it resets accumulated history and references");
+    if (changed) setLightDirection(state, directionFromLightAngles(angles.x, angles.y));
+  }
   ImGui::Checkbox("Pause time", &state.paused);
   ImGui::SameLine();
   ImGui::Text("t = %.2f s", state.sceneTime);

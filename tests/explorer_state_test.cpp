@@ -1,0 +1,48 @@
+// Explorer state changes that need no window: the light-direction control.
+#include "explorer/explorer_state.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace sl {
+namespace {
+
+TEST(ExplorerLight, AnglesRoundTrip) {
+  for (float az : {-170.0f, -45.0f, 0.0f, 30.0f, 120.0f})
+    for (float el : {-30.0f, 5.0f, 45.0f, 80.0f}) {
+      Light light;
+      light.direction = directionFromLightAngles(az, el);
+      EXPECT_NEAR(glm::length(light.direction), 1.0f, 1e-5f);
+      const glm::vec2 back = lightAngles(light);
+      EXPECT_NEAR(back.x, az, 1e-3f) << az << " " << el;
+      EXPECT_NEAR(back.y, el, 1e-3f) << az << " " << el;
+    }
+  // Elevation 90: straight down, whatever the azimuth.
+  const glm::vec3 down = directionFromLightAngles(77.0f, 90.0f);
+  EXPECT_NEAR(down.y, -1.0f, 1e-6f);
+}
+
+TEST(ExplorerLight, ChangingTheLightIsACut) {
+  ExplorerState state;
+  state.scene = std::make_unique<Scene>(loadScene("basic", defaultAssetsDir()));
+  state.cutPending = false;
+  const glm::vec3 before = state.scene->light.direction;
+
+  // Bad input changes nothing.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(setLightDirection(state, glm::vec3(0.0f)));
+  EXPECT_FALSE(setLightDirection(state, glm::vec3(nan, -1.0f, 0.0f)));
+  EXPECT_FALSE(setLightDirection(state, before));  // the same direction
+  EXPECT_EQ(state.scene->light.direction, before);
+  EXPECT_FALSE(state.cutPending);
+
+  EXPECT_TRUE(setLightDirection(state, glm::vec3(0.0f, -2.0f, 0.0f)));
+  EXPECT_NEAR(state.scene->light.direction.y, -1.0f, 1e-6f);  // normalised
+  EXPECT_TRUE(state.cutPending);  // accumulated history belongs to the old light
+}
+
+}  // namespace
+}  // namespace sl
