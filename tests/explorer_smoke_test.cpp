@@ -108,3 +108,36 @@ TEST(ExplorerSmoke, BadLightAnglesAreRejectedBeforeOpeningAWindow) {
     EXPECT_NE(result.output.find("--light"), std::string::npos) << result.output;
   }
 }
+
+// The "hot reload of the accumulation shader keeps the explorer running", end to end:
+// the window runs pixel-correct from a copy of the shaders, the update shader is broken while it
+// runs (the error is reported with file:line), then fixed, and the window keeps drawing to the
+// last frame.
+TEST(ExplorerSmoke, BrokenAccumulationShaderKeepsTheWindowRunning) {
+  if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt install xvfb); explorer not run";
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("shadowlab-explorer-reload-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy(fs::path(SHADOWLAB_SOURCE_DIR) / "shaders", dir / "shaders", fs::copy_options::recursive);
+  const fs::path frag = dir / "shaders" / "accumulation" / "pixel_correct.frag";
+  const std::string shot = (dir / "shot.png").string();
+  // Break at 4 s (shaders are built by then), restore at 7 s; ~500 frames at 640x360 last longer.
+  const std::string script =
+      "(sleep 4; cp " + shellQuote(frag.string()) + " " + shellQuote(frag.string() + ".good") + "; printf 'x+;\\n' >> " +
+      shellQuote(frag.string()) + "; sleep 3; cp " + shellQuote(frag.string() + ".good") + " " +
+      shellQuote(frag.string()) + ") & timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " +
+      shellQuote(SHADOWLAB_BINARY) + " --technique pixel-correct --size 640x360 --frames 500 --shaders " +
+      shellQuote((dir / "shaders").string()) + " --screenshot-on-exit " + shellQuote(shot) + "; status=$?; wait; exit $status";
+  const CommandResult result = runCommand("sh -c " + shellQuote(script));
+  EXPECT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("pixel_correct.frag:"), std::string::npos)
+      << "the broken shader was not reported with its file (did the run end before 4 s?)\n" << result.output;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* rgb = stbi_load(shot.c_str(), &width, &height, &channels, 3);
+  ASSERT_NE(rgb, nullptr) << "no screenshot: " << result.output;
+  const int areaLeft = std::min(width - 1, int(sl::kSidePanelWidth) + 16);
+  EXPECT_GT(greyVariance(rgb, width, areaLeft, 40, width - 8, height - 8), 10.0) << "the scene is not drawn";
+  stbi_image_free(rgb);
+  fs::remove_all(dir);
+}

@@ -205,6 +205,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
+  std::vector<std::string> printedShaderErrors;
   for (int frame = 0;; ++frame) {
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
@@ -225,6 +226,12 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     if (now - lastShaderPoll >= kShaderPollSeconds) {
       shaders.reloadChanged();
       lastShaderPoll = now;
+      // The panel shows them; a terminal gets each new one once too (file:line first).
+      std::vector<std::string> errors = shaders.errors();
+      for (const std::string& e : errors)
+        if (std::find(printedShaderErrors.begin(), printedShaderErrors.end(), e) == printedShaderErrors.end())
+          std::cerr << "shadowlab: shader error (the last good program keeps running): " << e << "\n";
+      printedShaderErrors = std::move(errors);
     }
 
     ImGui_ImplOpenGL3_NewFrame();
