@@ -32,6 +32,17 @@ for scene in basic columns; do
     --json "$out/$scene-standard-4096.json"
 done
 
+# Larger screens (the issue: "320x180 and larger"): empty history, 60 still frames, and standard
+# at 4096² at the same size.
+for size in 640x360 1280x720; do
+  for scene in basic columns; do
+    bench --scene "$scene" --techniques standard,pixel-correct,pixel-correct-lispsm --set shadowmap.size=512 \
+      --sweep pc.keep_best=off,on --size "$size" --frames 60 --json "$out/$scene-empty-$size.json"
+    bench --scene "$scene" --techniques standard --set shadowmap.size=4096 --size "$size" --frames 3 \
+      --json "$out/$scene-standard-4096-$size.json"
+  done
+done
+
 # Temporal aliasing along camera paths, with the history filled by the 30 path frames before
 # the measured ones (flicker = per pixel, how much more the technique's value changed than the
 # truth's; see docs/benchmarks.md). standard with and without the snapped (world-stable) grid;

@@ -34,6 +34,19 @@ for scene in ("basic", "columns"):
     if j:
         print(f"| {scene} | standard at 4096² | | | {j['entries'][0]['error']['wrong_pixel_pct']:.3f} |")
 
+print("\n## Larger screens: wrong % at frames 1 / 20 / 60, empty history, 512²\n")
+print("| scene, size | entry | frame 1 | frame 20 | frame 60 | standard at 4096² |")
+print("|---|---|---:|---:|---:|---:|")
+for size in ("640x360", "1280x720"):
+    for scene in ("basic", "columns"):
+        j, big = load(f"{scene}-empty-{size}.json"), load(f"{scene}-standard-4096-{size}.json")
+        if not j or not big:
+            continue
+        ref = big["entries"][0]["error"]["wrong_pixel_pct"]
+        for e in j["entries"]:
+            c = e["convergence"]
+            print(f"| {scene}, {size} | {e['label']} | {at(c, 1):.3f} | {at(c, 20):.3f} | {at(c, 60):.3f} | {ref:.3f} |")
+
 print("\n## Flicker along paths (filled history; 512², 320×180, 60 frames at 30 fps)\n")
 print("| scene, path | entry | flicker excess | wrong % (mean over the path) |")
 print("|---|---|---:|---:|")
