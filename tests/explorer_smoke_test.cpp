@@ -124,15 +124,17 @@ TEST(ExplorerSmoke, BrokenAccumulationShaderKeepsTheWindowRunning) {
   const std::string shot = (dir / "shot.png").string();
   // Break at 4 s (shaders are built by then), restore at 7 s; ~500 frames at 640x360 last longer.
   const std::string script =
-      "(sleep 4; cp " + shellQuote(frag.string()) + " " + shellQuote(frag.string() + ".good") + "; printf 'x+;\\n' >> " +
-      shellQuote(frag.string()) + "; sleep 3; cp " + shellQuote(frag.string() + ".good") + " " +
-      shellQuote(frag.string()) + ") & timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " +
+      "(sleep 4; cp " + shellQuote(frag.string()) + " " + shellQuote(frag.string() + ".good") +
+      "; printf 'x+;\\n' >> " + shellQuote(frag.string()) + "; sleep 3; cp " + shellQuote(frag.string() + ".good") +
+      " " + shellQuote(frag.string()) + ") & timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " +
       shellQuote(SHADOWLAB_BINARY) + " --technique pixel-correct --size 640x360 --frames 500 --shaders " +
-      shellQuote((dir / "shaders").string()) + " --screenshot-on-exit " + shellQuote(shot) + "; status=$?; wait; exit $status";
+      shellQuote((dir / "shaders").string()) + " --screenshot-on-exit " + shellQuote(shot) +
+      "; status=$?; wait; exit $status";
   const CommandResult result = runCommand("sh -c " + shellQuote(script));
   EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("pixel_correct.frag:"), std::string::npos)
-      << "the broken shader was not reported with its file (did the run end before 4 s?)\n" << result.output;
+      << "the broken shader was not reported with its file (did the run end before 4 s?)\n"
+      << result.output;
   int width = 0, height = 0, channels = 0;
   unsigned char* rgb = stbi_load(shot.c_str(), &width, &height, &channels, 3);
   ASSERT_NE(rgb, nullptr) << "no screenshot: " << result.output;

@@ -41,7 +41,7 @@ TEST(ExplorerLight, ChangingTheLightIsACut) {
 
   EXPECT_TRUE(setLightDirection(state, glm::vec3(0.0f, -2.0f, 0.0f)));
   EXPECT_NEAR(state.scene->light.direction.y, -1.0f, 1e-6f);  // normalised
-  EXPECT_TRUE(state.cutPending);  // accumulated history belongs to the old light
+  EXPECT_TRUE(state.cutPending);                              // accumulated history belongs to the old light
 }
 
 }  // namespace

@@ -321,7 +321,8 @@ bool prepareState(const ExplorerOptions& options, ExplorerState& state, std::vec
     }
   }
   jumpToCamera(state, *start);
-  if (options.setLight) setLightDirection(state, directionFromLightAngles(options.lightAngles.x, options.lightAngles.y));
+  if (options.setLight)
+    setLightDirection(state, directionFromLightAngles(options.lightAngles.x, options.lightAngles.y));
   return true;
 }
 
