@@ -337,10 +337,8 @@ std::string fileSafe(const std::string& s) {
   return o;
 }
 
-}  // namespace
-
 // The chart as a file of its own (docs embed it): its namespace and the page's chart styles.
-static std::string standaloneSvg(const std::string& svg) {
+std::string standaloneSvg(const std::string& svg) {
   const size_t open = svg.find("<svg ");
   const size_t close = svg.find('>', open);
   if (open == std::string::npos || close == std::string::npos) return svg;
@@ -349,6 +347,8 @@ static std::string standaloneSvg(const std::string& svg) {
          "font-weight:600}</style>\n" +
          svg.substr(close + 1);
 }
+
+}  // namespace
 
 void writeBenchReport(const BenchResult& r, const std::string& dir) {
   std::filesystem::create_directories(dir);

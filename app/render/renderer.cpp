@@ -305,7 +305,8 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.cameraView = view_;
   li.cameraProj = proj_;
   li.params = &t.params;
-  li.jitter = vp.accumulation->jitter(t.params, view_ != prevView_ || proj_ != prevProj_);
+  const bool cameraMoved = view_ != prevView_ || proj_ != prevProj_;
+  li.jitter = vp.accumulation->jitter(t.params, cameraMoved);
   vp.lightSpace = t.layout->compute(li);
   const std::string prelude = techniquePrelude(t, vp.lightSpace);
   const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
@@ -395,7 +396,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.prevProj = prevProj_;
   ctx.width = in.width;
   ctx.height = in.height;
-  ctx.cameraMoved = view_ != prevView_ || proj_ != prevProj_;
+  ctx.cameraMoved = cameraMoved;
   ctx.frameIndex = frameIndex_;
   for (const auto& name : vp.shownViews)
     if (vp.views_.count(name)) ctx.viewTargets[name] = vp.views_[name].get();

@@ -44,9 +44,16 @@ float pixelCorrectNextExponent(const ParamSet& params, float previous, bool movi
   return std::clamp(previous + params.f("pc.m_step"), mLow, mMax);
 }
 
+namespace {
+
+// pc.while_moving = test: while the camera moves, show the layout's plain test, no history.
+bool plainTestWhileMoving(const ParamSet& params) { return params.choice("pc.while_moving") == "test"; }
+
+}  // namespace
+
 LayoutJitter PixelCorrectState::jitter(const ParamSet& params, bool cameraMoved) const {
   // Without jitter the layout's own (snapped, world-stable) rasterization is used.
-  if (cameraMoved && (!params.b("pc.jitter_moving") || params.choice("pc.while_moving") == "test")) return {};
+  if (cameraMoved && (!params.b("pc.jitter_moving") || plainTestWhileMoving(params))) return {};
   return pixelCorrectJitter(params, jitterIndex_);
 }
 
@@ -123,7 +130,7 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   ensureHistory(ctx.width, ctx.height, format);
   // pc.while_moving = test: while the camera moves show this frame's test (no history read); the
   // history restarts from it at rest, like after a cut.
-  const bool testOnly = ctx.cameraMoved && params.choice("pc.while_moving") == "test";
+  const bool testOnly = ctx.cameraMoved && plainTestWhileMoving(params);
   showingTest_ = testOnly;
   keepBest_ = params.b("pc.keep_best");
   m_ = pixelCorrectNextExponent(params, m_, ctx.cameraMoved, hasHistory_ && !testOnly);
@@ -158,7 +165,7 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   if (writeRaw) prelude += "#define PC_WRITE_RAW\n";
   if (params.choice("pc.history_filter") == "catmull-rom") prelude += "#define PC_CATMULL_ROM\n";
   if (params.b("pc.reject_neighbours")) prelude += "#define PC_REJECT_NEIGHBOURS\n";
-  if (params.b("pc.keep_best")) prelude += "#define PC_KEEP_BEST\n";
+  if (keepBest_) prelude += "#define PC_KEEP_BEST\n";
 
   // One scene pass, as in the paper: test, reprojection, update and shading with multiple
   // render targets; the previous-frame position comes from the vertex shader.
