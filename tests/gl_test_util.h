@@ -3,6 +3,7 @@
 
 #include "gl/gl_util.h"
 #include "gl/headless_context.h"
+#include "reference/reference.h"
 #include "render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -32,6 +33,8 @@ struct Frame {
   std::vector<float> visibility;  // 2 channels: visibility, confidence
   std::vector<float> position;    // 4 channels, w = covered
   std::vector<float> normal;      // 4 channels
+  std::vector<uint32_t> surface;  // 4 channels: instance + 1, triangle, packed facet, 0
+  GBufferView gbuffer() const { return GBufferView{width, height, position.data(), normal.data(), surface.data()}; }
   float at(int x, int y) const { return visibility[2 * (static_cast<size_t>(y) * width + x)]; }
   long long nonfinite() const {
     long long n = 0;
@@ -47,6 +50,7 @@ inline Frame readFrame(const Renderer& r, const Viewport& vp, int w, int h) {
   f.visibility = vp.visibilityTexture()->readFloats(2);
   f.position = r.gPosition().readFloats(4);
   f.normal = r.gNormal().readFloats(4);
+  f.surface = r.gSurface().readUints(4);
   return f;
 }
 

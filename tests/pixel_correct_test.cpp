@@ -34,7 +34,7 @@ Comparison compareToReference(const Scene& scene, const Frame& f, double time) {
   ReferenceTracer tracer(scene, time);
   ReferenceOptions opts;
   opts.time = time;
-  c.reference = tracer.visibility(GBufferView{f.width, f.height, f.position.data(), f.normal.data()}, opts);
+  c.reference = tracer.visibility(f.gbuffer(), opts);
   const size_t n = static_cast<size_t>(f.width) * f.height;
   std::vector<float> vis(n);
   c.valid.resize(n);

@@ -18,7 +18,8 @@ namespace sl {
 namespace {
 
 // Bump when the reference algorithm or the file layout changes: old files are then ignored.
-constexpr uint32_t kFormatVersion = 1;
+// 2: rays start on the receiver's triangle plane (docs/reference.md); older files are stale.
+constexpr uint32_t kFormatVersion = 2;
 constexpr char kMagic[8] = {'S', 'L', 'R', 'E', 'F', 'V', 'I', 'S'};
 
 struct Fnv {
@@ -176,7 +177,8 @@ ReferenceImage ReferenceCache::forLastFrame(const Renderer& renderer, const Fram
     throw std::runtime_error("reference: the renderer's G-buffer is " + std::to_string(pos.width()) + "x" +
                              std::to_string(pos.height()) + ", not the requested frame size");
   std::vector<float> position = pos.readFloats(4), normal = nrm.readFloats(4);
-  GBufferView g{in.width, in.height, position.data(), normal.data()};
+  const std::vector<uint32_t> surface = renderer.gSurface().readUints(4);
+  GBufferView g{in.width, in.height, position.data(), normal.data(), surface.data()};
   ReferenceOptions o;
   o.time = in.time;
   o.lightSamples = settings_.samples;

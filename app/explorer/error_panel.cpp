@@ -40,6 +40,7 @@ struct ErrorPanel::Job {
   bool sceneMoves = false;
   int threads = 1;
   std::vector<float> position, normal;  // G-buffer readback, rows bottom-up
+  std::vector<uint32_t> surface;        // instance + 1, triangle (see Renderer::gSurface)
 
   std::atomic<int> rowsDone{0};
   std::atomic<bool> building{true};
@@ -84,7 +85,7 @@ struct ErrorPanel::Job {
         const size_t a = size_t(y0) * w, b = size_t(y1) * w;
         if (std::any_of(valid.begin() + long(a), valid.begin() + long(b), [](uint8_t v) { return v != 0; })) {
           std::copy(position.begin() + long(4 * a), position.begin() + long(4 * b), masked.begin() + long(4 * a));
-          const std::vector<float> part = tracer.visibility(GBufferView{w, h, masked.data(), normal.data()}, options);
+          const std::vector<float> part = tracer.visibility(GBufferView{w, h, masked.data(), normal.data(), surface.data()}, options);
           std::copy(part.begin() + long(a), part.begin() + long(b), visibility.begin() + long(a));
           std::fill(masked.begin() + long(4 * a), masked.begin() + long(4 * b), 0.0f);
         }
@@ -195,6 +196,7 @@ void ErrorPanel::startJob(ExplorerState& state, Renderer& renderer, const RestKe
   job->threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
   job->position = pos.readFloats(4);
   job->normal = renderer.gNormal().readFloats(4);
+  job->surface = renderer.gSurface().readUints(4);
   job->started = now_;
   jobError_.clear();
   Job* raw = job.get();

@@ -99,6 +99,15 @@ std::vector<float> Texture2D::readFloats(int channels) const {
   return out;
 }
 
+std::vector<uint32_t> Texture2D::readUints(int channels) const {
+  static const GLenum formats[] = {0, GL_RED_INTEGER, GL_RG_INTEGER, GL_RGB_INTEGER, GL_RGBA_INTEGER};
+  std::vector<uint32_t> out(static_cast<size_t>(width_) * height_ * channels);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(id_, 0, formats[channels], GL_UNSIGNED_INT, static_cast<GLsizei>(out.size() * sizeof(uint32_t)),
+                    out.data());
+  return out;
+}
+
 std::vector<unsigned char> Texture2D::readRgba8() const {
   std::vector<unsigned char> out(static_cast<size_t>(width_) * height_ * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -3,6 +3,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ class Texture2D {
   // Readback, rows bottom-up as GL returns them.
   std::vector<float> readFloats(int channels) const;
   std::vector<unsigned char> readRgba8() const;
+  std::vector<uint32_t> readUints(int channels) const;  // integer formats (GL_RGBA32UI, ...)
 
  private:
   GLuint id_ = 0;

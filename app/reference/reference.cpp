@@ -104,12 +104,33 @@ bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v
 
 }  // namespace
 
+// Where a shadow ray starts: the receiving point on its own plane and that plane's normal.
+struct RayStart {
+  glm::vec3 origin{0.0f};
+  glm::dvec3 plane{0.0};  // unit normal of the surface at the origin, on the side the camera sees
+  bool hasPlane = false;
+  double tolerance = 0.0;  // heights above the plane that float positions cannot resolve
+};
+
+// A triangle's world-space vertices as the tracer stores them (for a receiver's exact plane).
+struct TracedMesh {
+  std::vector<glm::vec3> world;
+  std::vector<uint32_t> indices;
+};
+
+// Float positions hold about 24 bits: a point and the plane through its triangle agree to a few
+// units in the last place of their largest coordinate. 2^-20 is 8 such units.
+constexpr double kPlaneTolerance = 1.0 / 1048576.0;
+constexpr double kMinTolerance = 1e-9;  // metres; only matters for points at the world origin
+
+double maxAbs(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
 struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<AlphaGeometry>> alphaGeometries;  // user data of the filters
+  std::vector<TracedMesh> meshes;                                // by scene instance index
   Light light;
-  float epsilon = 1e-4f;  // world-space ray offset, scaled to the scene size
 
   std::mutex errorMutex;
   std::string firstError;  // filled by the Embree error callback
@@ -133,15 +154,19 @@ struct ReferenceTracer::Impl {
     if (device) rtcReleaseDevice(device);
   }
 
-  // Visibility of one light direction/segment from an already offset origin.
-  bool unoccluded(const glm::vec3& origin, const glm::vec3& dir, float tfar) const {
+  // Visibility along one direction from a ray start: hits nearer than the height the positions
+  // cannot resolve (tolerance above the receiver's plane) are the receiver's own surface.
+  bool unoccluded(const RayStart& start, const glm::vec3& dir, float tfar) const {
+    double tnear = start.tolerance;
+    if (start.hasPlane) tnear /= glm::dot(start.plane, glm::dvec3(dir));  // > 0: checked by callers
+    if (!(tnear < tfar)) return true;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.tnear = 0.0f;
+    ray.org_x = start.origin.x;
+    ray.org_y = start.origin.y;
+    ray.org_z = start.origin.z;
+    ray.tnear = static_cast<float>(tnear);
     ray.dir_x = dir.x;
     ray.dir_y = dir.y;
     ray.dir_z = dir.z;
@@ -169,28 +194,55 @@ struct ReferenceTracer::Impl {
     return glm::dot(-toLight, light.direction) >= cosHalf;
   }
 
-  // Fractional visibility of the light from surface point p with normal n (see docs).
-  float shade(const glm::vec3& p, glm::vec3 n, int gridSize, uint64_t pixel) const {
+  // The ray start for p: on the exact plane of its triangle when the G-buffer names it (the
+  // rasterizer's interpolated position drifts off the plane by its own rounding), else p with
+  // the plane of the shading normal n (0 = none).
+  RayStart rayStart(const glm::vec3& p, const glm::vec3& n, int instance, int triangle) const {
+    RayStart s;
+    s.origin = p;
+    s.plane = glm::dvec3(n);
+    s.hasPlane = glm::length(n) > 0.0f;
+    double scale = maxAbs(glm::dvec3(p));
+    if (instance >= 0 && static_cast<size_t>(instance) < meshes.size() && triangle >= 0 &&
+        3 * static_cast<size_t>(triangle) + 2 < meshes[instance].indices.size()) {
+      const TracedMesh& m = meshes[instance];
+      const glm::dvec3 a(m.world[m.indices[3 * triangle]]), b(m.world[m.indices[3 * triangle + 1]]),
+          c(m.world[m.indices[3 * triangle + 2]]);
+      glm::dvec3 facet = glm::cross(b - a, c - a);
+      const double length = glm::length(facet);
+      if (length > 0.0 && std::isfinite(length)) {
+        facet /= length;
+        if (s.hasPlane && glm::dot(facet, glm::dvec3(n)) < 0.0) facet = -facet;
+        const glm::dvec3 onPlane = glm::dvec3(p) - facet * glm::dot(facet, glm::dvec3(p) - a);
+        s.origin = glm::vec3(onPlane);
+        s.plane = facet;
+        s.hasPlane = true;
+        scale = std::max({maxAbs(onPlane), maxAbs(a), maxAbs(b), maxAbs(c)});
+      }
+    }
+    s.tolerance = std::max(kPlaneTolerance * scale, kMinTolerance);
+    return s;
+  }
+
+  // Fractional visibility of the light from surface point p with shading normal n (see docs).
+  float shade(const glm::vec3& p, glm::vec3 n, int instance, int triangle, int gridSize, uint64_t pixel) const {
     glm::vec3 toLight;
     float distance;
     if (!isFinite(p) || !centreToLight(p, toLight, distance)) return 0.0f;
     const float nLength = glm::length(n);
     const bool hasNormal = std::isfinite(nLength) && nLength > 1e-12f;
-    if (hasNormal) {
-      n /= nLength;
-      // Facing away from the light: N.L would zero the shading anyway, and the offset ray
-      // could leak through thin closed geometry.
-      if (glm::dot(n, toLight) <= 0.0f) return 0.0f;
-    } else {
-      n = glm::vec3(0.0f);
-    }
-    // Offset along the normal against self-hits; the extra nudge toward the light helps at
-    // grazing angles where the normal offset barely moves the origin off the surface.
-    const glm::vec3 origin = p + n * epsilon + toLight * (0.1f * epsilon);
+    n = hasNormal ? n / nLength : glm::vec3(0.0f);
+    // Facing away from the light: N.L zeroes the shading anyway, and a ray from there could
+    // leak through thin closed geometry.
+    if (hasNormal && glm::dot(n, toLight) <= 0.0f) return 0.0f;
+    const RayStart start = rayStart(p, n, instance, triangle);
+    // The triangle itself faces away (the shadow terminator of a smooth-shaded mesh): the
+    // surface shadows itself, as a ray from inside the closed mesh would find.
+    if (start.hasPlane && glm::dot(start.plane, glm::dvec3(toLight)) <= 0.0) return 0.0f;
 
     if (light.radius <= 0.0f || gridSize <= 0) {
       const float tfar = light.type == Light::Type::Directional ? distance : distance * (1.0f - 1e-4f);
-      return unoccluded(origin, toLight, tfar) ? 1.0f : 0.0f;
+      return unoccluded(start, toLight, tfar) ? 1.0f : 0.0f;
     }
 
     glm::vec3 tangent, bitangent;
@@ -209,15 +261,15 @@ struct ReferenceTracer::Impl {
         dir = glm::normalize(-light.direction + offset);
         tfar = std::numeric_limits<float>::infinity();
       } else {
-        const glm::vec3 toSample = light.position + offset - p;
+        const glm::vec3 toSample = light.position + offset - start.origin;
         const float length = glm::length(toSample);
         if (!(length > 0.0f)) continue;
         dir = toSample / length;
         tfar = length * (1.0f - 1e-4f);
       }
       // Parts of the light below the surface's horizon are hidden by the surface itself.
-      if (hasNormal && glm::dot(n, dir) <= 0.0f) continue;
-      if (unoccluded(origin, dir, tfar)) ++visible;
+      if (start.hasPlane && glm::dot(start.plane, glm::dvec3(dir)) <= 0.0) continue;
+      if (unoccluded(start, dir, tfar)) ++visible;
     }
     return static_cast<float>(visible) / static_cast<float>(total);
   }
@@ -238,10 +290,8 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
   impl->scene = rtcNewScene(impl->device);
   rtcSetSceneBuildQuality(impl->scene, RTC_BUILD_QUALITY_HIGH);
 
-  // Bounds are computed here rather than with Scene::boundsAt so the tracer depends only on
-  // the vertices it actually traces.
-  Bounds bounds;
   size_t triangles = 0;
+  impl->meshes.resize(scene.instances.size());
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& inst = scene.instances[i];
     if (inst.mesh < 0 || static_cast<size_t>(inst.mesh) >= scene.meshes.size())
@@ -255,6 +305,9 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
         throw std::runtime_error("ReferenceTracer: mesh '" + mesh.name + "' has an index out of range");
 
     const glm::mat4 toWorld = inst.transformAt(time);
+    TracedMesh& traced = impl->meshes[i];
+    traced.world.resize(mesh.positions.size());
+    traced.indices.assign(mesh.indices.begin(), mesh.indices.begin() + 3 * triCount);
     RTCGeometry geom = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                  3 * sizeof(float), mesh.positions.size()));
@@ -270,7 +323,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
       vertices[3 * v + 0] = world.x;
       vertices[3 * v + 1] = world.y;
       vertices[3 * v + 2] = world.z;
-      bounds.add(world);
+      traced.world[v] = world;
     }
     std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * triCount, indices);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
@@ -294,7 +347,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
       impl->alphaGeometries.push_back(std::move(alpha));
     }
     rtcCommitGeometry(geom);
-    rtcAttachGeometry(impl->scene, geom);
+    rtcAttachGeometryByID(impl->scene, geom, static_cast<unsigned>(i));  // geomID = instance index
     rtcReleaseGeometry(geom);  // the scene keeps its own reference
     triangles += triCount;
   }
@@ -303,9 +356,6 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
                              std::to_string(scene.instances.size()) + " instances)");
   rtcCommitScene(impl->scene);
   impl->throwIfEmbreeFailed("building the scene");
-
-  const float diagonal = glm::length(bounds.extent());
-  impl->epsilon = std::max(1e-4f * diagonal, 1e-6f);
   impl.release();
 }
 
@@ -333,8 +383,11 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
         const float* pos = gbuffer.worldPosition + 4 * pixel;
         if (!(pos[3] > 0.5f)) continue;  // background stays 0
         const float* nrm = gbuffer.worldNormal + 4 * pixel;
-        result[pixel] =
-            impl_->shade(glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), gridSize, pixel);
+        const uint32_t* id = gbuffer.surface ? gbuffer.surface + 4 * pixel : nullptr;
+        const int instance = id && id[0] > 0 ? static_cast<int>(id[0] - 1) : -1;
+        const int triangle = id && id[0] > 0 ? static_cast<int>(id[1]) : -1;
+        result[pixel] = impl_->shade(glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), instance,
+                                     triangle, gridSize, pixel);
       }
     }
   };
@@ -347,9 +400,9 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
   return result;
 }
 
-bool ReferenceTracer::pointLit(const glm::vec3& p, const glm::vec3& n) const {
-  // Hard visibility toward the light's centre, with the same offsets and cone test as visibility().
-  return impl_->shade(p, n, 0, 0) > 0.5f;
+bool ReferenceTracer::pointLit(const glm::vec3& p, const glm::vec3& n, int instance, int triangle) const {
+  // Hard visibility toward the light's centre, with the same ray start and tests as visibility().
+  return impl_->shade(p, n, instance, triangle, 0, 0) > 0.5f;
 }
 
 }  // namespace sl

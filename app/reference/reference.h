@@ -4,6 +4,7 @@
 
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,11 @@ struct GBufferView {
   // width*height*4 floats each, row 0 = bottom (OpenGL readback order).
   // position.w = 1 where a surface was rasterized, 0 for background.
   const float* worldPosition = nullptr;
-  const float* worldNormal = nullptr;  // normalized geometric normal facing the camera
+  const float* worldNormal = nullptr;  // shading normal, turned to the side the camera sees
+  // Optional (Renderer::gSurface): 4 uints per pixel, instance index + 1 (0 = unknown) and the
+  // triangle index in that instance's mesh. With it the tracer starts each ray on the exact
+  // plane of the rasterized triangle (see docs/reference.md, "Ray origin").
+  const uint32_t* surface = nullptr;
 };
 
 struct ReferenceOptions {
@@ -34,8 +39,9 @@ class ReferenceTracer {
   ReferenceTracer& operator=(const ReferenceTracer&) = delete;
 
   std::vector<float> visibility(const GBufferView& gbuffer, const ReferenceOptions& options) const;
-  // One shadow ray; true when the segment from p toward the light is unoccluded.
-  bool pointLit(const glm::vec3& p, const glm::vec3& n) const;
+  // One shadow ray; true when the segment from p toward the light is unoccluded. `instance` and
+  // `triangle` (optional, -1 = unknown) name the surface p lies on, as the G-buffer does.
+  bool pointLit(const glm::vec3& p, const glm::vec3& n, int instance = -1, int triangle = -1) const;
 
  private:
   struct Impl;

@@ -93,7 +93,8 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
   for (int variant = 0; variant < 4; ++variant) {
     const Program* program = nullptr;
     bool asked = false;
-    for (const Instance& inst : scene.instances) {
+    for (size_t index = 0; index < scene.instances.size(); ++index) {
+      const Instance& inst = scene.instances[index];
       const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
       const Material& mat = scene.materials[static_cast<size_t>(m.material)];
       if (materialVariant(mat) != variant) continue;
@@ -103,6 +104,7 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
       }
       if (!program) break;  // its error is reported by the shader library
       const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
+      program->set("u_instanceId", static_cast<int>(index));  // G-buffer surface ids
       program->set("u_model", inst.transformAt(time));
       program->set("u_prevModel", inst.transformAt(prevTime));
       program->set("u_baseColor", mat.baseColor);

@@ -99,16 +99,18 @@ void Renderer::ensureTargets(int w, int h, bool withMotion) {
   width_ = w;
   height_ = h;
   gPosition_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.position");
-  gNormal_ = std::make_unique<Texture2D>(GL_RGBA16F, w, h, "gbuffer.normal");
+  // 32-bit normals: the sign of N.L at a grazing light decides pixels, and the reference reads it.
+  gNormal_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.normal");
   gAlbedo_ = std::make_unique<Texture2D>(GL_RGBA8, w, h, "gbuffer.albedo");
+  gSurface_ = std::make_unique<Texture2D>(GL_RGBA32UI, w, h, "gbuffer.surface");
   gMotion_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.motion");
   gDepth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "gbuffer.depth");
   gFbo_ = Framebuffer("gbuffer");
   // Per-pixel motion costs a fourth target; only accumulations read it.
   if (withMotion)
-    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gMotion_.get()}, gDepth_.get());
+    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get(), gMotion_.get()}, gDepth_.get());
   else
-    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get()}, gDepth_.get());
+    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get()}, gDepth_.get());
   havePrev_ = false;  // a resize is a cut: history no longer matches the screen
 }
 
@@ -221,7 +223,10 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in, needMotion] {
                gFbo_.bind();
                const float zero[4] = {0, 0, 0, 0};
-               for (int i = 0; i < (needMotion ? 4 : 3); ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
+               const GLuint none[4] = {0, 0, 0, 0};
+               for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
+               glClearNamedFramebufferuiv(gFbo_.id(), GL_COLOR, 3, none);  // surface ids: integer target
+               if (needMotion) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, 4, zero);
                glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
                glEnable(GL_DEPTH_TEST);
                PassPrograms programs(
@@ -335,10 +340,12 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     glBindTextureUnit(2, vp.shadowMap_->id());
     glBindSampler(2, vp.technique.representation->compareSampler() ? compareSampler_ : shadowSampler_);
     glBindTextureUnit(3, gAlbedo_->id());
+    glBindTextureUnit(9, gSurface_->id());
     p.set("u_gPosition", 0);
     p.set("u_gNormal", 1);
     p.set("u_shadowMap", 2);
     p.set("u_gAlbedo", 3);
+    p.set("u_gSurface", 9);
   };
 
   if (t.accumulation->passesThrough()) {

@@ -32,7 +32,7 @@ struct AccumulationContext {
   const Texture2D* rawVisibilityTex = nullptr;
   Texture2D* finalVisibilityTex = nullptr;
   const Texture2D* gPosition = nullptr;  // RGBA32F world position, w = 1 where covered
-  const Texture2D* gNormal = nullptr;    // RGBA16F world normal
+  const Texture2D* gNormal = nullptr;    // RGBA32F world normal
   const Texture2D* gMotion = nullptr;    // RGBA32F: previous frame NDC xyz (per-object motion), w valid
   ShaderLibrary* shaders = nullptr;
   const ParamSet* params = nullptr;
@@ -124,6 +124,9 @@ class Renderer {
   // G-buffer of the last frame, for the reference tracer and metrics.
   const Texture2D& gPosition() const { return *gPosition_; }
   const Texture2D& gNormal() const { return *gNormal_; }
+  // RGBA32UI: instance index + 1 (0 = background), triangle index in its mesh, packed facet
+  // normal (shaders/common/facet.glsl), 0.
+  const Texture2D& gSurface() const { return *gSurface_; }
 
  private:
   void ensureTargets(int w, int h, bool withMotion);
@@ -140,7 +143,7 @@ class Renderer {
   ShaderLibrary& shaders_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<GpuScene> gpu_;
-  std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gMotion_, gDepth_;
+  std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gSurface_, gMotion_, gDepth_;
   Framebuffer gFbo_;
   bool gHasMotion_ = false;
   bool gbufferFresh_ = false;

@@ -23,10 +23,11 @@ layout(location = 2) out vec2 o_raw;  // this frame's test and confidence, for t
 #endif
 
 void main() {
+  vec3 F = surfaceFacetNormal();
   materialAlphaTest(v_uv);
   vec3 P = v_world, N = surfaceNormal();
   vec3 coord;
-  vec2 raw = visibilityTermAt(P, N, coord);
+  vec2 raw = visibilityTermAt(P, N, F, coord);
   float f = raw.x;
   float c = pcFinite(raw.y) ? clamp(raw.y, 0.0, 1.0) : 0.0;
   vec4 motion = v_prevClip.w > 1e-6 ? vec4(v_prevClip.xyz / v_prevClip.w, 1.0) : vec4(0.0);

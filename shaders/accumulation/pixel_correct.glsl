@@ -127,7 +127,7 @@ PcHistory pcHistory(ivec2 pixel, vec3 P, vec3 N, float f, float c) {
   vec4 v = u_invPrevProj * vec4(m.xyz, 1.0);
   float expected = abs(v.w) > 1e-20 ? -v.z / v.w : -1.0;
   vec3 coord;
-  visibilityTermAt(P, N, coord);
+  visibilityTermAt(P, N, gbufferFacetNormal(pixel, N), coord);
   return pcHistoryFrom(m, expected, coord, f, c);
 }
 #endif

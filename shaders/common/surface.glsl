@@ -1,5 +1,6 @@
 // The rasterized surface point as every forward pass sees it (from passes/gbuffer.vert).
 #include "common/material.glsl"
+#include "common/facet.glsl"
 
 in vec3 v_world;
 in vec3 v_normal;
@@ -13,3 +14,6 @@ vec3 surfaceNormal() {
   vec3 n = normalize(v_normal);
   return gl_FrontFacing ? n : -n;
 }
+
+// The triangle's own normal on the side of surfaceNormal(); call before materialAlphaTest.
+vec3 surfaceFacetNormal() { return facetNormalFromDerivatives(v_world, surfaceNormal()); }

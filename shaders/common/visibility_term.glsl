@@ -5,13 +5,16 @@
 #include "common/bias.glsl"
 
 // x: visibility (1 = lit), y: confidence in [0,1] (1 = the sample sat on a texel centre).
-// coord: where the test read the map (uv, biased receiver depth); z < -1 when no map lookup
-// decided it (facing away, outside the cone, outside the map).
-vec2 visibilityTermAt(vec3 P, vec3 N, out vec3 coord) {
+// N: shading normal, F: the triangle's own normal (same side). coord: where the test read the map
+// (uv, biased receiver depth); z < -1 when no map lookup decided it (facing away, outside the
+// cone, outside the map).
+vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec3 coord) {
   coord = vec3(0.0, 0.0, -2.0);
-  float cosTheta = dot(N, directionToLight(P));
-  // Facing away or outside the cone: unlit whatever the map says (the reference agrees).
-  if (cosTheta <= 0.0 || spotFactor(P) == 0.0) return vec2(0.0, 1.0);
+  vec3 L = directionToLight(P);
+  float cosTheta = dot(N, L);
+  // Facing away (the shading normal, or the triangle itself: the shadow terminator, where the
+  // surface shadows itself) or outside the cone: unlit whatever the map says, as the reference.
+  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P) == 0.0) return vec2(0.0, 1.0);
   vec4 sc = layoutProject(biasReceiverPosition(P, N, cosTheta));
   // Outside the map nothing was rendered as a caster.
   if (sc.w == 0.0 || any(lessThan(sc.xy, vec2(0.0))) || any(greaterThan(sc.xy, vec2(1.0)))) return vec2(1.0, 0.0);
@@ -22,10 +25,22 @@ vec2 visibilityTermAt(vec3 P, vec3 N, out vec3 coord) {
   return vec2(visibility, 1.0 - 2.0 * max(fromCenter.x, fromCenter.y));
 }
 
-vec2 visibilityTerm(vec3 P, vec3 N) {
+vec2 visibilityTerm(vec3 P, vec3 N, vec3 F) {
   vec3 coord;
-  return visibilityTermAt(P, N, coord);
+  return visibilityTermAt(P, N, F, coord);
 }
+
+#ifdef SL_DEFERRED
+#include "common/facet.glsl"
+// The facet normal the G-buffer stored for this pixel (passes/gbuffer.frag), on N's side.
+uniform usampler2D u_gSurface;
+vec3 gbufferFacetNormal(ivec2 pixel, vec3 N) {
+  uvec4 s = texelFetch(u_gSurface, pixel, 0);
+  if (s.x == 0u) return N;
+  vec3 f = unpackFacet(s.z);
+  return dot(f, N) < 0.0 ? -f : f;
+}
+#endif
 
 // True when the test gives `f` at the four shadow-map positions one texel diagonally around
 // `coord` (from visibilityTermAt): no rasterization (jitter) of this map could change the answer.
