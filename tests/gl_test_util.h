@@ -26,6 +26,15 @@ struct GlHarness {
     enableGlDebugOutput(true);
     resetGlDebugErrorCount();
   }
+  // Strict mode for uniforms: a `u_*` uniform that a program reads but nothing sets fails the
+  // test (in the program it is only a warning). A test that misspells one on purpose clears
+  // this after checking the report.
+  bool requireAllUniformsSet = true;
+  ~GlHarness() {
+    shaders.checkUnsetUniforms();
+    if (!requireAllUniformsSet) return;
+    for (const auto& r : shaders.unsetUniformReports()) ADD_FAILURE() << r;
+  }
 };
 
 struct Frame {

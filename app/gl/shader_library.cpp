@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
@@ -38,23 +40,43 @@ GLint Program::location(const std::string& name) const {
   return loc;
 }
 
+void Program::markSet(GLint l) const { setLocations_.insert(l); }
+
 void Program::set(const std::string& n, float v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniform1f(id_, l, v);
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform1f(id_, l, v);
+    markSet(l);
+  }
 }
 void Program::set(const std::string& n, int v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniform1i(id_, l, v);
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform1i(id_, l, v);
+    markSet(l);
+  }
 }
 void Program::set(const std::string& n, const glm::vec2& v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniform2fv(id_, l, 1, glm::value_ptr(v));
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform2fv(id_, l, 1, glm::value_ptr(v));
+    markSet(l);
+  }
 }
 void Program::set(const std::string& n, const glm::vec3& v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniform3fv(id_, l, 1, glm::value_ptr(v));
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform3fv(id_, l, 1, glm::value_ptr(v));
+    markSet(l);
+  }
 }
 void Program::set(const std::string& n, const glm::vec4& v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniform4fv(id_, l, 1, glm::value_ptr(v));
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform4fv(id_, l, 1, glm::value_ptr(v));
+    markSet(l);
+  }
 }
 void Program::set(const std::string& n, const glm::mat4& v) const {
-  if (GLint l = location(n); l >= 0) glProgramUniformMatrix4fv(id_, l, 1, GL_FALSE, glm::value_ptr(v));
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniformMatrix4fv(id_, l, 1, GL_FALSE, glm::value_ptr(v));
+    markSet(l);
+  }
 }
 
 ShaderLibrary::ShaderLibrary(std::string shaderDir) : dir_(std::move(shaderDir)) {}
@@ -203,6 +225,9 @@ void ShaderLibrary::build(const ProgramSpec& spec, Program& program) {
   program.error_.clear();
   program.files_ = files;
   program.locations_.clear();
+  program.setLocations_.clear();
+  program.used_ = false;
+  program.checked_ = false;
   glObjectLabel(GL_PROGRAM, prog, static_cast<GLsizei>(spec.name.size()), spec.name.c_str());
 }
 
@@ -211,6 +236,7 @@ Program& ShaderLibrary::get(const ProgramSpec& spec) {
   auto it = programs_.find(key);
   if (it != programs_.end()) return *it->second.second;
   auto program = std::make_unique<Program>();
+  program->name_ = spec.name;
   build(spec, *program);
   Program& ref = *program;
   programs_.emplace(key, std::make_pair(spec, std::move(program)));
@@ -240,6 +266,45 @@ std::vector<std::string> ShaderLibrary::errors() const {
   for (const auto& [key, entry] : programs_)
     if (!entry.second->error_.empty()) out.push_back(entry.second->error_);
   return out;
+}
+
+// Active `u_*` uniforms of `p` (default block only) that no setter wrote since the last link.
+static std::vector<std::string> unsetUniforms(const Program& p, const std::set<GLint>& set) {
+  std::vector<std::string> out;
+  GLint count = 0;
+  glGetProgramInterfaceiv(p.id(), GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const GLenum props[] = {GL_LOCATION, GL_ARRAY_SIZE, GL_NAME_LENGTH};
+    GLint v[3] = {-1, 1, 0};
+    glGetProgramResourceiv(p.id(), GL_UNIFORM, static_cast<GLuint>(i), 3, props, 3, nullptr, v);
+    if (v[0] < 0 || v[2] <= 1) continue;  // in a uniform block, or a built-in
+    std::string name(static_cast<size_t>(v[2]), '\0');
+    glGetProgramResourceName(p.id(), GL_UNIFORM, static_cast<GLuint>(i), v[2], nullptr, name.data());
+    name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
+    if (name.compare(0, 2, "u_") != 0) continue;
+    // An array counts as set when any element was: callers may fill only what they use.
+    auto it = set.lower_bound(v[0]);
+    if (it != set.end() && *it < v[0] + std::max(v[1], 1)) continue;
+    out.push_back(name);
+  }
+  return out;
+}
+
+std::vector<std::string> ShaderLibrary::checkUnsetUniforms() {
+  std::vector<std::string> found;
+  for (auto& [key, entry] : programs_) {
+    Program& p = *entry.second;
+    if (!p.valid() || !p.used_ || p.checked_) continue;
+    p.checked_ = true;
+    for (const auto& u : unsetUniforms(p, p.setLocations_)) {
+      if (!reported_.insert(p.name_ + "|" + u).second) continue;
+      std::string msg = "program '" + p.name_ + "': uniform '" + u + "' is never set (reads 0; a misspelt name?)";
+      std::fprintf(stderr, "shader warning: %s\n", msg.c_str());
+      unsetReports_.push_back(msg);
+      found.push_back(msg);
+    }
+  }
+  return found;
 }
 
 }  // namespace sl

@@ -294,6 +294,8 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     for (const auto& p : stats_.passes) stats_.frameMs += p.ms;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // Every program this frame drew with has had all its uniforms set by now.
+  shaders_.checkUnsetUniforms();
   prevView_ = view_;
   prevProj_ = proj_;
   prevTime_ = in.time;

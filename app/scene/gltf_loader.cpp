@@ -3,6 +3,8 @@
 // file must produce a SceneError, not a crash or a silent garbage mesh.
 #include "scene/gltf_loader.h"
 
+#include "scene/mesh_ops.h"
+
 #include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -10,9 +12,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <tuple>
 #include <utility>
 
 namespace sl {
@@ -43,6 +47,11 @@ class GltfImporter {
       }
     }
     for (int r : roots) visitNode(r, modelTransform, 0);
+    if (repairedNormals_ > 0) {
+      std::fprintf(stderr,
+                   "%s: %zu vertex normals were zero or not finite; replaced by their triangles' flat normals\n",
+                   path_.c_str(), repairedNormals_);
+    }
   }
 
  private:
@@ -97,8 +106,9 @@ class GltfImporter {
       fail(where + ".mesh: mesh index " + std::to_string(node.mesh) + " out of range");
     }
     const tinygltf::Mesh& gm = model_.meshes[node.mesh];
+    const bool mirrored = mirrors(world);
     for (size_t p = 0; p < gm.primitives.size(); ++p) {
-      const int meshIndex = primitiveMesh(node.mesh, int(p));
+      const int meshIndex = primitiveMesh(node.mesh, int(p), mirrored);
       if (meshIndex < 0) continue;  // not a triangle list
       Instance inst;
       inst.name = (node.name.empty() ? gm.name : node.name) + "/" + std::to_string(p);
@@ -109,11 +119,30 @@ class GltfImporter {
   }
 
   // Scene mesh index for a glTF primitive, converted once even when many nodes share it.
-  int primitiveMesh(int mesh, int prim) {
-    const auto key = std::make_pair(mesh, prim);
+  // glTF 2.0 (3.7.4): a node whose global transform has a negative determinant reverses the
+  // winding, so its front faces stay front faces for culling and gl_FrontFacing. Such nodes
+  // get their own copy with reversed triangles; nodes that do not mirror keep the original.
+  int primitiveMesh(int mesh, int prim, bool mirrored) {
+    const auto key = std::make_tuple(mesh, prim, mirrored);
     auto it = meshCache_.find(key);
     if (it != meshCache_.end()) return it->second;
-    const int result = convertPrimitive(mesh, prim);
+    int result = -1;
+    auto other = meshCache_.find(std::make_tuple(mesh, prim, !mirrored));
+    if (other != meshCache_.end()) {
+      if (other->second >= 0) {
+        Mesh copy = scene_.meshes[size_t(other->second)];
+        reverseWinding(copy);
+        copy.name = model_.meshes[mesh].name + "/" + std::to_string(prim) + (mirrored ? " (mirrored)" : "");
+        scene_.meshes.push_back(std::move(copy));
+        result = int(scene_.meshes.size() - 1);
+      }
+    } else {
+      result = convertPrimitive(mesh, prim);
+      if (result >= 0 && mirrored) {
+        reverseWinding(scene_.meshes[size_t(result)]);
+        scene_.meshes[size_t(result)].name += " (mirrored)";
+      }
+    }
     meshCache_[key] = result;
     return result;
   }
@@ -283,32 +312,13 @@ class GltfImporter {
       for (size_t i = 0; i < vertexCount; ++i) mesh.indices[i] = uint32_t(i);
     }
     mesh.indices.resize(mesh.indices.size() / 3 * 3);  // a trailing partial triangle is ignored
-    if (mesh.normals.empty()) makeFlatNormals(mesh);
+    if (mesh.normals.empty())
+      makeFlatNormals(mesh);
+    else
+      repairedNormals_ += repairNormals(mesh);
     mesh.material = materialIndex(prim.material, where);
     scene_.meshes.push_back(std::move(mesh));
     return int(scene_.meshes.size() - 1);
-  }
-
-  // glTF says missing normals mean flat shading, so every triangle gets its own vertices.
-  static void makeFlatNormals(Mesh& m) {
-    Mesh flat;
-    flat.name = m.name;
-    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-      const uint32_t i[3] = {m.indices[t], m.indices[t + 1], m.indices[t + 2]};
-      glm::vec3 n = glm::cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]);
-      const float len = glm::length(n);
-      n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-      for (uint32_t k : i) {
-        flat.indices.push_back(uint32_t(flat.positions.size()));
-        flat.positions.push_back(m.positions[k]);
-        flat.normals.push_back(n);
-        flat.uvs.push_back(m.uvs[k]);
-      }
-    }
-    m.positions = std::move(flat.positions);
-    m.normals = std::move(flat.normals);
-    m.uvs = std::move(flat.uvs);
-    m.indices = std::move(flat.indices);
   }
 
   int materialIndex(int gltfMaterial, const std::string& where) {
@@ -397,7 +407,8 @@ class GltfImporter {
   std::string path_;
   std::string warn_;
   tinygltf::Model model_;
-  std::map<std::pair<int, int>, int> meshCache_;
+  std::map<std::tuple<int, int, bool>, int> meshCache_;  // (mesh, primitive, mirrored) -> scene mesh
+  size_t repairedNormals_ = 0;
   std::map<int, int> materialCache_;
   std::map<int, int> imageCache_;
   int defaultMaterial_ = -1;

@@ -3,6 +3,7 @@
 // the file and the JSON location instead of silently producing a different scene.
 #include "scene/gltf_loader.h"
 #include "scene/json_reader.h"
+#include "scene/mesh_ops.h"
 #include "scene/scene.h"
 #include "scene/shapes.h"
 
@@ -148,6 +149,9 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   inst.name = nameJ ? r.string(*nameJ, where + ".name") : shape + std::to_string(scene.instances.size());
   mesh.name = inst.name;
   if (const json* t = JsonReader::find(j, "transform")) inst.transform = r.transform(*t, where + ".transform");
+  // A negative scale mirrors the shape; without this its triangles would face inward for
+  // culling, the second-depth map and gl_FrontFacing. (Baking it below keeps the mirror.)
+  if (mirrors(inst.transform)) reverseWinding(mesh);
   if (const json* m = JsonReader::find(j, "motion")) {
     glm::vec3 pivot(0.0f);
     bool hasPivot = JsonReader::find(*m, "pivot") != nullptr;

@@ -18,7 +18,9 @@ float layoutDepth(vec3 worldPos) {
 // xy: shadow-map uv in [0,1]; z: depth in [0,1]; w: 0 when the point is behind a spot light.
 vec4 layoutProject(vec3 worldPos) {
   vec4 c = layoutClip(worldPos);
-  if (c.w <= 1e-6) return vec4(0.0, 0.0, 0.0, 0.0);
+  // Written so that a NaN position (or w) also counts as "not in the map": NaN fails every
+  // comparison, so `c.w <= 1e-6` would let it through.
+  if (!(c.w > 1e-6)) return vec4(0.0, 0.0, 0.0, 0.0);
   // Orthographic clip depth is already the linear depth; only perspective maps need the view.
 #ifdef SL_PERSPECTIVE_MAP
   float depth = layoutDepth(worldPos);
@@ -37,9 +39,15 @@ float layoutTexelWorldSize(vec3 worldPos) {
   vec3 ay = vec3(u_lightView[0][1], u_lightView[1][1], u_lightView[2][1]);
   float h = 1e-3 * (u_lightFar - u_lightNear);
   vec4 c0 = layoutClip(worldPos), cx = layoutClip(worldPos + ax * h), cy = layoutClip(worldPos + ay * h);
+  // At or behind the projection's centre plane (a spot light's own plane, behind a warp's
+  // centre) the map has no texels: dividing by w there gives Inf/NaN, and bias callers run
+  // before layoutProject rejects the point. Such points are unlit or outside the map, so any
+  // finite size will do; the one at unit distance is what the layout reports.
+  if (!(min(c0.w, min(cx.w, cy.w)) > 1e-6)) return u_lightTexelWorld;
   vec2 p0 = c0.xy / c0.w;
   float texelsPerUnit = 0.5 * u_shadowMapSize / h * min(length(cx.xy / cx.w - p0), length(cy.xy / cy.w - p0));
-  return 1.0 / max(texelsPerUnit, 1e-6);
+  float size = 1.0 / max(texelsPerUnit, 1e-6);
+  return isnan(size) || isinf(size) ? u_lightTexelWorld : size;
 #else
   return u_lightTexelWorld;
 #endif
