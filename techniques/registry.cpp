@@ -127,6 +127,14 @@ const Preset* findPreset(const std::string& id) {
   return nullptr;
 }
 
+bool LightSpace::perspective() const {
+  for (const LightView& v : views)
+    if (v.perspective) return true;
+  return false;
+}
+
+LightSpace LayoutState::compute(const LayoutInput& in) { return layout_.compute(in); }
+
 std::string Technique::label() const {
   std::string s = presetId + " (" + layout->id() + " + " + representation->id();
   if (accumulation->id() != "none") s += " + " + accumulation->id();

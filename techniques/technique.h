@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@
 namespace sl {
 
 class FrameGraph;
+class Program;
+class ShaderLibrary;
+class Texture2D;
+class TextureUnits;
 struct AccumulationContext;
 
 // Sub-texel change of the rasterization requested by an accumulation (pixel-correct jitter).
@@ -26,10 +31,10 @@ struct LayoutJitter {
   float rotationRad = 0.0f;
 };
 
-// What a layout computed for one frame. Depth stored in the map is always the light-view
-// linear depth mapped to [0,1] over [nearPlane, farPlane], whatever the projection, so biases
-// mean the same thing in every layout.
-struct LightSpace {
+// One light view: what one layer of the shadow map sees. Depth stored in the map is always the
+// light-view linear depth mapped to [0,1] over [nearPlane, farPlane], whatever the projection,
+// so biases mean the same thing in every layout.
+struct LightView {
   glm::mat4 view{1.0f};
   glm::mat4 proj{1.0f};
   glm::mat4 viewProj{1.0f};
@@ -37,9 +42,24 @@ struct LightSpace {
   float nearPlane = 0.1f;
   float farPlane = 100.0f;
   glm::vec2 windowMin{-1.0f}, windowMax{1.0f};  // orthographic window in light-view units
-  int size = 1024;                              // texels per side
   // World size of one texel: orthographic = constant; perspective = this times view distance.
   float texelWorldSize = 0.01f;
+  // Camera view depths this view serves (partitioned layouts pick a view per pixel by them) and
+  // the width of the band, before splitFar, blended with the next view.
+  float splitNear = 0.0f, splitFar = 1e30f, blendBand = 0.0f;
+};
+
+constexpr int kMaxLightViews = 8;
+
+// What a layout computed for one frame: 1..kMaxLightViews views, one shadow-map layer each,
+// all of `size` x `size` texels. The renderer uploads the views as one uniform block
+// (shaders/common/light_views.glsl).
+struct LightSpace {
+  std::vector<LightView> views{LightView{}};
+  int size = 1024;  // texels per side of every layer
+  const LightView& primary() const { return views.front(); }
+  bool perspective() const;  // any view perspective: stored depth is written per fragment
+  static LightSpace single(const LightView& view, int size) { return LightSpace{{view}, size}; }
 };
 
 struct LayoutInput {
@@ -51,6 +71,56 @@ struct LayoutInput {
   LayoutJitter jitter;
 };
 
+// What a part's per-viewport state sees when it adds its passes to a frame.
+struct PartContext {
+  std::string viewportTag;  // "[v]": unique per viewport, used in pass and resource names
+  const Scene* scene = nullptr;
+  double time = 0.0;
+  ShaderLibrary* shaders = nullptr;
+  const ParamSet* params = nullptr;
+  const LightSpace* lightSpace = nullptr;
+  glm::mat4 view{1.0f}, proj{1.0f};  // the camera
+  int width = 0, height = 0;
+  bool cameraMoved = false;
+  int frameIndex = 0;
+  std::string shadowMap;  // resource the shadow passes write (representation passes read it)
+  std::function<void()> drawFullscreen;
+  // Sets the technique's uniforms and every part's bindings on a program that includes the
+  // technique's modules (the technique prelude).
+  std::function<void(const Program&, TextureUnits&)> bindTechnique;
+};
+
+// The one shape of per-viewport state of every part (layout, representation, accumulation):
+// targets it owns, passes it adds to the frame graph (each subclass says where in the frame),
+// bindings for its GLSL module, compile-time defines, debug views and a status line.
+class PartState {
+ public:
+  virtual ~PartState() = default;
+  virtual void reset() {}  // camera cut: forget everything from earlier frames
+  // Defines placed in the technique prelude (before the modules are included).
+  virtual std::string defines() const { return ""; }
+  // Textures and uniforms of this part's GLSL module, on a program that includes it.
+  virtual void bind(const Program& p, TextureUnits& units) const {}
+  virtual std::vector<std::string> views() const { return {}; }  // debug views it can draw
+  virtual std::string status() const { return ""; }
+  virtual long long texels() const { return 0; }  // GPU texels of the targets it owns
+};
+
+class Layout;
+
+// Per-viewport state of a layout: computes the light views; may add passes that run before the
+// shadow pass (a depth reduction for sample-distribution fitting, page marking).
+class LayoutState : public PartState {
+ public:
+  explicit LayoutState(const Layout& layout) : layout_(layout) {}
+  virtual LightSpace compute(const LayoutInput& in);
+  // Adds passes before the shadow pass; returns the resources the shadow pass must read.
+  virtual std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) { return {}; }
+
+ protected:
+  const Layout& layout_;
+};
+
 class Layout {
  public:
   virtual ~Layout() = default;
@@ -59,6 +129,24 @@ class Layout {
   virtual std::string glslModule() const = 0;  // under shaders/, included by every pass using it
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual LightSpace compute(const LayoutInput& in) const = 0;
+  // Layouts with memory between frames or passes of their own return their own state.
+  virtual std::unique_ptr<LayoutState> createState() const { return std::make_unique<LayoutState>(*this); }
+};
+
+// Per-viewport state of a representation: owns the shadow-map targets (depth and what a texel
+// stores, one layer per light view), may add passes after the shadow pass (blur, mip-maps,
+// summed-area tables) and binds what its GLSL module samples.
+class RepresentationState : public PartState {
+ public:
+  // Allocates (or keeps) the targets: size x size texels, `layers` layers.
+  virtual void prepare(int size, int layers) = 0;
+  // Binds one layer of the targets for the shadow pass and clears it.
+  virtual void beginShadowLayer(int layer) = 0;
+  // Adds passes after the shadow pass (reading ctx.shadowMap); returns the resource the
+  // visibility and shading passes read.
+  virtual std::string addPasses(FrameGraph& graph, const PartContext& ctx) { return ctx.shadowMap; }
+  // Depth (or what stands for it) per layer, for the debug views.
+  virtual const Texture2D* depthTexture() const = 0;
 };
 
 class Representation {
@@ -66,30 +154,26 @@ class Representation {
   virtual ~Representation() = default;
   virtual std::string id() const = 0;
   virtual std::string help() const = 0;
-  virtual std::string glslModule() const = 0;  // defines representationVisibility(...)
+  // Defines representationVisibility(vec3 uvLayer, float receiverDepth) and
+  // representationFilterRadius().
+  virtual std::string glslModule() const = 0;
   virtual std::vector<ParamDecl> params() const { return {}; }
-  // Depth texture sampled with hardware comparison (sampler2DShadow) instead of raw values.
-  virtual bool compareSampler() const { return false; }
   // Fragment shader of the shadow-map pass; moment representations write their own targets.
   virtual std::string shadowMapFragment() const { return "passes/shadow.frag"; }
+  virtual std::unique_ptr<RepresentationState> createState() const = 0;
 };
 
 // Per-viewport state of an accumulation (history buffers, adaptive exponents, frame counters).
-class AccumulationState {
+class AccumulationState : public PartState {
  public:
-  virtual ~AccumulationState() = default;
   // cameraMoved: the camera differs from the previous frame's.
   virtual LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const { return {}; }
-  virtual void reset() {}  // camera cut: forget everything from earlier frames
   // Adds passes that read ctx.rawVisibility and write ctx.finalVisibility; returns false when
   // the accumulation does nothing, in which case the raw visibility is used directly.
   virtual bool addPasses(FrameGraph& graph, AccumulationContext& ctx) { return false; }
   // False when the accumulation's own pass computes the shadow test (and writes the raw
   // visibility itself), so the renderer adds no separate visibility pass.
   virtual bool needsVisibilityPass() const { return true; }
-  // Debug views this accumulation can draw (names), and the one-line status for the UI.
-  virtual std::vector<std::string> views() const { return {}; }
-  virtual std::string status() const { return ""; }
 };
 
 class Accumulation {

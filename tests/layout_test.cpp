@@ -21,7 +21,7 @@ static LightSpace computeFor(const std::string& preset, const Scene& scene, cons
 }
 
 static float depth01(const LightSpace& ls, const glm::vec3& p) {
-  return (-(ls.view * glm::vec4(p, 1.0f)).z - ls.nearPlane) / (ls.farPlane - ls.nearPlane);
+  return (-(ls.primary().view * glm::vec4(p, 1.0f)).z - ls.primary().nearPlane) / (ls.primary().farPlane - ls.primary().nearPlane);
 }
 
 TEST(Layout, FocusedCoversEveryVisibleReceiverAndTheCastersTowardTheLight) {
@@ -33,7 +33,7 @@ TEST(Layout, FocusedCoversEveryVisibleReceiverAndTheCastersTowardTheLight) {
       auto receivers = clipFrustumToBox(cameraView(cam), cameraProjection(cam, 16.0f / 9.0f), b);
       ASSERT_FALSE(receivers.empty()) << id << "/" << cam.name;
       for (const auto& p : receivers) {
-        glm::vec4 c = ls.viewProj * glm::vec4(p, 1.0f);
+        glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
         EXPECT_LE(std::abs(c.x / c.w), 1.0001f) << id << "/" << cam.name;
         EXPECT_LE(std::abs(c.y / c.w), 1.0001f) << id << "/" << cam.name;
         EXPECT_GE(depth01(ls, p), 0.0f);
@@ -44,7 +44,7 @@ TEST(Layout, FocusedCoversEveryVisibleReceiverAndTheCastersTowardTheLight) {
       for (const auto& p : boxCorners(b)) EXPECT_GE(depth01(ls, p), 0.0f) << id << "/" << cam.name;
       // Focusing is worth it: the focused window is no larger than the uniform one.
       LightSpace u = computeFor("uniform", scene, cam);
-      EXPECT_LE(ls.texelWorldSize, u.texelWorldSize * 1.2f) << id << "/" << cam.name;
+      EXPECT_LE(ls.primary().texelWorldSize, u.primary().texelWorldSize * 1.2f) << id << "/" << cam.name;
     }
   }
 }
@@ -57,7 +57,7 @@ TEST(Layout, LispsmCoversEveryVisibleReceiverAndTheirCasters) {
       Bounds b = scene.boundsAt(0);
       auto receivers = clipFrustumToBox(cameraView(cam), cameraProjection(cam, 16.0f / 9.0f), b);
       for (const auto& p : receivers) {
-        glm::vec4 c = ls.viewProj * glm::vec4(p, 1.0f);
+        glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
         ASSERT_GT(c.w, 0.0f) << id << "/" << cam.name;
         EXPECT_LE(std::abs(c.x / c.w), 1.0001f) << id << "/" << cam.name;
         EXPECT_LE(std::abs(c.y / c.w), 1.0001f) << id << "/" << cam.name;
@@ -80,8 +80,8 @@ TEST(Layout, LispsmPutsMoreTexelsNearTheViewer) {
   glm::vec3 p = cam.position + glm::normalize(glm::vec3(viewDir.x, 0.0f, viewDir.z)) * 3.0f;
   p.y = 0.0f;
   auto texelsPerMetre = [&](const LightSpace& ls) {
-    glm::vec4 a = ls.viewProj * glm::vec4(p, 1.0f), c = ls.viewProj * glm::vec4(p + glm::vec3(0.0f, 0.0f, 0.1f), 1.0f);
-    glm::vec4 d = ls.viewProj * glm::vec4(p + glm::vec3(0.1f, 0.0f, 0.0f), 1.0f);
+    glm::vec4 a = ls.primary().viewProj * glm::vec4(p, 1.0f), c = ls.primary().viewProj * glm::vec4(p + glm::vec3(0.0f, 0.0f, 0.1f), 1.0f);
+    glm::vec4 d = ls.primary().viewProj * glm::vec4(p + glm::vec3(0.1f, 0.0f, 0.0f), 1.0f);
     glm::vec2 pa = glm::vec2(a) / a.w;
     return 0.5f * ls.size / 0.1f * std::max(glm::length(glm::vec2(c) / c.w - pa), glm::length(glm::vec2(d) / d.w - pa));
   };
@@ -94,7 +94,7 @@ TEST(Layout, FocusedIsSmallerThanUniformOnALargeScene) {
   cam.position = glm::vec3(10, 6, 10);  // looking down at a patch of ground near the viewer
   cam.target = glm::vec3(0, 0, 0);
   cam.farPlane = 60;
-  EXPECT_LT(computeFor("standard", scene, cam).texelWorldSize, computeFor("uniform", scene, cam).texelWorldSize * 0.5f);
+  EXPECT_LT(computeFor("standard", scene, cam).primary().texelWorldSize, computeFor("uniform", scene, cam).primary().texelWorldSize * 0.5f);
 }
 
 TEST(Layout, SnappingMovesTheLightFrustumByWholeTexels) {
@@ -108,14 +108,14 @@ TEST(Layout, SnappingMovesTheLightFrustumByWholeTexels) {
     b.target += shift;
     LightSpace la = computeFor("standard", scene, a, {"layout.snap=on"});
     LightSpace lb = computeFor("standard", scene, b, {"layout.snap=on"});
-    if (la.texelWorldSize != lb.texelWorldSize) continue;  // the ladder stepped: a new grid
-    glm::vec2 texels = (lb.windowMin - la.windowMin) / la.texelWorldSize;
+    if (la.primary().texelWorldSize != lb.primary().texelWorldSize) continue;  // the ladder stepped: a new grid
+    glm::vec2 texels = (lb.primary().windowMin - la.primary().windowMin) / la.primary().texelWorldSize;
     EXPECT_NEAR(texels.x, std::round(texels.x), 1e-2f);
     EXPECT_NEAR(texels.y, std::round(texels.y), 1e-2f);
     ++whole;
     LightSpace ua = computeFor("standard", scene, a, {"layout.snap=off"});
     LightSpace ub = computeFor("standard", scene, b, {"layout.snap=off"});
-    glm::vec2 t = (ub.windowMin - ua.windowMin) / ua.texelWorldSize;
+    glm::vec2 t = (ub.primary().windowMin - ua.primary().windowMin) / ua.primary().texelWorldSize;
     if (std::abs(t.x - std::round(t.x)) > 0.05f || std::abs(t.y - std::round(t.y)) > 0.05f) ++fractional;
   }
   EXPECT_GE(whole, 10);      // the texel size stays put for most small moves
@@ -129,15 +129,15 @@ TEST(Layout, SpotLightGetsAPerspectiveMap) {
   scene.light.direction = glm::normalize(glm::vec3(-4, -6, -3));
   scene.light.fovDeg = 70;
   LightSpace ls = computeFor("standard", scene, scene.cameras.front());
-  EXPECT_TRUE(ls.perspective);
-  EXPECT_GT(ls.nearPlane, 0.0f);
+  EXPECT_TRUE(ls.primary().perspective);
+  EXPECT_GT(ls.primary().nearPlane, 0.0f);
   for (const auto& p : clipFrustumToBox(cameraView(scene.cameras.front()),
                                         cameraProjection(scene.cameras.front(), 16.0f / 9.0f), scene.boundsAt(0))) {
     // Only points inside the cone (a square map covers the cone's square around it) matter.
     float halfTan = std::tan(glm::radians(scene.light.fovDeg) * 0.5f);
-    glm::vec3 q = glm::vec3(ls.view * glm::vec4(p, 1.0f));
+    glm::vec3 q = glm::vec3(ls.primary().view * glm::vec4(p, 1.0f));
     if (-q.z <= 0.0f || std::abs(q.x / -q.z) > halfTan || std::abs(q.y / -q.z) > halfTan) continue;
-    glm::vec4 c = ls.viewProj * glm::vec4(p, 1.0f);
+    glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
     ASSERT_GT(c.w, 0.0f);
     EXPECT_LE(std::abs(c.x / c.w), 1.0001f);
     EXPECT_LE(std::abs(c.y / c.w), 1.0001f);

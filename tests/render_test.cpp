@@ -118,7 +118,7 @@ TEST(Render, StandardMatchesTheAnalyticBoxShadowExceptWithinOneTexel) {
                  &t.params, {}};
   LightSpace ls = t.layout->compute(li);
   // One texel of the map, as it lands on the ground (stretched by 1/cos of the light angle).
-  float band = ls.texelWorldSize / std::abs(glm::normalize(d).y);
+  float band = ls.primary().texelWorldSize / std::abs(glm::normalize(d).y);
   GroundCount c = compareGround(f, analyticShadow(d), band);
   EXPECT_GT(c.inside, 200);
   EXPECT_GT(c.outside, 5000);
@@ -139,7 +139,7 @@ TEST(Render, BiasRemovesAcneAtGrazingLightWithoutLosingContactShadow) {
     Technique t = makeTechnique("standard", {"shadowmap.size=1024"});
     LayoutInput li{&scene,    0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 320.0f / 180.0f),
                    &t.params, {}};
-    float band = 2.0f * t.layout->compute(li).texelWorldSize / std::abs(glm::normalize(d).y);
+    float band = 2.0f * t.layout->compute(li).primary().texelWorldSize / std::abs(glm::normalize(d).y);
     counts[mode] = compareGround(f, poly, band);
     EXPECT_EQ(f.nonfinite(), 0);
   }

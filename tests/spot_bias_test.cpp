@@ -1,5 +1,5 @@
 // Normal-offset and slope bias on perspective (spot) maps: they ask the layout for the texel
-// size before layoutProject rejects points at or behind the light's plane, so that size must
+// size before the layout rejects points at or behind the light's plane, so that size must
 // stay finite and sane there, and no visibility may become NaN.
 #include "gl_test_util.h"
 
@@ -34,8 +34,8 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 P = vec3(float(px.x % 16) - 7.5, 4.0 + float(px.y / 16), float(px.y % 16) - 7.5) * vec3(0.5, 1.0, 0.5);
   vec3 N = normalize(vec3(0.3, 1.0, 0.2));
-  vec4 sc = layoutProject(biasReceiverPosition(P, N, 0.5));
-  o_probe = vec4(layoutTexelWorldSize(P), sc.w == 0.0 ? vec3(0.0) : sc.xyz);
+  ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, 0.5, 0), 0);
+  o_probe = vec4(layoutTexelWorldSize(P, 0), sc.view < 0 ? vec3(0.0) : vec3(sc.uv, sc.depth));
 }
 )";
 
@@ -49,9 +49,9 @@ TEST(SpotBias, TexelSizeIsFiniteAndSaneAtAndBehindTheLightPlane) {
   Technique t = makeTechnique("standard", {"shadowmap.size=256", "bias.mode=normal-offset"});
   LayoutInput li{&scene, 0.0, cameraView(scene.cameras[0]), cameraProjection(scene.cameras[0], 1.0f), &t.params, {}};
   LightSpace ls = t.layout->compute(li);
-  ASSERT_TRUE(ls.perspective);
+  ASSERT_TRUE(ls.primary().perspective);
   // What Renderer::techniquePrelude writes for this technique and scene.
-  const std::string prelude = "#define SL_BIAS_MODE 3\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#include \"" +
+  const std::string prelude = "#define SL_BIAS_MODE 3\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#define SL_LIGHT_VIEWS 1\n#include \"" +
                               t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
                               t.representation->glslModule() + "\"\n#endif\n";
   Program& p = h.shaders.get(
@@ -65,6 +65,9 @@ TEST(SpotBias, TexelSizeIsFiniteAndSaneAtAndBehindTheLightPlane) {
   fbo.bind();
   p.use();
   setTechniqueUniforms(p, t, ls, scene.light);
+  LightViewsBuffer views;
+  views.upload(ls);
+  views.bind();
   glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -1,5 +1,6 @@
 #include "gl/gl_util.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <stdexcept>
@@ -62,6 +63,23 @@ Texture2D::Texture2D(GLenum internalFormat, int width, int height, const std::st
   label(GL_TEXTURE, id_, labelText);
 }
 
+Texture2D Texture2D::array(GLenum internalFormat, int width, int height, int layers, int levels,
+                           const std::string& labelText) {
+  Texture2D t;
+  t.width_ = width;
+  t.height_ = height;
+  t.layers_ = std::max(layers, 1);
+  t.levels_ = std::max(levels, 1);
+  t.format_ = internalFormat;
+  t.target_ = GL_TEXTURE_2D_ARRAY;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t.id_);
+  glTextureStorage3D(t.id_, t.levels_, internalFormat, width, height, t.layers_);
+  t.setFilter(GL_NEAREST, GL_NEAREST);
+  t.setClampToEdge();
+  label(GL_TEXTURE, t.id_, labelText);
+  return t;
+}
+
 Texture2D::~Texture2D() {
   if (id_) glDeleteTextures(1, &id_);
 }
@@ -74,6 +92,9 @@ Texture2D& Texture2D::operator=(Texture2D&& o) noexcept {
     width_ = o.width_;
     height_ = o.height_;
     format_ = o.format_;
+    target_ = o.target_;
+    layers_ = o.layers_;
+    levels_ = o.levels_;
     o.id_ = 0;
   }
   return *this;
@@ -93,7 +114,7 @@ std::vector<float> Texture2D::readFloats(int channels) const {
   static const GLenum formats[] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
   GLenum fmt =
       (format_ == GL_DEPTH_COMPONENT32F || format_ == GL_DEPTH_COMPONENT24) ? GL_DEPTH_COMPONENT : formats[channels];
-  std::vector<float> out(static_cast<size_t>(width_) * height_ * channels);
+  std::vector<float> out(static_cast<size_t>(width_) * height_ * std::max(layers_, 1) * channels);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTextureImage(id_, 0, fmt, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
   return out;
@@ -147,6 +168,31 @@ void Framebuffer::attach(const std::vector<const Texture2D*>& colors, const Text
     width_ = depth->width();
     height_ = depth->height();
   }
+  if (drawBuffers.empty())
+    glNamedFramebufferDrawBuffer(id_, GL_NONE);
+  else
+    glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+  GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+}
+
+void Framebuffer::attachLayer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, int layer,
+                              int level) {
+  std::vector<GLenum> drawBuffers;
+  auto attachOne = [&](GLenum point, const Texture2D* t) {
+    if (t->layers() > 0)
+      glNamedFramebufferTextureLayer(id_, point, t->id(), level, layer);
+    else
+      glNamedFramebufferTexture(id_, point, t->id(), level);
+    width_ = std::max(1, t->width() >> level);
+    height_ = std::max(1, t->height() >> level);
+  };
+  for (size_t i = 0; i < colors.size(); ++i) {
+    attachOne(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), colors[i]);
+    drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
+  }
+  if (depth) attachOne(GL_DEPTH_ATTACHMENT, depth);
   if (drawBuffers.empty())
     glNamedFramebufferDrawBuffer(id_, GL_NONE);
   else

@@ -27,6 +27,10 @@ class Texture2D {
  public:
   Texture2D() = default;
   Texture2D(GLenum internalFormat, int width, int height, const std::string& label);
+  // A GL_TEXTURE_2D_ARRAY of `layers` (>= 1) with `levels` mip levels (shadow maps of layouts
+  // with several light views, representations with mip-maps).
+  static Texture2D array(GLenum internalFormat, int width, int height, int layers, int levels,
+                         const std::string& label);
   ~Texture2D();
   Texture2D(Texture2D&& o) noexcept;
   Texture2D& operator=(Texture2D&& o) noexcept;
@@ -37,6 +41,9 @@ class Texture2D {
   int width() const { return width_; }
   int height() const { return height_; }
   GLenum format() const { return format_; }
+  GLenum target() const { return target_; }
+  int layers() const { return layers_; }  // 0 for a plain 2D texture
+  int levels() const { return levels_; }
   explicit operator bool() const { return id_ != 0; }
   void setFilter(GLenum minFilter, GLenum magFilter);
   void setClampToEdge();
@@ -47,8 +54,8 @@ class Texture2D {
 
  private:
   GLuint id_ = 0;
-  int width_ = 0, height_ = 0;
-  GLenum format_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 0, levels_ = 1;
+  GLenum format_ = 0, target_ = GL_TEXTURE_2D;
 };
 
 class Framebuffer {
@@ -65,6 +72,8 @@ class Framebuffer {
   // Attaches colour targets in order (COLOR0..n) and an optional depth target; throws if
   // the driver reports the combination incomplete.
   void attach(const std::vector<const Texture2D*>& colors, const Texture2D* depth);
+  // The same with one layer (and mip level) of array textures attached.
+  void attachLayer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, int layer, int level = 0);
   void bind() const;
 
  private:

@@ -34,8 +34,8 @@ std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, flo
 }  // namespace
 
 void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
-  const std::string prelude = techniquePrelude(vp.technique, vp.lightSpace);
-  const std::string sm = "shadowmap" + tag;
+  const std::string prelude = techniquePrelude(vp);
+  const std::string sm = vp.shadowResource_;
   const std::string visibility = vp.accumulated_ ? "visibility.final" + tag : "visibility.raw" + tag;
   const Texture2D* visTex = vp.visibilityTexture();
 
@@ -44,7 +44,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
     if (!vp.views_.count(name)) return;
     const std::string modules = needsTechnique ? prelude : "";
     Texture2D* target = vp.views_[name].get();
-    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, modules, visTex] {
+    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, modules, visTex, needsTechnique] {
              ProgramSpec spec{
                  "view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
              Program& p = shaders_.get(spec);
@@ -53,14 +53,16 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              fbo.attach({target}, nullptr);
              fbo.bind();
              p.use();
-             setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-             bindGBuffer(p, visTex);
-             glBindTextureUnit(4, vp.shadowMap_->id());
-             glBindSampler(4, shadowSampler_);
-             p.set("u_shadowMap", 4);
+             TextureUnits units;
+             if (needsTechnique)
+               bindTechnique(p, units, vp);
+             else
+               setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+             bindGBuffer(p, units, visTex);
+             // The raw depth of each layer (also under compare representations: the view shows it).
+             units.bind(p, "u_shadowDepth", vp.representation->depthTexture()->id());
              p.set("u_viewSize", glm::vec2(target->width(), target->height()));
              drawFullscreen();
-             glBindSampler(4, 0);
            }});
     g.requestSink("view." + name + tag);
   };
@@ -97,7 +99,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
                                   radius * 6.0f) *
                  glm::lookAt(eye, center, glm::vec3(0, 1, 0));
              glEnable(GL_DEPTH_TEST);
-             PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p) {
+             PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p, TextureUnits&) {
                p.set("u_viewProj", overview);
                p.set("u_lightDirection", scene_->light.direction);
              });
@@ -108,7 +110,8 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              cut.farPlane = std::min(cut.farPlane, glm::length(in.camera.position - center) + radius);
              glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
              addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f), glm::vec3(1.0f, 0.85f, 0.1f));
-             addBox(lines, unprojectCube(vp.lightSpace.viewProj, -1.0f, 1.0f), glm::vec3(0.2f, 0.9f, 1.0f));
+             for (const LightView& lv : vp.lightSpace.views)
+               addBox(lines, unprojectCube(lv.viewProj, -1.0f, 1.0f), glm::vec3(0.2f, 0.9f, 1.0f));
              glNamedBufferSubData(linesVbo_, 0,
                                   static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
                                   lines.data());

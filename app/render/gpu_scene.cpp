@@ -81,7 +81,7 @@ const Program* PassPrograms::get(int variant) {
     Program& p = shaders_.get(spec);
     if (p.valid()) {
       p.use();
-      setup_(p);
+      setup_(p, units_);
       programs_[variant] = &p;
     }
   }
@@ -109,10 +109,8 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
       program->set("u_prevModel", inst.transformAt(prevTime));
       program->set("u_baseColor", mat.baseColor);
       program->set("u_alphaCutoff", mat.alphaCutoff);
-      if (mat.baseColorTexture >= 0) {
-        glBindTextureUnit(8, textures[static_cast<size_t>(mat.baseColorTexture)]);
-        program->set("u_baseColorTexture", 8);
-      }
+      if (mat.baseColorTexture >= 0)
+        programs.units().bind(*program, "u_baseColorTexture", textures[static_cast<size_t>(mat.baseColorTexture)]);
       if (cullFace && !mat.doubleSided) {
         glEnable(GL_CULL_FACE);
         glCullFace(cullFace);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gl/shader_library.h"
+#include "gl/texture_units.h"
 #include "scene/scene.h"
 
 #include <epoxy/gl.h>
@@ -24,17 +25,20 @@ int materialVariant(const Material& m);
 std::string materialDefines(int variant);
 
 // The programs one pass draws the scene with: `base` plus each variant's defines, built on
-// first use, then `setup` (the pass's uniforms) runs once per program per pass.
+// first use, then `setup` (the pass's uniforms and textures) runs once per program per pass.
+// The pass's texture units are shared by its programs, the materials' textures included.
 class PassPrograms {
  public:
-  PassPrograms(ShaderLibrary& shaders, ProgramSpec base, std::function<void(const Program&)> setup)
+  PassPrograms(ShaderLibrary& shaders, ProgramSpec base, ProgramSetup setup)
       : shaders_(shaders), base_(std::move(base)), setup_(std::move(setup)) {}
   const Program* get(int variant);  // bound with glUseProgram; nullptr when it does not build
+  TextureUnits& units() { return units_; }
 
  private:
   ShaderLibrary& shaders_;
   ProgramSpec base_;
-  std::function<void(const Program&)> setup_;
+  ProgramSetup setup_;
+  TextureUnits units_;
   std::array<const Program*, 4> programs_{};
   std::array<bool, 4> tried_{};
 };

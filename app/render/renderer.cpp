@@ -14,10 +14,12 @@ const std::vector<std::string>& commonViewNames() {
   return names;
 }
 
-Viewport::Viewport(Technique t) : technique(std::move(t)), accumulation(technique.accumulation->createState()) {}
+Viewport::Viewport(Technique t) : technique(std::move(t)) { setTechnique(technique); }
 
 void Viewport::setTechnique(Technique t) {
   technique = std::move(t);
+  layout = technique.layout->createState();
+  representation = technique.representation->createState();
   accumulation = technique.accumulation->createState();
 }
 
@@ -28,43 +30,31 @@ const Texture2D* Viewport::viewTexture(const std::string& name) const {
 
 std::vector<std::string> Viewport::availableViews() const {
   std::vector<std::string> v = commonViewNames();
-  for (const auto& extra : accumulation->views()) v.push_back(extra);
+  for (const PartState* part : {static_cast<const PartState*>(layout.get()),
+                                static_cast<const PartState*>(representation.get()),
+                                static_cast<const PartState*>(accumulation.get())})
+    for (const auto& extra : part->views()) v.push_back(extra);
   return v;
 }
 
-// Clamped samplers for the shadow map: raw depth (nearest) or hardware comparison (linear).
-static GLuint makeShadowSampler(bool compare, const std::string& name) {
-  GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
-  const GLint filter = compare ? GL_LINEAR : GL_NEAREST;
-  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  if (compare) {
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  }
-  label(GL_SAMPLER, sampler, name);
-  return sampler;
+void Renderer::bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const {
+  units.bind(p, "u_gPosition", gPosition_->id());
+  units.bind(p, "u_gNormal", gNormal_->id());
+  units.bind(p, "u_gAlbedo", gAlbedo_->id());
+  units.bind(p, "u_visibility", visibility->id());
 }
 
-void Renderer::bindGBuffer(const Program& p, const Texture2D* visibility) const {
-  glBindTextureUnit(0, gPosition_->id());
-  glBindTextureUnit(1, gNormal_->id());
-  glBindTextureUnit(2, gAlbedo_->id());
-  glBindTextureUnit(3, visibility->id());
-  p.set("u_gPosition", 0);
-  p.set("u_gNormal", 1);
-  p.set("u_gAlbedo", 2);
-  p.set("u_visibility", 3);
+void Renderer::bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const {
+  setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+  vp.lightViews_->bind();
+  vp.layout->bind(p, units);
+  vp.representation->bind(p, units);
+  vp.accumulation->bind(p, units);
 }
 
 Renderer::Renderer(ShaderLibrary& shaders) : shaders_(shaders) {
   glCreateVertexArrays(1, &emptyVao_);
   label(GL_VERTEX_ARRAY, emptyVao_, "fullscreen triangle");
-  shadowSampler_ = makeShadowSampler(false, "shadow map: raw depth");
-  compareSampler_ = makeShadowSampler(true, "shadow map: hardware compare");
   glCreateBuffers(1, &linesVbo_);
   glNamedBufferData(linesVbo_, 4096 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
   glCreateVertexArrays(1, &linesVao_);
@@ -82,8 +72,6 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(1, &emptyVao_);
   glDeleteVertexArrays(1, &linesVao_);
   glDeleteBuffers(1, &linesVbo_);
-  glDeleteSamplers(1, &shadowSampler_);
-  glDeleteSamplers(1, &compareSampler_);
 }
 
 void Renderer::setScene(const Scene& scene) {
@@ -115,13 +103,7 @@ void Renderer::ensureTargets(int w, int h, bool withMotion) {
 }
 
 void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
-  int size = vp.technique.params.i("shadowmap.size");
-  if (size != vp.shadowSize_ || !vp.shadowMap_) {
-    vp.shadowSize_ = size;
-    vp.shadowMap_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, size, size, "shadow map");
-    vp.shadowFbo_ = Framebuffer("shadow map");
-    vp.shadowFbo_.attach({}, vp.shadowMap_.get());
-  }
+  if (!vp.lightViews_) vp.lightViews_ = std::make_unique<LightViewsBuffer>();
   if (w != vp.targetsW_ || h != vp.targetsH_ || !vp.color_) {
     vp.targetsW_ = w;
     vp.targetsH_ = h;
@@ -142,13 +124,16 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
     if (!vp.views_.count(name)) vp.views_[name] = std::make_unique<Texture2D>(GL_RGBA8, w, h, "view." + name);
 }
 
-std::string Renderer::techniquePrelude(const Technique& t, const LightSpace& ls) const {
+std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // Per-technique and per-scene constants become defines, not uniform branches: a software
   // rasterizer executes both sides of every branch. Representations reconstruct visibility per
   // fragment; vertex stages only need the layout.
+  const Technique& t = vp.technique;
   std::string defines = "#define SL_BIAS_MODE " + std::to_string(t.params.i("bias.mode")) + "\n";
   if (scene_->light.type == Light::Type::Spot) defines += "#define SL_SPOT_LIGHT\n";
-  if (ls.perspective) defines += "#define SL_PERSPECTIVE_MAP\n";
+  if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";
+  defines += "#define SL_LIGHT_VIEWS " + std::to_string(vp.lightSpace.views.size()) + "\n";
+  defines += vp.layout->defines() + vp.representation->defines() + vp.accumulation->defines();
   return defines + "#include \"" + t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
          t.representation->glslModule() + "\"\n#endif\n";
 }
@@ -172,11 +157,10 @@ void Renderer::drawSky() {
   for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void Renderer::drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup,
-                                double time) {
+void Renderer::drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time) {
   glEnable(GL_DEPTH_TEST);
-  PassPrograms programs(shaders_, spec, [this, &setup](const Program& p) {
-    setup(p);
+  PassPrograms programs(shaders_, spec, [this, &setup](const Program& p, TextureUnits& units) {
+    setup(p, units);
     p.set("u_viewProj", proj_ * view_);
     p.set("u_prevViewProj", prevProj_ * prevView_);
     p.set("u_prevView", prevView_);
@@ -191,15 +175,10 @@ void Renderer::drawFullscreen() {
   glBindVertexArray(0);
 }
 
-// Every parameter reaches the shaders as a float uniform named after its key, plus the
-// layout's matrices and the light; modules declare only what they use.
+// Every parameter reaches the shaders as a float uniform named after its key, plus the map size
+// and the light; modules declare only what they use. The light views are a uniform block.
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light) {
   for (const auto& d : t.params.decls()) p.set(uniformName(d.key), static_cast<float>(t.params.get(d.key)));
-  p.set("u_lightView", ls.view);
-  p.set("u_lightViewProj", ls.viewProj);
-  p.set("u_lightNear", ls.nearPlane);
-  p.set("u_lightFar", ls.farPlane);
-  p.set("u_lightTexelWorld", ls.texelWorldSize);
   p.set("u_shadowMapSize", static_cast<float>(ls.size));
   p.set("u_lightDirection", glm::normalize(light.direction));
   p.set("u_lightPosition", light.position);
@@ -234,7 +213,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
                    {"gbuffer",
                     {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
                     needMotion ? "#define SL_WRITE_MOTION\n" : ""},
-                   [this](const Program& p) {
+                   [this](const Program& p, TextureUnits&) {
                      p.set("u_viewProj", proj_ * view_);
                      p.set("u_prevViewProj", prevProj_ * prevView_);
                    });
@@ -303,6 +282,31 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   ++frameIndex_;
 }
 
+// Layout passes, then the shadow pass (one draw per light view into the representation's
+// layers), then the representation's passes; the renderer only orders what the parts declare.
+void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
+                             const FrameInput& in) {
+  const std::string prelude = techniquePrelude(vp);
+  g.add({"shadowmap" + tag, reads, {"shadowmap" + tag}, [this, &vp, prelude, &in] {
+           const Technique& t = vp.technique;
+           glEnable(GL_DEPTH_TEST);
+           static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
+           const ProgramSpec spec{
+               "shadowmap " + t.layout->id() + "+" + t.representation->id(),
+               {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
+               prelude};
+           for (size_t layer = 0; layer < vp.lightSpace.views.size(); ++layer) {
+             vp.representation->beginShadowLayer(static_cast<int>(layer));
+             PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
+               bindTechnique(p, units, vp);
+               p.set("u_shadowView", static_cast<int>(layer));
+             });
+             gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
+           }
+           glDisable(GL_DEPTH_TEST);
+         }});
+}
+
 void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
   const std::string tag = "[" + std::to_string(index) + "]";
   Technique& t = vp.technique;
@@ -314,40 +318,43 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.params = &t.params;
   const bool cameraMoved = view_ != prevView_ || proj_ != prevProj_;
   li.jitter = vp.accumulation->jitter(t.params, cameraMoved);
-  vp.lightSpace = t.layout->compute(li);
-  const std::string prelude = techniquePrelude(t, vp.lightSpace);
-  const std::string sm = "shadowmap" + tag, raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
+  vp.lightSpace = vp.layout->compute(li);
+  if (vp.lightSpace.views.empty() || vp.lightSpace.views.size() > static_cast<size_t>(kMaxLightViews))
+    throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
+                             " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
+  vp.lightViews_->upload(vp.lightSpace);
+  vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
+  const std::string prelude = techniquePrelude(vp);
+  const std::string raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
-  const std::string& shadowPrelude = prelude;
-  g.add({"shadowmap" + tag, {}, {sm}, [this, &vp, shadowPrelude, &in] {
-           Technique& t = vp.technique;
-           vp.shadowFbo_.bind();
-           glClearNamedFramebufferfi(vp.shadowFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-           glEnable(GL_DEPTH_TEST);
-           PassPrograms programs(
-               shaders_,
-               {"shadowmap " + t.layout->id(),
-                {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
-                shadowPrelude},
-               [this, &vp](const Program& p) { setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light); });
-           static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
-           gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
-           glDisable(GL_DEPTH_TEST);
-         }});
-  // Binds the G-buffer, shadow map and sampler a visibility-computing program reads.
-  auto bindVisibilityInputs = [this, &vp](const Program& p) {
-    setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-    glBindTextureUnit(0, gPosition_->id());
-    glBindTextureUnit(1, gNormal_->id());
-    glBindTextureUnit(2, vp.shadowMap_->id());
-    glBindSampler(2, vp.technique.representation->compareSampler() ? compareSampler_ : shadowSampler_);
-    glBindTextureUnit(3, gAlbedo_->id());
-    glBindTextureUnit(9, gSurface_->id());
-    p.set("u_gPosition", 0);
-    p.set("u_gNormal", 1);
-    p.set("u_shadowMap", 2);
-    p.set("u_gAlbedo", 3);
-    p.set("u_gSurface", 9);
+  PartContext part;
+  part.viewportTag = tag;
+  part.scene = scene_;
+  part.time = in.time;
+  part.shaders = &shaders_;
+  part.params = &t.params;
+  part.lightSpace = &vp.lightSpace;
+  part.view = view_;
+  part.proj = proj_;
+  part.width = in.width;
+  part.height = in.height;
+  part.cameraMoved = cameraMoved;
+  part.frameIndex = frameIndex_;
+  part.shadowMap = "shadowmap" + tag;
+  part.drawFullscreen = [this] { drawFullscreen(); };
+  part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
+  addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
+  // What the visibility tests read: the shadow map, or what the representation made of it.
+  const std::string sm = vp.representation->addPasses(g, part);
+  vp.shadowResource_ = sm;
+
+  // Binds the G-buffer and every part's inputs on a visibility-computing program.
+  auto bindVisibilityInputs = [this, &vp](const Program& p, TextureUnits& units) {
+    bindTechnique(p, units, vp);
+    units.bind(p, "u_gPosition", gPosition_->id());
+    units.bind(p, "u_gNormal", gNormal_->id());
+    units.bind(p, "u_gAlbedo", gAlbedo_->id());
+    units.bind(p, "u_gSurface", gSurface_->id());
   };
 
   if (t.accumulation->passesThrough()) {
@@ -363,7 +370,6 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
              glClearNamedFramebufferfv(vp.forwardFbo_.id(), GL_COLOR, 1, background);
              glClearNamedFramebufferfi(vp.forwardFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
              drawSceneForward(spec, bindVisibilityInputs, in.time);
-             glBindSampler(2, 0);
              drawSky();
            }});
     g.requestSink("color" + tag);
@@ -383,9 +389,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
              if (!p.valid()) return;
              vp.visibilityFbo_.bind();
              p.use();
-             bindVisibilityInputs(p);
+             TextureUnits units;
+             bindVisibilityInputs(p, units);
              drawFullscreen();
-             glBindSampler(2, 0);
            }});
 
   AccumulationContext ctx;
@@ -415,7 +421,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.color = "color" + tag;
   ctx.colorTex = vp.color_.get();
   ctx.depthTex = vp.depth_.get();
-  ctx.drawScene = [this, &in](const ProgramSpec& spec, const std::function<void(const Program&)>& setup) {
+  ctx.drawScene = [this, &in](const ProgramSpec& spec, const ProgramSetup& setup) {
     drawSceneForward(spec, setup, in.time);
   };
   ctx.drawSky = [this] { drawSky(); };
@@ -439,8 +445,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
            if (!p.valid()) return;
            vp.colorFbo_.bind();
            p.use();
+           TextureUnits units;
            setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-           bindGBuffer(p, visTex);
+           bindGBuffer(p, units, visTex);
            drawFullscreen();
          }});
   g.requestSink("color" + tag);

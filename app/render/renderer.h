@@ -5,7 +5,9 @@
 
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
+#include "gl/texture_units.h"
 #include "render/frame_graph.h"
+#include "render/light_views_buffer.h"
 #include "technique.h"
 
 #include <functional>
@@ -18,7 +20,8 @@ namespace sl {
 
 struct GpuScene;
 
-// Uploads every technique parameter as float uniform u_<key> plus layout matrices and light.
+// Uploads every technique parameter as float uniform u_<key>, the shadow-map size and the light.
+// (The light views themselves are a uniform block: LightViewsBuffer.)
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
 
 // Names of the debug views every technique offers; accumulations add their own.
@@ -44,10 +47,11 @@ struct AccumulationContext {
   std::map<std::string, Texture2D*> viewTargets;
   // For accumulations that run the shadow test and the shading in their own pass, as the paper
   // does with multiple render targets: the technique's GLSL modules (a ProgramSpec prelude), a
-  // binder for the G-buffer (units 0 position, 1 normal, 3 albedo), the shadow map (unit 2) and
-  // the technique's uniforms, and the colour target. Such a pass writes rawVisibility itself.
+  // binder for the G-buffer (u_gPosition, u_gNormal, u_gAlbedo, u_gSurface), every part's
+  // bindings (shadow map, light views) and the technique's uniforms, and the colour target. Such
+  // a pass writes rawVisibility itself.
   std::string techniquePrelude;
-  std::function<void(const Program&)> bindTechniqueInputs;
+  std::function<void(const Program&, TextureUnits&)> bindTechniqueInputs;
   std::string shadowMap;  // resource
   std::string color;      // resource
   Texture2D* colorTex = nullptr;
@@ -56,7 +60,7 @@ struct AccumulationContext {
   // pass's uniforms on each, then u_viewProj, u_prevViewProj, u_prevView, per-instance
   // transforms and materials are set; depth test on) and the sky (colour attachment 0 only)
   // into the bound framebuffer.
-  std::function<void(const ProgramSpec&, const std::function<void(const Program&)>&)> drawScene;
+  std::function<void(const ProgramSpec&, const std::function<void(const Program&, TextureUnits&)>&)> drawScene;
   std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
   // The raw test must be written even when no view of this frame reads it (readback, tests).
@@ -72,6 +76,9 @@ class Viewport {
  public:
   explicit Viewport(Technique technique);
   Technique technique;
+  // Per-viewport state of each part (one shape: targets, passes, bindings, defines, views).
+  std::unique_ptr<LayoutState> layout;
+  std::unique_ptr<RepresentationState> representation;
   std::unique_ptr<AccumulationState> accumulation;
   std::vector<std::string> shownViews;  // debug views to draw this frame (others are culled)
   LightSpace lightSpace;                // of the last frame
@@ -86,10 +93,12 @@ class Viewport {
 
  private:
   friend class Renderer;
-  std::unique_ptr<Texture2D> shadowMap_, rawVisibility_, finalVisibility_, color_, depth_;
+  std::unique_ptr<Texture2D> rawVisibility_, finalVisibility_, color_, depth_;
   std::map<std::string, std::unique_ptr<Texture2D>> views_;
-  Framebuffer shadowFbo_, visibilityFbo_, colorFbo_, forwardFbo_;
-  int targetsW_ = 0, targetsH_ = 0, shadowSize_ = 0;
+  Framebuffer visibilityFbo_, colorFbo_, forwardFbo_;
+  std::unique_ptr<LightViewsBuffer> lightViews_;
+  int targetsW_ = 0, targetsH_ = 0;
+  std::string shadowResource_;  // what the visibility tests read (the representation's output)
   bool accumulated_ = false;
   const Texture2D* shownVisibility_ = nullptr;  // finalVisibility_ or the accumulation's own texture
 };
@@ -133,12 +142,16 @@ class Renderer {
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
-  std::string techniquePrelude(const Technique& t, const LightSpace& ls) const;
+  std::string techniquePrelude(const Viewport& vp) const;
+  // The technique's uniforms and every part's bindings (light views, shadow map, ...).
+  void bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const;
+  void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
+                     const FrameInput& in);
   void drawFullscreen();
-  // Units 0-3: position, normal, albedo, a visibility (u_gPosition, u_gNormal, u_gAlbedo, u_visibility).
-  void bindGBuffer(const Program& p, const Texture2D* visibility) const;
+  // u_gPosition, u_gNormal, u_gAlbedo and a visibility (u_visibility).
+  void bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const;
   void drawSky();
-  void drawSceneForward(const ProgramSpec& spec, const std::function<void(const Program&)>& setup, double time);
+  void drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time);
 
   ShaderLibrary& shaders_;
   const Scene* scene_ = nullptr;
@@ -148,7 +161,7 @@ class Renderer {
   bool gHasMotion_ = false;
   bool gbufferFresh_ = false;
   int width_ = 0, height_ = 0;
-  GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0, shadowSampler_ = 0, compareSampler_ = 0;
+  GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;
   glm::mat4 prevView_{1.0f}, prevProj_{1.0f};
   double prevTime_ = 0.0;
   bool havePrev_ = false;

@@ -26,7 +26,7 @@ void main() {
   vec3 F = surfaceFacetNormal();
   materialAlphaTest(v_uv);
   vec3 P = v_world, N = surfaceNormal();
-  vec3 coord;
+  vec4 coord;
   vec2 raw = visibilityTermAt(P, N, F, coord);
   float f = raw.x;
   float c = pcFinite(raw.y) ? clamp(raw.y, 0.0, 1.0) : 0.0;

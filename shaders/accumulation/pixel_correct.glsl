@@ -103,7 +103,7 @@ PcHistory pcLookupFrom(vec4 m, float expected) {
 // u_pc_reject replaces it when it is unambiguous: confident, or the same at the four shadow-map
 // positions one texel around it (the test's own input would not change under any jitter, so the
 // history is stale: a caster moved). Needs the technique modules (visibility_term.glsl).
-bool pcRejectHistory(vec3 coord, float f, float c, float history) {
+bool pcRejectHistory(vec4 coord, float f, float c, float history) {
   if (u_pc_reject >= 1.0 || abs(f - history) <= u_pc_reject) return false;
   if (c >= u_pc_reject_confidence) return true;
 #ifdef PC_REJECT_NEIGHBOURS
@@ -114,7 +114,7 @@ bool pcRejectHistory(vec3 coord, float f, float c, float history) {
 }
 
 // History for the update, with the rejection rule applied; coord from visibilityTermAt.
-PcHistory pcHistoryFrom(vec4 motion, float expected, vec3 coord, float f, float c) {
+PcHistory pcHistoryFrom(vec4 motion, float expected, vec4 coord, float f, float c) {
   PcHistory h = pcLookupFrom(motion, expected);
   if (h.state == PC_VALID && pcRejectHistory(coord, f, c, h.s)) h.state = PC_REJECTED;
   return h;
@@ -126,7 +126,7 @@ PcHistory pcHistory(ivec2 pixel, vec3 P, vec3 N, float f, float c) {
   vec4 m = texelFetch(u_gMotion, pixel, 0);
   vec4 v = u_invPrevProj * vec4(m.xyz, 1.0);
   float expected = abs(v.w) > 1e-20 ? -v.z / v.w : -1.0;
-  vec3 coord;
+  vec4 coord;
   visibilityTermAt(P, N, gbufferFacetNormal(pixel, N), coord);
   return pcHistoryFrom(m, expected, coord, f, c);
 }

@@ -8,17 +8,17 @@ uniform float u_bias_slope;
 uniform float u_bias_normal;
 
 // Receiver position moved along its normal (normal-offset shadows).
-vec3 biasReceiverPosition(vec3 p, vec3 n, float cosTheta) {
+vec3 biasReceiverPosition(vec3 p, vec3 n, float cosTheta, int view) {
 #if SL_BIAS_MODE == 3
   float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-  return p + n * (u_bias_normal * layoutTexelWorldSize(p) * sinTheta);
+  return p + n * (u_bias_normal * layoutTexelWorldSize(p, view) * sinTheta);
 #else
   return p;
 #endif
 }
 
 // Depth offset subtracted from the receiver before the comparison.
-float biasDepth(vec3 p, float cosTheta) {
+float biasDepth(vec3 p, float cosTheta, int view) {
 #if SL_BIAS_MODE == 0
   return 0.0;
 #else
@@ -29,7 +29,7 @@ float biasDepth(vec3 p, float cosTheta) {
     // reads texels r away from the receiver sees that change over r more texels.
     float tanTheta = clamp(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4), 0.0, 20.0);
     float texels = u_bias_slope + representationFilterRadius();
-    bias += texels * tanTheta * layoutTexelWorldSize(p) * layoutDepthScale();
+    bias += texels * tanTheta * layoutTexelWorldSize(p, view) * layoutDepthScale(view);
   }
 #endif
   return bias;

@@ -4,29 +4,44 @@
 #include "common/light.glsl"
 #include "common/bias.glsl"
 
-// x: visibility (1 = lit), y: confidence in [0,1] (1 = the sample sat on a texel centre).
-// N: shading normal, F: the triangle's own normal (same side). coord: where the test read the map
-// (uv, biased receiver depth); z < -1 when no map lookup decided it (facing away, outside the
-// cone, outside the map).
-vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec3 coord) {
-  coord = vec3(0.0, 0.0, -2.0);
+// The test in one light view: x visibility (1 = lit), y confidence in [0,1] (1 = the sample
+// sat on a texel centre). coord: where it read the map (uv, biased receiver depth, view); z < -1
+// when the point is outside the view's map (lit: nothing was rendered as a caster there).
+vec2 shadowTestIn(vec3 P, vec3 N, float cosTheta, int view, out vec4 coord) {
+  coord = vec4(0.0, 0.0, -2.0, -1.0);
+  ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, cosTheta, view), view);
+  if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return vec2(1.0, 0.0);
+  coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
+  float visibility = representationVisibility(vec3(coord.xy, coord.w), coord.z);
+  vec2 texelPos = sc.uv * u_shadowMapSize;
+  vec2 fromCenter = abs(texelPos - (floor(texelPos) + 0.5));
+  return vec2(visibility, 1.0 - 2.0 * max(fromCenter.x, fromCenter.y));
+}
+
+// x: visibility (1 = lit), y: confidence. N: shading normal, F: the triangle's own normal (same
+// side). coord: where the test read the map (uv, biased receiver depth, view; of the first view
+// when two are blended); z < -1 when no map lookup decided it (facing away, outside the cone,
+// outside the map).
+vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {
+  coord = vec4(0.0, 0.0, -2.0, -1.0);
   vec3 L = directionToLight(P);
   float cosTheta = dot(N, L);
   // Facing away (the shading normal, or the triangle itself: the shadow terminator, where the
   // surface shadows itself) or outside the cone: unlit whatever the map says, as the reference.
   if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P) == 0.0) return vec2(0.0, 1.0);
-  vec4 sc = layoutProject(biasReceiverPosition(P, N, cosTheta));
-  // Outside the map nothing was rendered as a caster.
-  if (sc.w == 0.0 || any(lessThan(sc.xy, vec2(0.0))) || any(greaterThan(sc.xy, vec2(1.0)))) return vec2(1.0, 0.0);
-  coord = vec3(sc.xy, sc.z - biasDepth(P, cosTheta));
-  float visibility = representationVisibility(coord.xy, coord.z);
-  vec2 texelPos = sc.xy * u_shadowMapSize;
-  vec2 fromCenter = abs(texelPos - (floor(texelPos) + 0.5));
-  return vec2(visibility, 1.0 - 2.0 * max(fromCenter.x, fromCenter.y));
+  // The layout picks the view(s) at the surface point; the bias is applied within each view.
+  ShadowCoord pick = layoutShadowCoord(P);
+  if (pick.view < 0) return vec2(1.0, 0.0);
+  vec2 result = shadowTestIn(P, N, cosTheta, pick.view, coord);
+  if (pick.view2 >= 0 && pick.weight2 > 0.0) {
+    vec4 coord2;
+    result = mix(result, shadowTestIn(P, N, cosTheta, pick.view2, coord2), clamp(pick.weight2, 0.0, 1.0));
+  }
+  return result;
 }
 
 vec2 visibilityTerm(vec3 P, vec3 N, vec3 F) {
-  vec3 coord;
+  vec4 coord;
   return visibilityTermAt(P, N, F, coord);
 }
 
@@ -44,13 +59,13 @@ vec3 gbufferFacetNormal(ivec2 pixel, vec3 N) {
 
 // True when the test gives `f` at the four shadow-map positions one texel diagonally around
 // `coord` (from visibilityTermAt): no rasterization (jitter) of this map could change the answer.
-bool visibilityUnambiguous(vec3 coord, float f) {
+bool visibilityUnambiguous(vec4 coord, float f) {
   if (coord.z < -1.0) return true;
   float texel = 1.0 / u_shadowMapSize;
   bool same = true;
   for (int k = 0; k < 4; ++k) {
     vec2 uv = clamp(coord.xy + (vec2(k & 1, k >> 1) * 2.0 - 1.0) * texel, vec2(0.0), vec2(1.0));
-    same = same && abs(representationVisibility(uv, coord.z) - f) <= 0.01;
+    same = same && abs(representationVisibility(vec3(uv, coord.w), coord.z) - f) <= 0.01;
   }
   return same;
 }

@@ -1,57 +1,68 @@
-// Layout module for layouts described by one light view and projection (uniform, focused;
-// later warped ones). Stored depth is light-view linear depth in [0,1] over [near, far].
-// SL_PERSPECTIVE_MAP (from the renderer's prelude) marks a perspective (spot) map.
-uniform mat4 u_lightView;
-uniform mat4 u_lightViewProj;
-uniform float u_lightNear;
-uniform float u_lightFar;
-uniform float u_lightTexelWorld;    // world size of a texel (at unit distance when perspective)
+// Layout module for layouts whose views are each one light view and projection (uniform,
+// focused, LiSPSM, and each view of a partitioned layout). Stored depth is light-view linear
+// depth in [0,1] over [near, far] of the view. SL_PERSPECTIVE_MAP (from the renderer's prelude)
+// marks perspective or warped views.
+// Contract of a layout module: layoutClip/layoutDepth for the shadow pass (view u_shadowView),
+// layoutShadowCoord (picks the view(s) for a point), layoutShadowCoordIn, layoutTexelWorldSize
+// and layoutDepthScale per view.
+#include "common/light_views.glsl"
 uniform float u_shadowMapSize;
+uniform int u_shadowView;  // the view the shadow pass rasterizes (passes/shadow.vert)
 
-vec4 layoutClip(vec3 worldPos) { return u_lightViewProj * vec4(worldPos, 1.0); }
+vec4 layoutClipIn(vec3 worldPos, int view) { return lightViewProjMatrix[view] * vec4(worldPos, 1.0); }
 
-float layoutDepth(vec3 worldPos) {
-  float z = -(u_lightView * vec4(worldPos, 1.0)).z;
-  return (z - u_lightNear) / (u_lightFar - u_lightNear);
+float layoutDepthIn(vec3 worldPos, int view) {
+  float z = -(lightViewMatrix[view] * vec4(worldPos, 1.0)).z;
+  return (z - lightViewRange[view].x) / (lightViewRange[view].y - lightViewRange[view].x);
 }
 
-// xy: shadow-map uv in [0,1]; z: depth in [0,1]; w: 0 when the point is behind a spot light.
-vec4 layoutProject(vec3 worldPos) {
-  vec4 c = layoutClip(worldPos);
+vec4 layoutClip(vec3 worldPos) { return layoutClipIn(worldPos, u_shadowView); }
+float layoutDepth(vec3 worldPos) { return layoutDepthIn(worldPos, u_shadowView); }
+
+ShadowCoord layoutShadowCoordIn(vec3 worldPos, int view) {
+  vec4 c = layoutClipIn(worldPos, view);
   // Written so that a NaN position (or w) also counts as "not in the map": NaN fails every
   // comparison, so `c.w <= 1e-6` would let it through.
-  if (!(c.w > 1e-6)) return vec4(0.0, 0.0, 0.0, 0.0);
+  if (!(c.w > 1e-6)) return shadowCoordNone();
   // Orthographic clip depth is already the linear depth; only perspective maps need the view.
 #ifdef SL_PERSPECTIVE_MAP
-  float depth = layoutDepth(worldPos);
+  float depth = layoutDepthIn(worldPos, view);
 #else
   float depth = c.z * 0.5 + 0.5;
 #endif
-  return vec4(c.xy / c.w * 0.5 + 0.5, depth, 1.0);
+  return ShadowCoord(c.xy / c.w * 0.5 + 0.5, depth, view, -1, 0.0);
 }
+
+#ifndef SL_LAYOUT_PICKS_VIEW
+// One view: every point is in view 0 (partitioned layouts define their own picking).
+ShadowCoord layoutShadowCoord(vec3 worldPos) { return layoutShadowCoordIn(worldPos, 0); }
+#endif
 
 // World size of one texel at this point: what normal offset and slope bias are scaled by.
 // Perspective and warped maps (SL_PERSPECTIVE_MAP) measure it from the projection itself, one
 // step along each light-plane axis, so every such layout gets it right without its own formula.
-float layoutTexelWorldSize(vec3 worldPos) {
+float layoutTexelWorldSize(vec3 worldPos, int view) {
+  float unitTexel = lightViewRange[view].z;
 #ifdef SL_PERSPECTIVE_MAP
-  vec3 ax = vec3(u_lightView[0][0], u_lightView[1][0], u_lightView[2][0]);
-  vec3 ay = vec3(u_lightView[0][1], u_lightView[1][1], u_lightView[2][1]);
-  float h = 1e-3 * (u_lightFar - u_lightNear);
-  vec4 c0 = layoutClip(worldPos), cx = layoutClip(worldPos + ax * h), cy = layoutClip(worldPos + ay * h);
+  mat4 lv = lightViewMatrix[view];
+  vec3 ax = vec3(lv[0][0], lv[1][0], lv[2][0]);
+  vec3 ay = vec3(lv[0][1], lv[1][1], lv[2][1]);
+  float h = 1e-3 * (lightViewRange[view].y - lightViewRange[view].x);
+  vec4 c0 = layoutClipIn(worldPos, view), cx = layoutClipIn(worldPos + ax * h, view),
+       cy = layoutClipIn(worldPos + ay * h, view);
   // At or behind the projection's centre plane (a spot light's own plane, behind a warp's
   // centre) the map has no texels: dividing by w there gives Inf/NaN, and bias callers run
-  // before layoutProject rejects the point. Such points are unlit or outside the map, so any
-  // finite size will do; the one at unit distance is what the layout reports.
-  if (!(min(c0.w, min(cx.w, cy.w)) > 1e-6)) return u_lightTexelWorld;
+  // before the point is rejected. Such points are unlit or outside the map, so any finite size
+  // will do; the one at unit distance is what the layout reports.
+  if (!(min(c0.w, min(cx.w, cy.w)) > 1e-6)) return unitTexel;
   vec2 p0 = c0.xy / c0.w;
   float texelsPerUnit = 0.5 * u_shadowMapSize / h * min(length(cx.xy / cx.w - p0), length(cy.xy / cy.w - p0));
   float size = 1.0 / max(texelsPerUnit, 1e-6);
-  return isnan(size) || isinf(size) ? u_lightTexelWorld : size;
+  return isnan(size) || isinf(size) ? unitTexel : size;
 #else
-  return u_lightTexelWorld;
+  return unitTexel;
 #endif
 }
 
 // Depth units per world unit along the light direction.
-float layoutDepthScale() { return 1.0 / (u_lightFar - u_lightNear); }
+float layoutDepthScale(int view) { return 1.0 / (lightViewRange[view].y - lightViewRange[view].x); }

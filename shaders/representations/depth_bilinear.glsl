@@ -1,8 +1,8 @@
 // Hardware comparison with linear filtering: four depth tests blended bilinearly.
-uniform sampler2DShadow u_shadowMap;
+uniform sampler2DArrayShadow u_shadowMap;
 
-float representationVisibility(vec2 uv, float receiverDepth) {
-  return texture(u_shadowMap, vec3(uv, receiverDepth));
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  return texture(u_shadowMap, vec4(uvLayer, receiverDepth));
 }
 
 // How far from the receiver (in texels) the filter reads: scales the slope bias.

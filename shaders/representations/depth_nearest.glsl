@@ -1,8 +1,8 @@
-// Nearest-texel depth test. receiverDepth already includes the bias.
-uniform sampler2D u_shadowMap;
+// Nearest-texel depth test. receiverDepth already includes the bias; uvLayer.z is the view.
+uniform sampler2DArray u_shadowMap;
 
-float representationVisibility(vec2 uv, float receiverDepth) {
-  return receiverDepth <= texture(u_shadowMap, uv).r ? 1.0 : 0.0;
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  return receiverDepth <= texture(u_shadowMap, uvLayer).r ? 1.0 : 0.0;
 }
 
 // How far from the receiver (in texels) the filter reads: scales the slope bias.

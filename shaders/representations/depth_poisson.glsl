@@ -1,5 +1,5 @@
 // PCF over a Poisson disk, optionally rotated per pixel by interleaved gradient noise.
-uniform sampler2D u_shadowMap;
+uniform sampler2DArray u_shadowMap;
 uniform float u_poisson_samples;
 uniform float u_poisson_radius;
 uniform float u_poisson_rotate;
@@ -18,15 +18,16 @@ float interleavedGradientNoise(vec2 pixel) {
   return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-float representationVisibility(vec2 uv, float receiverDepth) {
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
   int n = clamp(int(u_poisson_samples + 0.5), 1, 32);
-  vec2 texel = 1.0 / vec2(textureSize(u_shadowMap, 0));
+  vec2 uv = uvLayer.xy;
+  vec2 texel = 1.0 / vec2(textureSize(u_shadowMap, 0).xy);
   float angle = u_poisson_rotate > 0.5 ? 6.2831853 * interleavedGradientNoise(gl_FragCoord.xy) : 0.0;
   mat2 rot = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
   float lit = 0.0;
   for (int i = 0; i < n; ++i) {
     vec2 offset = rot * kPoisson[i] * u_poisson_radius * texel;
-    lit += receiverDepth <= texture(u_shadowMap, uv + offset).r ? 1.0 : 0.0;
+    lit += receiverDepth <= texture(u_shadowMap, vec3(uv + offset, uvLayer.z)).r ? 1.0 : 0.0;
   }
   return lit / float(n);
 }

@@ -16,9 +16,12 @@ void main() {
   vec4 Py = texelFetch(u_gPosition, pixel + ivec2(0, 1), 0);
   if (Px.w < 0.5) Px = vec4(2.0 * P.xyz - texelFetch(u_gPosition, pixel - ivec2(1, 0), 0).xyz, 1.0);
   if (Py.w < 0.5) Py = vec4(2.0 * P.xyz - texelFetch(u_gPosition, pixel - ivec2(0, 1), 0).xyz, 1.0);
-  vec2 t = layoutProject(P.xyz).xy * u_shadowMapSize;
-  vec2 dx = layoutProject(Px.xyz).xy * u_shadowMapSize - t;
-  vec2 dy = layoutProject(Py.xyz).xy * u_shadowMapSize - t;
+  // The neighbours in the same view as the pixel: a partition border is not a density change.
+  ShadowCoord c = layoutShadowCoord(P.xyz);
+  int view = max(c.view, 0);
+  vec2 t = c.uv * u_shadowMapSize;
+  vec2 dx = layoutShadowCoordIn(Px.xyz, view).uv * u_shadowMapSize - t;
+  vec2 dy = layoutShadowCoordIn(Py.xyz, view).uv * u_shadowMapSize - t;
   float texelsPerPixel = abs(dx.x * dy.y - dx.y * dy.x);  // area of one pixel in texels
   float pixelsPerTexel = 1.0 / max(texelsPerPixel, 1e-8);
   // log4 scale: 16 pixels per texel = full red, 16 texels per pixel = full blue.

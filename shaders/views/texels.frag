@@ -11,7 +11,8 @@ void main() {
   vec4 P = texelFetch(u_gPosition, pixel, 0);
   if (P.w < 0.5) { o_color = vec4(0.1, 0.1, 0.12, 1.0); return; }
   vec3 N = normalize(texelFetch(u_gNormal, pixel, 0).xyz);
-  vec4 sc = layoutProject(P.xyz);
+  ShadowCoord c = layoutShadowCoord(P.xyz);
+  vec4 sc = vec4(c.uv, c.depth, c.view >= 0 ? 1.0 : 0.0);
   float shade = 0.35 + 0.65 * max(dot(N, directionToLight(P.xyz)), 0.0);
   if (sc.w == 0.0 || any(lessThan(sc.xy, vec2(0.0))) || any(greaterThan(sc.xy, vec2(1.0)))) {
     o_color = vec4(vec3(0.3) * shade, 1.0);

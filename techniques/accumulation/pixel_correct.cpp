@@ -2,6 +2,8 @@
 // Halton jitter and the accumulation / debug-view passes. See techniques/accumulation/README.md.
 #include "accumulation/pixel_correct.h"
 
+#include "gl/texture_units.h"
+
 #include "render/frame_graph.h"
 #include "render/renderer.h"
 
@@ -87,28 +89,24 @@ void PixelCorrectState::ensureHistory(int w, int h, GLenum format) {
 namespace {
 
 // The reprojection inputs and the exponent; the technique's own uniforms and the G-buffer /
-// shadow map come from ctx.bindTechniqueInputs (units 0-3).
+// shadow map come from ctx.bindTechniqueInputs.
 void setAccumulationUniforms(const Program& p, const glm::mat4& view, const glm::mat4& prevProj, bool hasHistory,
                              float m) {
   p.set("u_view", view);
   p.set("u_invPrevProj", glm::inverse(prevProj));
   p.set("u_hasHistory", hasHistory ? 1.0f : 0.0f);
   p.set("u_m", m);
-  p.set("u_gMotion", 5);
-  p.set("u_history", 6);
-  p.set("u_raw", 7);
 }
 
 // The scene pass writes the raw test itself, so only the (G-buffer based) views read it.
-void bindInputs(const AccumulationContext& ctx, const Program& p, const Texture2D* history, bool forViews) {
-  ctx.bindTechniqueInputs(p);
-  glBindTextureUnit(6, history->id());
+void bindInputs(const AccumulationContext& ctx, const Program& p, TextureUnits& units, const Texture2D* history,
+                bool forViews) {
+  ctx.bindTechniqueInputs(p, units);
+  units.bind(p, "u_history", history->id());
   if (!forViews) return;
-  glBindTextureUnit(5, ctx.gMotion->id());
-  glBindTextureUnit(7, ctx.rawVisibilityTex->id());
+  units.bind(p, "u_gMotion", ctx.gMotion->id());
+  units.bind(p, "u_raw", ctx.rawVisibilityTex->id());
 }
-
-void unbindSampler() { glBindSampler(2, 0); }
 
 // The fullscreen triangle has no attributes; a core profile still wants a vertex array bound.
 // A throwaway one keeps this file free of per-context GL state (tests open several contexts).
@@ -185,11 +183,10 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 1, history);
                if (writeRaw) glClearNamedFramebufferfv(fbo->id(), GL_COLOR, 2, raw);
                glClearNamedFramebufferfi(fbo->id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-               c.drawScene(spec, [&](const Program& p) {
-                 bindInputs(c, p, prevTex, false);
+               c.drawScene(spec, [&](const Program& p, TextureUnits& units) {
+                 bindInputs(c, p, units, prevTex, false);
                  setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
                });
-               unbindSampler();
                c.drawSky();
              }});
   ctx.wroteColor = true;
@@ -211,10 +208,10 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                  fb.bind();
                  glViewport(0, 0, target->width(), target->height());
                  p.use();
-                 bindInputs(c, p, prevTex, true);
+                 TextureUnits units;
+                 bindInputs(c, p, units, prevTex, true);
                  setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
                  drawTriangle();
-                 unbindSampler();
                }});
     graph.requestSink(res);
   }

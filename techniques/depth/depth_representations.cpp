@@ -2,6 +2,8 @@
 // visibility is reconstructed from it (survey: "shadow map as signal reconstruction").
 #include "depth/depth_representations.h"
 
+#include "depth/depth_map_state.h"
+
 namespace sl {
 
 namespace {
@@ -18,7 +20,9 @@ class DepthRepresentation : public Representation {
   std::string help() const override { return help_; }
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
-  bool compareSampler() const override { return compare_; }
+  std::unique_ptr<RepresentationState> createState() const override {
+    return std::make_unique<DepthMapState>(compare_);
+  }
 
  private:
   std::string id_, help_, module_;

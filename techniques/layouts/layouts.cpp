@@ -21,8 +21,8 @@ class UniformLayout : public Layout {
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
     if (light.type == Light::Type::Spot)
-      return fitPerspective(light, view, corners, corners, size, false, snap, in.jitter);
-    return fitOrthographic(view, corners, corners, size, snap, in.jitter);
+      return LightSpace::single(fitPerspective(light, view, corners, corners, size, false, snap, in.jitter), size);
+    return LightSpace::single(fitOrthographic(view, corners, corners, size, snap, in.jitter), size);
   }
 };
 
@@ -46,8 +46,8 @@ class FocusedLayout : public Layout {
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
     if (light.type == Light::Type::Spot)
-      return fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter);
-    return fitOrthographic(view, receivers, casters, size, snap, in.jitter);
+      return LightSpace::single(fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter), size);
+    return LightSpace::single(fitOrthographic(view, receivers, casters, size, snap, in.jitter), size);
   }
 };
 

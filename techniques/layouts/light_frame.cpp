@@ -98,7 +98,7 @@ float quantizeTexelSize(float texel) {
   return std::exp2(steps / 8.0f);
 }
 
-LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                            const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter) {
   glm::vec2 lo(1e30f), hi(-1e30f);
   float zNear = 1e30f, zFar = -1e30f;  // as positive distances along the light direction
@@ -110,8 +110,7 @@ LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::ve
     zFar = std::max(zFar, -q.z);
   }
   for (const auto& p : casters) zNear = std::min(zNear, -(lightView * glm::vec4(p, 1.0f)).z);
-  LightSpace ls;
-  ls.size = size;
+  LightView ls;
   ls.perspective = false;
   glm::vec2 extent = glm::max(hi - lo, glm::vec2(1e-4f));
   // Keep texels square so that confidence and texel-grid views mean the same in x and y.
@@ -135,7 +134,7 @@ LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::ve
   return ls;
 }
 
-LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                           const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
                           const LayoutJitter& jitter) {
   float zNear = 1e30f, zFar = 0.0f;
@@ -185,8 +184,7 @@ LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const 
   cropM[1][1] = 2.0f / span;
   cropM[3][0] = -1.0f - 2.0f * lo.x / span;
   cropM[3][1] = -1.0f - 2.0f * lo.y / span;
-  LightSpace ls;
-  ls.size = size;
+  LightView ls;
   ls.perspective = true;
   ls.nearPlane = zNear;
   ls.farPlane = zFar;

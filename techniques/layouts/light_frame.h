@@ -23,11 +23,11 @@ std::vector<glm::vec3> boxCorners(const Bounds& b);
 
 // Orthographic fit: window and depth range in light view space, snapping, jitter, matrices.
 // `receivers` bound the window; `casters` extend the near plane toward the light.
-LightSpace fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                            const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter);
 
 // Perspective (spot) fit: the cone, optionally cropped to the receivers' projection.
-LightSpace fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                           const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
                           const LayoutJitter& jitter);
 

@@ -56,8 +56,8 @@ class LispsmLayout : public Layout {
     if (light.type == Light::Type::Spot || sinGamma < kMinSinGamma) {
       glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
       if (light.type == Light::Type::Spot)
-        return fitPerspective(light, view, receivers, casters, size, true, false, in.jitter);
-      return fitOrthographic(view, receivers, casters, size, false, in.jitter);
+        return LightSpace::single(fitPerspective(light, view, receivers, casters, size, true, false, in.jitter), size);
+      return LightSpace::single(fitOrthographic(view, receivers, casters, size, false, in.jitter), size);
     }
 
     // Light view: -z along the light, +y along the view direction projected perpendicular to it.
@@ -126,8 +126,7 @@ class LispsmLayout : public Layout {
     const float zMargin = std::max(1e-4f, (whi.z - wlo.z) * 1e-3f);
     glm::mat4 fit = glm::ortho(wlo.x, whi.x, wlo.y, whi.y, -(whi.z + zMargin), -(wlo.z - zMargin));
 
-    LightSpace ls;
-    ls.size = size;
+    LightView ls;
     ls.perspective = true;  // warped: stored depth is written per fragment, linear in light-view z
     ls.view = lightView;
     ls.proj = fit * warpFromView;
@@ -140,7 +139,7 @@ class LispsmLayout : public Layout {
     // Texel sizes vary over a warped map; shaders measure them from the projection. This is the
     // size at the body's near side, for display.
     ls.texelWorldSize = (hi.x - lo.x) / static_cast<float>(size);
-    return ls;
+    return LightSpace::single(ls, size);
   }
 };
 

@@ -1,0 +1,51 @@
+#include "render/light_views_buffer.h"
+
+#include "gl/gl_util.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+
+namespace sl {
+
+namespace {
+
+// std140 image of the block: arrays of mat4 and vec4 have no padding beyond their own size.
+struct LightViewsBlock {
+  float view[kMaxLightViews][16];
+  float viewProj[kMaxLightViews][16];
+  float range[kMaxLightViews][4];  // near, far, texel world size, perspective (0/1)
+  float split[kMaxLightViews][4];  // camera view depth: from, to, blend band, unused
+  float info[4];                   // views, texels per side, unused, unused
+};
+
+}  // namespace
+
+LightViewsBuffer::LightViewsBuffer() {
+  glCreateBuffers(1, &buffer_);
+  glNamedBufferData(buffer_, sizeof(LightViewsBlock), nullptr, GL_DYNAMIC_DRAW);
+  label(GL_BUFFER, buffer_, "light views");
+}
+
+LightViewsBuffer::~LightViewsBuffer() { glDeleteBuffers(1, &buffer_); }
+
+void LightViewsBuffer::upload(const LightSpace& ls) {
+  LightViewsBlock block{};
+  const size_t n = std::min<size_t>(ls.views.size(), kMaxLightViews);
+  for (size_t i = 0; i < n; ++i) {
+    const LightView& v = ls.views[i];
+    std::memcpy(block.view[i], glm::value_ptr(v.view), sizeof(block.view[i]));
+    std::memcpy(block.viewProj[i], glm::value_ptr(v.viewProj), sizeof(block.viewProj[i]));
+    const float range[4] = {v.nearPlane, v.farPlane, v.texelWorldSize, v.perspective ? 1.0f : 0.0f};
+    const float split[4] = {v.splitNear, v.splitFar, v.blendBand, 0.0f};
+    std::memcpy(block.range[i], range, sizeof(range));
+    std::memcpy(block.split[i], split, sizeof(split));
+  }
+  block.info[0] = static_cast<float>(n);
+  block.info[1] = static_cast<float>(ls.size);
+  glNamedBufferSubData(buffer_, 0, sizeof(block), &block);
+}
+
+void LightViewsBuffer::bind() const { glBindBufferBase(GL_UNIFORM_BUFFER, kLightViewsBinding, buffer_); }
+
+}  // namespace sl

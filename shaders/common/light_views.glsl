@@ -1,0 +1,22 @@
+// The light views of the technique's layout (1..8, one shadow-map layer each), one uniform block
+// uploaded by the renderer (app/render/light_views_buffer.cpp). Block members are not
+// parameters, so they carry no u_ prefix.
+#define SL_MAX_LIGHT_VIEWS 8
+layout(std140, binding = 1) uniform LightViews {
+  mat4 lightViewMatrix[SL_MAX_LIGHT_VIEWS];
+  mat4 lightViewProjMatrix[SL_MAX_LIGHT_VIEWS];
+  vec4 lightViewRange[SL_MAX_LIGHT_VIEWS];  // near, far (light-view distances), texel world size, perspective
+  vec4 lightViewSplit[SL_MAX_LIGHT_VIEWS];  // camera view depth the view serves: from, to, blend band
+  vec4 lightViewInfo;                       // x: number of views, y: texels per side
+};
+
+// Where a point falls in the shadow map, as a layout's module reports it.
+struct ShadowCoord {
+  vec2 uv;        // in [0,1] on the view's layer
+  float depth;    // the point's stored-depth value in that view, [0,1]
+  int view;       // layer; -1 when no view can see the point (behind a perspective light)
+  int view2;      // a second view to blend with (partition borders), -1 = none
+  float weight2;  // weight of view2's test, 0..1
+};
+
+ShadowCoord shadowCoordNone() { return ShadowCoord(vec2(0.0), 0.0, -1, -1, 0.0); }

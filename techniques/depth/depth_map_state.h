@@ -1,0 +1,30 @@
+// The shadow targets of the depth representations: one 32-bit depth texture array, a layer per
+// light view, sampled raw (nearest) or through hardware comparison (sampler2DArrayShadow).
+#pragma once
+
+#include "gl/gl_util.h"
+#include "technique.h"
+
+#include <vector>
+
+namespace sl {
+
+class DepthMapState : public RepresentationState {
+ public:
+  explicit DepthMapState(bool compare);
+  ~DepthMapState() override;
+  void prepare(int size, int layers) override;
+  void beginShadowLayer(int layer) override;
+  void bind(const Program& p, TextureUnits& units) const override;
+  const Texture2D* depthTexture() const override { return &depth_; }
+  long long texels() const override;
+
+ private:
+  void createSampler();
+  bool compare_;
+  GLuint sampler_ = 0;
+  Texture2D depth_;
+  std::vector<Framebuffer> layers_;
+};
+
+}  // namespace sl
