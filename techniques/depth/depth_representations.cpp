@@ -42,16 +42,35 @@ void registerDepthRepresentations(std::vector<std::unique_ptr<Representation>>& 
   out.push_back(std::make_unique<DepthRepresentation>(
       "depth-pcf", "percentage-closer filtering over an NxN box of texels (Reeves et al. 1987)",
       "representations/depth_pcf.glsl",
-      std::vector<ParamDecl>{
-          {"pcf.kernel", ParamType::Int, 2, 9, 3, "texels", "box filter width N: N x N depth tests are averaged"}},
+      std::vector<ParamDecl>{{.key = "pcf.kernel",
+                              .type = ParamType::Int,
+                              .min = 2,
+                              .max = 9,
+                              .defaultValue = 3,
+                              .unit = "texels",
+                              .help = "box filter width N: N x N depth tests are averaged"}},
       false));
   out.push_back(std::make_unique<DepthRepresentation>(
       "depth-poisson", "PCF over a Poisson disk, rotated per pixel to trade banding for noise (Reeves et al. 1987)",
       "representations/depth_poisson.glsl",
-      std::vector<ParamDecl>{
-          {"poisson.samples", ParamType::Int, 4, 32, 16, "samples", "number of Poisson-disk depth tests"},
-          {"poisson.radius", ParamType::Float, 0.5, 8, 1.5, "texels", "disk radius"},
-          {"poisson.rotate", ParamType::Bool, 0, 1, 1, "", "rotate the disk per pixel (noise instead of banding)"}},
+      std::vector<ParamDecl>{{.key = "poisson.samples",
+                              .type = ParamType::Int,
+                              .min = 4,
+                              .max = 32,
+                              .defaultValue = 16,
+                              .unit = "samples",
+                              .help = "number of Poisson-disk depth tests"},
+                             {.key = "poisson.radius",
+                              .type = ParamType::Float,
+                              .min = 0.5,
+                              .max = 8,
+                              .defaultValue = 1.5,
+                              .unit = "texels",
+                              .help = "disk radius"},
+                             {.key = "poisson.rotate",
+                              .type = ParamType::Bool,
+                              .defaultValue = 1,
+                              .help = "rotate the disk per pixel (noise instead of banding)"}},
       false));
 }
 

@@ -28,16 +28,15 @@ class LispsmLayout : public Layout {
   }
   std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
   std::vector<ParamDecl> params() const override {
-    return {{"lispsm.n_scale",
-             ParamType::Float,
-             0.05,
-             20,
-             1,
-             "x n_opt",
-             "warp strength: the projection centre's distance n as a multiple of n_opt (small = strong warp, "
-             "more texels near the viewer; large = towards focused)",
-             {},
-             true}};
+    return {{.key = "lispsm.n_scale",
+             .type = ParamType::Float,
+             .min = 0.05,
+             .max = 20,
+             .defaultValue = 1,
+             .unit = "x n_opt",
+             .help = "warp strength: the projection centre's distance n as a multiple of n_opt (small = strong warp, "
+                     "more texels near the viewer; large = towards focused)",
+             .logScale = true}};
   }
 
   LightSpace compute(const LayoutInput& in) const override {
