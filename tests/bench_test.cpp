@@ -1,6 +1,7 @@
 // `shadowlab bench` and `shadowlab reference`: the JSON has every documented field, the
 // instrument sees shadow-map resolution, the reference cache is exact, bad keys fail clearly.
 // Runs the built program (SHADOWLAB_BINARY) headless on llvmpipe at small sizes.
+#include "bench/bench.h"
 #include "bench/reference_cache.h"
 #include "gl/headless_context.h"
 
@@ -76,8 +77,8 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
   EXPECT_NE(j["command"].get<std::string>().find("--techniques standard,pcf"), std::string::npos);
   ASSERT_EQ(j["entries"].size(), 4u);  // 2 techniques x 2 sweep points
   for (const auto& e : j["entries"]) {
-    for (const char* k : {"technique", "params", "frames", "timer", "ms_per_frame", "passes", "error", "convergence",
-                          "flicker", "nonfinite_pixels"})
+    for (const char* k : {"technique", "params", "frames", "timer", "ms_per_frame", "ms_ratio", "passes", "error",
+                          "convergence", "flicker", "nonfinite_pixels"})
       EXPECT_TRUE(e.contains(k)) << k;
     EXPECT_EQ(e["frames"], 3);
     EXPECT_TRUE(e["params"].contains("shadowmap.size"));
@@ -89,7 +90,11 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
       EXPECT_TRUE(p["name"].is_string());
       EXPECT_GE(p["ms"].get<double>(), 0.0);
     }
-    for (const char* k : {"wrong_pixel_pct", "false_shadow_pct", "false_light_pct", "rmse"}) {
+    const auto& ratio = e["ms_ratio"];
+    EXPECT_GT(ratio["median"].get<double>(), 0.0);
+    EXPECT_LE(ratio["p25"].get<double>(), ratio["median"].get<double>());
+    EXPECT_GE(ratio["p75"].get<double>(), ratio["median"].get<double>());
+    for (const char* k : {"wrong_pixel_pct", "false_shadow_pct", "false_light_pct", "image_wrong_pct", "rmse"}) {
       ASSERT_TRUE(e["error"].contains(k)) << k;
       EXPECT_TRUE(std::isfinite(e["error"][k].get<double>())) << k;
     }
@@ -98,6 +103,14 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
     EXPECT_TRUE(e["flicker"].is_null());  // only with --path
     EXPECT_EQ(e["nonfinite_pixels"], 0);
   }
+  // Image-wrong pixels are visibility-wrong ones the shading shows: never more than those here
+  // (the colour's slope in visibility is below 1, up to rounding), but some.
+  for (const auto& e : j["entries"])
+    EXPECT_LE(e["error"]["image_wrong_pct"].get<double>(), e["error"]["wrong_pixel_pct"].get<double>() + 0.1);
+  EXPECT_GT(j["entries"][2]["error"]["image_wrong_pct"].get<double>(), 0.0);  // pcf 256: a penumbra
+  EXPECT_EQ(j["timing_order"], "interleaved");
+  EXPECT_EQ(j["ms_ratio_baseline"], j["entries"][0]["label"]);
+  EXPECT_DOUBLE_EQ(j["entries"][0]["ms_ratio"]["median"].get<double>(), 1.0);  // the baseline itself
   EXPECT_EQ(j["entries"][0]["params"]["shadowmap.size"], "256");
   EXPECT_EQ(j["entries"][1]["params"]["shadowmap.size"], "512");
   EXPECT_EQ(j["entries"][2]["technique"], "pcf");
@@ -137,6 +150,39 @@ TEST(Bench, PathMeasuresFlicker) {
           t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(readJson(json)["reference"]["cached"], 4);
+}
+
+// Entries are rendered in turn (A B A B ...) with one viewport each: an entry's images must be
+// those it gives when benched alone, along a moving camera and after an approach (where the
+// previous frame feeds reprojection and "camera moved").
+TEST(Bench, RenderingInTurnDoesNotChangeAnEntrysImages) {
+  TempDir t;
+  BenchOptions o;
+  o.scene = "basic";
+  o.path = "orbit";
+  o.approach = 3;
+  o.frames = 4;
+  o.warmup = 1;
+  o.width = 96;
+  o.height = 54;
+  std::ostringstream log;
+  o.techniques = {"pixel-correct"};
+  const BenchResult alone = runBench(o, log);
+  o.techniques = {"standard"};
+  const BenchResult standardAlone = runBench(o, log);
+  o.techniques = {"standard", "pixel-correct", "pcf"};
+  const BenchResult together = runBench(o, log);
+  ASSERT_EQ(together.entries.size(), 3u);
+  const BenchEntry& pc = together.entries[1];
+  ASSERT_EQ(pc.technique, "pixel-correct");
+  ASSERT_EQ(pc.lastVisibility.size(), 96u * 54u);
+  EXPECT_EQ(pc.lastVisibility, alone.entries[0].lastVisibility);  // bit-identical
+  EXPECT_EQ(pc.convergence, alone.entries[0].convergence);
+  EXPECT_EQ(pc.flickerTechnique, alone.entries[0].flickerTechnique);
+  EXPECT_EQ(together.entries[0].lastVisibility, standardAlone.entries[0].lastVisibility);
+  EXPECT_EQ(pc.image.imageWrongPct, alone.entries[0].image.imageWrongPct);
+  EXPECT_DOUBLE_EQ(together.entries[0].msRatio, 1.0);
+  EXPECT_GT(pc.msRatio, 0.0);
 }
 
 TEST(Bench, SeesShadowMapResolution) {

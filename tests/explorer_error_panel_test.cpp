@@ -63,16 +63,28 @@ TEST(ExplorerErrorPanel, ParetoFrontKeepsOnlyUnbeatenPoints) {
   EXPECT_TRUE(sl::paretoFront({}).empty());
 }
 
-TEST(ExplorerErrorPanel, RecordingTheSameConfigurationKeepsTheLatest) {
+TEST(ExplorerErrorPanel, RecordingTheSameConfigurationKeepsTheLatestErrorAndTheMedianTime) {
   std::vector<sl::ChartPoint> points;
-  sl::recordChartPoint(points, {"pcf", 2.0, 5.0, 0});
-  sl::recordChartPoint(points, {"vsm", 3.0, 4.0, 1});
-  sl::recordChartPoint(points, {"pcf", 2.5, 1.0, 1});
+  sl::recordChartPoint(points, {"pcf", 2.0, 5.0, 0, 4.0, {}});
+  sl::recordChartPoint(points, {"vsm", 3.0, 4.0, 1, 3.0, {}});
+  sl::recordChartPoint(points, {"pcf", 2.5, 1.0, 1, 0.5, {}});
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[0].config, "pcf");
-  EXPECT_DOUBLE_EQ(points[0].ms, 2.5);
+  EXPECT_DOUBLE_EQ(points[0].ms, 2.25);  // median of 2.0 and 2.5
   EXPECT_DOUBLE_EQ(points[0].wrongPct, 1.0);
+  EXPECT_DOUBLE_EQ(points[0].imageWrongPct, 0.5);
   EXPECT_EQ(points[0].viewport, 1);
+  // A slow reading (a shader rebuilt, the machine busy) does not move the point; the latest
+  // reading alone would have.
+  sl::recordChartPoint(points, {"pcf", 40.0, 1.0, 1, 0.5, {}});
+  EXPECT_DOUBLE_EQ(points[0].ms, 2.5);
+  EXPECT_EQ(points[0].msReadings.size(), 3u);
+  EXPECT_DOUBLE_EQ(points[1].ms, 3.0);  // the other configuration is untouched
+  // Only the latest readings are kept: a configuration whose cost really changed (the window
+  // resized) follows within kChartReadingsKept measurements.
+  for (size_t i = 0; i < sl::kChartReadingsKept; ++i) sl::recordChartPoint(points, {"pcf", 7.0, 1.0, 1, 0.5, {}});
+  EXPECT_EQ(points[0].msReadings.size(), sl::kChartReadingsKept);
+  EXPECT_DOUBLE_EQ(points[0].ms, 7.0);
 }
 
 TEST(ExplorerErrorPanel, AxisIsLinearFromZeroForNarrowRangesAndLogForWideOnes) {
@@ -104,19 +116,35 @@ TEST(ExplorerErrorPanel, AxisIsLinearFromZeroForNarrowRangesAndLogForWideOnes) {
   EXPECT_LT(empty.lo, empty.hi);
 }
 
-TEST(ExplorerErrorPanel, ViewportCostIsItsOwnPassesPlusTheGBuffer) {
+TEST(ExplorerErrorPanel, ViewportCostIsItsOwnPassesOnly) {
   const std::vector<sl::PassTiming> passes = {
       {"gbuffer", 1.0},         {"shadowmap[0]", 0.5},  {"shade[0]", 0.25},
       {"shadowmap[1]", 2.0},    {"visibility[1]", 1.0}, {"pixel-correct[1]", 0.5},
       {"view.history[1]", 9.0}, {"shade[1]", 0.25},     {"shadowmap[10]", 7.0}};
   const sl::ViewportCost a = sl::viewportFrameMs(passes, 0);
-  EXPECT_DOUBLE_EQ(a.ownMs, 0.75);
-  EXPECT_DOUBLE_EQ(a.gbufferMs, 1.0);
-  EXPECT_DOUBLE_EQ(a.total(), 1.75);
+  EXPECT_DOUBLE_EQ(a.ownMs, 0.75);                            // the shared G-buffer is not in it
+  EXPECT_DOUBLE_EQ(a.gbufferMs, 1.0);                         // but reported beside it
   const sl::ViewportCost b = sl::viewportFrameMs(passes, 1);  // debug views excluded
   EXPECT_DOUBLE_EQ(b.ownMs, 3.75);
   EXPECT_DOUBLE_EQ(sl::viewportFrameMs(passes, 10).ownMs, 7.0);
-  EXPECT_LT(sl::viewportFrameMs(passes, 2).total(), 0.0);  // not rendered / not timed
+  EXPECT_LT(sl::viewportFrameMs(passes, 2).ownMs, 0.0);  // not rendered / not timed
+  // Showing a debug view (its pass and the G-buffer it reads) does not change the cost.
+  const std::vector<sl::PassTiming> plain = {{"shadowmap[0]", 0.5}, {"shade[0]", 0.25}};
+  EXPECT_DOUBLE_EQ(sl::viewportFrameMs(plain, 0).ownMs, a.ownMs);
+}
+
+TEST(ExplorerErrorPanel, CostColumnIsTheMedianOfTheLast30Frames) {
+  sl::MedianWindow w(sl::kCostFrames);
+  ASSERT_EQ(sl::kCostFrames, 30u);
+  // 20 frames at 2 ms and 10 slow ones (a hitch, another program): still 2, not the last reading.
+  for (int i = 0; i < 20; ++i) w.add(2.0);
+  for (int i = 0; i < 10; ++i) w.add(8.0);
+  EXPECT_EQ(w.count(), 30u);
+  EXPECT_DOUBLE_EQ(w.median(), 2.0);
+  // Once most of the last 30 frames are slow, so is the median: the cost really changed.
+  for (int i = 0; i < 6; ++i) w.add(8.0);
+  EXPECT_EQ(w.count(), 30u);
+  EXPECT_DOUBLE_EQ(w.median(), 8.0);
 }
 
 TEST(ExplorerErrorPanel, ConfigurationNamesTheChangedParameters) {

@@ -87,6 +87,31 @@ TEST(Metrics, ThresholdBoundary) {
   EXPECT_DOUBLE_EQ(m.falseShadowPct, 25.0);  // pixel 3
 }
 
+TEST(Metrics, ImageWrongThresholdIsThirtyOf255PerChannel) {
+  // Reference pixels, then the technique's: equal; R +30 (not wrong); G -31 (wrong); B +31
+  // (wrong); every channel +30 (not wrong: the threshold is per channel, not summed); alpha
+  // only (ignored); R -30 and B +31 (wrong once, not twice).
+  const std::vector<uint8_t> ref = {100, 100, 100, 255, 100, 100, 100, 255, 100, 100, 100, 255, 100, 100,
+                                    100, 255, 100, 100, 100, 255, 100, 100, 100, 255, 100, 100, 100, 255};
+  const std::vector<uint8_t> tech = {100, 100, 100, 255, 130, 100, 100, 255, 100, 69, 100, 255, 100, 100,
+                                     131, 255, 130, 130, 130, 255, 100, 100, 100, 0,  70,  100, 131, 255};
+  const size_t n = ref.size() / 4;
+  const ImageErrorMetrics m = compareImages(tech.data(), ref.data(), nullptr, n);
+  EXPECT_EQ(m.validPixels, 7);
+  EXPECT_DOUBLE_EQ(m.imageWrongPct, 3.0 / 7.0 * 100.0);
+  // The same both ways round, and at the ends of the range.
+  EXPECT_DOUBLE_EQ(compareImages(ref.data(), tech.data(), nullptr, n).imageWrongPct, m.imageWrongPct);
+  const std::vector<uint8_t> black = {0, 0, 0, 255, 0, 0, 0, 255}, ends = {30, 0, 0, 255, 0, 0, 31, 255};
+  EXPECT_DOUBLE_EQ(compareImages(ends.data(), black.data(), nullptr, 2).imageWrongPct, 50.0);
+  // Only valid pixels count: pixels 2 and 3 (both wrong) left out.
+  const std::vector<uint8_t> valid = {1, 1, 0, 0, 1, 1, 1};
+  const ImageErrorMetrics v = compareImages(tech.data(), ref.data(), valid.data(), n);
+  EXPECT_EQ(v.validPixels, 5);
+  EXPECT_DOUBLE_EQ(v.imageWrongPct, 1.0 / 5.0 * 100.0);
+  const std::vector<uint8_t> none(n, 0);
+  EXPECT_DOUBLE_EQ(compareImages(tech.data(), ref.data(), none.data(), n).imageWrongPct, 0.0);
+}
+
 TEST(Metrics, MeanTemporalChange) {
   const std::vector<std::vector<float>> frames = {{0, 1, 0}, {1, 1, 0}, {1, 0, 0.5f}};
   // Pairs: |1-0|+|1-1|+|0-0| = 1 and |0|+|0-1|+|0.5| = 1.5 over 6 samples.

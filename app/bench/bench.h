@@ -1,6 +1,7 @@
-// `shadowlab bench`: every technique x sweep point from a fresh viewport on the same camera
-// (or camera path), timed with the renderer's pass timers and compared with the ray-traced
-// reference. Results go to JSON, and optionally to a self-contained HTML report.
+// `shadowlab bench`: every technique x sweep point with a viewport of its own on the same camera
+// (or camera path), the entries rendered in turn at each frame index (A B A B ...), timed with
+// the renderer's pass timers and compared with the ray-traced reference. Results go to JSON, and
+// optionally to a self-contained HTML report.
 #pragma once
 
 #include "bench/reference_cache.h"
@@ -55,8 +56,14 @@ struct BenchEntry {
   int frames = 0;
   std::string timer;
   double msMedian = 0, msP95 = 0;
+  std::vector<double> frameMs;  // every measured frame, in order (the ratios pair them by index)
+  // Cost relative to entry 0 (the first of the plan): median and quartiles over the measured
+  // frames of (this entry's frame ms / entry 0's at the same frame index). The entries render
+  // each frame index back to back, so machine noise lands on both sides of the ratio. 1 for entry 0.
+  double msRatio = 1, msRatioP25 = 1, msRatioP75 = 1;
   std::vector<PassMs> passes;
   ErrorMetrics error;               // last frame vs its reference
+  ImageErrorMetrics image;          // last frame's colour vs the same shading with the reference's visibility
   std::vector<double> convergence;  // wrong_pixel_pct per measured frame
   bool hasFlicker = false;
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;

@@ -25,6 +25,9 @@ nlohmann::json benchToJson(const BenchResult& r) {
   j["date"] = r.date;
   j["command"] = r.options.commandLine;
   j["warmup"] = r.options.warmup;
+  // Entries are rendered in turn at each frame index; ms_ratio is relative to the first entry.
+  j["timing_order"] = "interleaved";
+  j["ms_ratio_baseline"] = r.entries.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.entries.front().label);
   j["approach_frames"] = r.options.approach;
   j["approach_deg"] = r.options.approachDeg;
   j["reference"] = {{"samples_per_pixel", r.referenceSamples},
@@ -44,14 +47,13 @@ nlohmann::json benchToJson(const BenchResult& r) {
     for (const auto& [k, v] : e.sweepPoint) x["sweep"][k] = v;
     x["frames"] = e.frames;
     x["timer"] = e.timer;
-    x["ms_per_frame"] = {{"median", e.msMedian}, {"p95", e.msP95}};
+    x["ms_per_frame"] = {{"median", e.msMedian}, {"p95", e.msP95}, {"frames", e.frameMs}};
+    x["ms_ratio"] = {{"median", e.msRatio}, {"p25", e.msRatioP25}, {"p75", e.msRatioP75}};
     x["passes"] = json::array();
     for (const auto& p : e.passes) x["passes"].push_back({{"name", p.name}, {"ms", p.ms}});
-    x["error"] = {{"wrong_pixel_pct", e.error.wrongPixelPct},
-                  {"false_shadow_pct", e.error.falseShadowPct},
-                  {"false_light_pct", e.error.falseLightPct},
-                  {"rmse", e.error.rmse},
-                  {"valid_pixels", e.error.validPixels}};
+    x["error"] = {{"wrong_pixel_pct", e.error.wrongPixelPct}, {"false_shadow_pct", e.error.falseShadowPct},
+                  {"false_light_pct", e.error.falseLightPct}, {"rmse", e.error.rmse},
+                  {"image_wrong_pct", e.image.imageWrongPct}, {"valid_pixels", e.error.validPixels}};
     x["convergence"] = e.convergence;
     if (e.hasFlicker)
       x["flicker"] = {{"excess", e.flicker}, {"technique", e.flickerTechnique}, {"reference", e.flickerReference}};
@@ -74,13 +76,14 @@ void writeBenchCsv(const BenchResult& r, const std::string& file) {
   std::ofstream f(file);
   if (!f) throw std::runtime_error(file + ": cannot write");
   std::string sweepKeys;
-  f << "label,technique,sweep,ms_median,ms_p95,wrong_pixel_pct,false_shadow_pct,false_light_pct,rmse,"
-       "flicker_excess,nonfinite_pixels,frames,timer\n";
+  f << "label,technique,sweep,ms_median,ms_p95,ms_ratio,ms_ratio_p25,ms_ratio_p75,wrong_pixel_pct,false_shadow_pct,"
+       "false_light_pct,image_wrong_pct,rmse,flicker_excess,nonfinite_pixels,frames,timer\n";
   for (const auto& e : r.entries) {
     std::string sweep;
     for (const auto& [k, v] : e.sweepPoint) sweep += (sweep.empty() ? "" : " ") + k + "=" + v;
     f << csvField(e.label) << "," << csvField(e.technique) << "," << csvField(sweep) << "," << e.msMedian << ","
-      << e.msP95 << "," << e.error.wrongPixelPct << "," << e.error.falseShadowPct << "," << e.error.falseLightPct << ","
+      << e.msP95 << "," << e.msRatio << "," << e.msRatioP25 << "," << e.msRatioP75 << "," << e.error.wrongPixelPct
+      << "," << e.error.falseShadowPct << "," << e.error.falseLightPct << "," << e.image.imageWrongPct << ","
       << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << "," << e.nonfinite << ","
       << e.frames << "," << e.timer << "\n";
   }

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -248,6 +249,22 @@ ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage
   std::vector<float> v = viewportVisibility(viewport);
   checkSameSize(v, reference);
   return compareVisibility(v.data(), reference.visibility.data(), reference.valid.data(), v.size());
+}
+
+ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, const Viewport& viewport,
+                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid) {
+  const Texture2D* color = viewport.colorTexture();
+  if (!color) throw std::runtime_error("viewport has not rendered a frame yet");
+  const size_t n = referenceVisibility.size();
+  if (valid.size() != n || size_t(color->width()) * size_t(color->height()) != n)
+    throw std::runtime_error("viewport and reference differ in size (" +
+                             std::to_string(size_t(color->width()) * size_t(color->height())) + " vs " +
+                             std::to_string(n) + " pixels)");
+  const std::vector<unsigned char> truth = renderer.shadeWithVisibility(in, referenceVisibility);
+  if (truth.empty()) return ImageErrorMetrics{std::numeric_limits<double>::quiet_NaN(), 0};
+  std::vector<uint8_t> counted(valid);
+  for (size_t i = 0; i < n; ++i) counted[i] = counted[i] && std::isfinite(referenceVisibility[i]);
+  return compareImages(color->readRgba8().data(), truth.data(), counted.data(), n);
 }
 
 std::vector<uint8_t> viewportErrorImage(const Viewport& viewport, const ReferenceImage& reference) {

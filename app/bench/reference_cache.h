@@ -70,6 +70,12 @@ std::vector<float> viewportVisibility(const Viewport& viewport);
 // Metrics of a viewport's last frame against a reference of the same frame and size
 // (the explorer's live error panel calls this).
 ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage& reference);
+// image_wrong_pct of a viewport's last frame: its colour target against the same frame shaded
+// with the reference's visibility (Renderer::shadeWithVisibility over `in`'s G-buffer), over the
+// `valid` pixels whose reference is finite. `in` must be the frame the viewport rendered last.
+// imageWrongPct is NaN when the shade program does not build.
+ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, const Viewport& viewport,
+                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid);
 // The `error` debug view (RGBA8, bottom-up): grey = agree, orange = false shadow, blue = false light.
 std::vector<uint8_t> viewportErrorImage(const Viewport& viewport, const ReferenceImage& reference);
 // Grey RGBA8 (bottom-up) of a visibility buffer, for PNGs.

@@ -234,10 +234,9 @@ void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width
       va.gbufferMs.clear();
     }
     const ViewportCost cost = viewportFrameMs(stats.passes, index);
-    if (rendered_ && timing_ && cost.ownMs >= 0) {
-      va.ownMs.add(cost.ownMs);
-      va.gbufferMs.add(cost.gbufferMs);
-    }
+    if (rendered_ && timing_ && cost.ownMs >= 0) va.ownMs.add(cost.ownMs);
+    // Shown beside the cost, not in it; only frames that drew it count.
+    if (rendered_ && timing_ && renderer.hasFreshGBuffer()) va.gbufferMs.add(cost.gbufferMs);
     ++index;
   }
 
@@ -257,11 +256,11 @@ void ErrorPanel::afterRender(ExplorerState& state, Renderer& renderer, int width
     const std::string& config = va.timedConfig;
     const bool due = va.referenceId != ref->id || va.config != config || now_ - va.measuredAt >= kRemeasureSeconds ||
                      (wantImage && va.errorTextureReference != ref->id);
-    if (due) measure(state, *ref, slot, wantImage);
+    if (due) measure(state, renderer, *ref, slot, wantImage);
   }
 }
 
-void ErrorPanel::measure(ExplorerState& state, const Reference& ref, int slot, bool wantImage) {
+void ErrorPanel::measure(ExplorerState& state, Renderer& renderer, const Reference& ref, int slot, bool wantImage) {
   ViewportAccuracy& va = viewports_[slot];
   const Viewport& vp = *state.slots[size_t(slot)].viewport;
   std::vector<float> v;
@@ -272,6 +271,17 @@ void ErrorPanel::measure(ExplorerState& state, const Reference& ref, int slot, b
   }
   if (v.size() != ref.visibility.size()) return;
   va.metrics = compareVisibility(v.data(), ref.visibility.data(), ref.valid.data(), v.size());
+  // The frame on screen, shaded again with the truth's visibility (the viewports just rendered it).
+  FrameInput in;
+  in.camera = state.camera.camera();
+  in.time = state.sceneTime;
+  in.width = ref.key.width;
+  in.height = ref.key.height;
+  try {
+    va.image = viewportImageError(renderer, in, vp, ref.visibility, ref.valid);
+  } catch (const std::exception&) {
+    va.image = ImageErrorMetrics{std::numeric_limits<double>::quiet_NaN(), 0};
+  }
   va.haveMetrics = true;
   va.config = va.timedConfig;
   va.referenceId = ref.id;
@@ -291,8 +301,9 @@ void ErrorPanel::measure(ExplorerState& state, const Reference& ref, int slot, b
   }
   // Only configurations measured with their own timings go on the chart (a fresh edit has
   // none for a frame or two; the next measurement adds it).
-  if (va.cost.total() >= 0 && va.ownMs.count() >= 3)
-    recordChartPoint(points_, ChartPoint{va.config, va.cost.total(), va.metrics.wrongPixelPct, slot});
+  if (va.cost.ownMs >= 0 && va.ownMs.count() >= 3)
+    recordChartPoint(points_,
+                     ChartPoint{va.config, va.cost.ownMs, va.metrics.wrongPixelPct, slot, va.image.imageWrongPct, {}});
 }
 
 const Texture2D* ErrorPanel::errorTexture(int slot) const {

@@ -68,12 +68,17 @@ class RestDetector {
 // One configuration measured this session.
 struct ChartPoint {
   std::string config;  // technique label + parameters changed from its preset
-  double ms = 0;       // per frame (see viewportFrameMs)
+  double ms = 0;       // per frame, own passes (see viewportFrameMs): median of msReadings
   double wrongPct = 0;
   int viewport = -1;  // viewport it was last measured in (0-based), for its colour
+  double imageWrongPct = 0;
+  std::vector<double> msReadings;  // the ms of every measurement of this config, oldest first
 };
-// Adds or replaces (same config string) a point; the latest measurement wins.
-void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& point);
+constexpr size_t kChartReadingsKept = 64;
+// Adds a point, or a reading to the point with the same config string: error, image error and
+// viewport from the latest measurement (an accumulating technique converges), ms the median of
+// its readings (the last kChartReadingsKept), so a point does not wander with each reading's noise.
+void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading);
 // Indices of the points no other point beats in both time and error, by increasing ms.
 // (A point is dominated when another is at most as slow and as wrong, and better in one.)
 std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points);
@@ -90,12 +95,12 @@ struct ChartAxis {
 ChartAxis chooseChartAxis(double minValue, double maxValue, double floor, double logRatio = 20.0);
 std::string formatTick(double v);
 
-// Cost of viewport v in one frame: its own passes (names ending in "[v]", debug views "view.*"
-// excluded: they are display, not the technique) plus the whole shared "gbuffer" pass, which it
-// would pay alone. Returns a negative value when no pass of that viewport was timed.
+// Cost of viewport v in one frame: its own passes only (names ending in "[v]"; debug views
+// "view.*" excluded: they are display, not the technique). The shared "gbuffer" pass is kept
+// apart: techniques shade forward and do not read it, it runs only for debug views and the
+// reference readback. ownMs is negative when no pass of that viewport was timed.
 struct ViewportCost {
   double ownMs = -1, gbufferMs = 0;
-  double total() const { return ownMs < 0 ? -1 : ownMs + gbufferMs; }
 };
 ViewportCost viewportFrameMs(const std::vector<PassTiming>& passes, int viewportIndex);
 
@@ -103,6 +108,9 @@ ViewportCost viewportFrameMs(const std::vector<PassTiming>& passes, int viewport
 std::string paramSummary(const ParamSet& current, const ParamSet& reference);
 // Label plus the changed parameters: the identity of a point in the chart.
 std::string configString(const Technique& technique);
+
+// Frames the accuracy panel's ms column is the median of.
+constexpr size_t kCostFrames = 30;
 
 // Median of a small window of samples, for per-pass times that spike on shader builds.
 class MedianWindow {
@@ -161,11 +169,12 @@ class ErrorPanel {
     std::string config;  // of the last measurement
     bool haveMetrics = false;
     ErrorMetrics metrics;
-    ViewportCost cost;  // medians at the last measurement
+    ImageErrorMetrics image;  // colour vs the same shading with the reference's visibility
+    ViewportCost cost;        // medians at the last measurement
     double measuredAt = -1e9;
     uint64_t referenceId = 0;
     std::string timedConfig;  // config the timing window belongs to
-    MedianWindow ownMs, gbufferMs;
+    MedianWindow ownMs{kCostFrames}, gbufferMs{kCostFrames};
     std::unique_ptr<Texture2D> errorTexture;
     uint64_t errorTextureReference = 0;  // reference the texture was computed against (0 = stale)
   };
@@ -185,7 +194,7 @@ class ErrorPanel {
   void cancelActive();
   void joinAll();
   void startJob(ExplorerState& state, Renderer& renderer, const RestKey& key);
-  void measure(ExplorerState& state, const Reference& ref, int slot, bool wantImage);
+  void measure(ExplorerState& state, Renderer& renderer, const Reference& ref, int slot, bool wantImage);
 
   RestDetector rest_;
   uint64_t sceneGeneration_ = 1;

@@ -75,22 +75,28 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   // Per-viewport table.
   const ImGuiTableFlags flags =
       ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-  if (ImGui::BeginTable("accuracy", 7, flags)) {
-    const char* headers[7] = {"#", "wrong", "f.shadow", "f.light", "rmse", "NaN", "ms"};
-    const char* tips[7] = {"Viewport (colour of its points in the chart)",
-                           "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
-                           "False shadow, %: dark where the truth is lit (orange in the error view)",
-                           "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
-                           "Root mean square visibility error over covered pixels",
-                           "Non-finite (NaN/Inf) visibility values, counted as wrong",
-                           "ms per frame of this viewport: its own passes (names ending in [v]; debug views\n"
-                           "'view.*' excluded) plus the whole shared G-buffer pass, which a technique alone\n"
-                           "pays too, so the figure does not depend on how many viewports are shown.\n"
-                           "Median of the last 15 frames (see Timings for the passes)."};
-    const float weights[7] = {0.4f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
-    for (int c = 0; c < 7; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
+  constexpr int kColumns = 8;
+  if (ImGui::BeginTable("accuracy", kColumns, flags)) {
+    const char* headers[kColumns] = {"#", "wrong", "image", "f.shadow", "f.light", "rmse", "NaN", "ms"};
+    const char* tips[kColumns] = {
+        "Viewport (colour of its points in the chart)",
+        "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+        "Image-wrong pixels, % of covered pixels: the shaded colour differs from the same shading\n"
+        "with the truth's visibility by more than 30/255 in R, G or B (Scherzer et al.'s figure 3).\n"
+        "Lower than 'wrong' where the shading hides a visibility error: grazing light (small N.L),\n"
+        "dark albedo.",
+        "False shadow, %: dark where the truth is lit (orange in the error view)",
+        "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+        "Root mean square visibility error over covered pixels",
+        "Non-finite (NaN/Inf) visibility values, counted as wrong",
+        "ms per frame of this viewport's own passes (names ending in [v]): not the debug views\n"
+        "('view.*') and not the shared G-buffer, which techniques do not read (it is drawn for\n"
+        "debug views and the reference), so the figure does not depend on what else is shown.\n"
+        "Median of the last 30 frames (see Timings for the passes)."};
+    const float weights[kColumns] = {0.4f, 1.0f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
+    for (int c = 0; c < kColumns; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
     ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
-    for (int c = 0; c < 7; ++c) {
+    for (int c = 0; c < kColumns; ++c) {
       ImGui::TableSetColumnIndex(c);
       ImGui::TableHeader(headers[c]);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
@@ -120,26 +126,36 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
         const ErrorMetrics& m = va.metrics;
         std::snprintf(buf, sizeof buf, "%.2f%%", m.wrongPixelPct);
         cell(1, buf, nullptr);
+        if (std::isfinite(va.image.imageWrongPct))
+          std::snprintf(buf, sizeof buf, "%.2f%%", va.image.imageWrongPct);
+        else
+          std::snprintf(buf, sizeof buf, "-");
+        cell(2, buf, nullptr);
         std::snprintf(buf, sizeof buf, "%.2f%%", m.falseShadowPct);
-        cell(2, buf, &kFalseShadow);
+        cell(3, buf, &kFalseShadow);
         std::snprintf(buf, sizeof buf, "%.2f%%", m.falseLightPct);
-        cell(3, buf, &kFalseLight);
+        cell(4, buf, &kFalseLight);
         std::snprintf(buf, sizeof buf, "%.3f", m.rmse);
-        cell(4, buf, nullptr);
+        cell(5, buf, nullptr);
         std::snprintf(buf, sizeof buf, "%lld", m.nonfinite);
-        cell(5, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
+        cell(6, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
       } else {
-        for (int c = 1; c <= 5; ++c) {
+        for (int c = 1; c <= 6; ++c) {
           ImGui::TableSetColumnIndex(c);
           ImGui::TextDisabled("-");
         }
       }
-      ImGui::TableSetColumnIndex(6);
+      ImGui::TableSetColumnIndex(7);
       const double own = va.ownMs.median(), gb = va.gbufferMs.median();
       if (own >= 0) {
-        ImGui::Text("%.2f", own + gb);
-        if (ImGui::IsItemHovered())
-          ImGui::SetTooltip("%.2f ms own passes + %.2f ms G-buffer (shared by all viewports)", own, gb);
+        ImGui::Text("%.2f", own);
+        if (ImGui::IsItemHovered()) {
+          if (gb >= 0)
+            ImGui::SetTooltip("%.2f ms own passes, median of %zu frames (the shared G-buffer, %.2f ms, not included)",
+                              own, va.ownMs.count(), gb);
+          else
+            ImGui::SetTooltip("%.2f ms own passes, median of %zu frames", own, va.ownMs.count());
+        }
       } else {
         ImGui::TextDisabled("-");
         if (ImGui::IsItemHovered())
@@ -159,7 +175,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "One point per configuration (technique + changed parameters) measured this\n"
-        "session, the latest measurement kept. Dashed: the Pareto front, configurations\n"
+        "session: its latest error, and the median ms (own passes) of all its measurements,\n"
+        "so a point holds still while timings jitter. Dashed: the Pareto front, configurations\n"
         "that no other is both faster and more accurate than. Numbered points are what\n"
         "the viewports show now; grey ones were tried earlier (possibly from another\n"
         "camera: compare points measured at the same view).");
@@ -261,7 +278,8 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   if (hovered >= 0) {
     const ChartPoint& p = points_[size_t(hovered)];
     const bool onFront = std::find(front.begin(), front.end(), size_t(hovered)) != front.end();
-    ImGui::SetTooltip("%s\n%.2f ms per frame, %.2f%% wrong pixels%s", p.config.c_str(), p.ms, p.wrongPct,
+    ImGui::SetTooltip("%s\n%.2f ms per frame (median of %zu readings), %.2f%% wrong pixels, %.2f%% image-wrong%s",
+                      p.config.c_str(), p.ms, p.msReadings.size(), p.wrongPct, p.imageWrongPct,
                       onFront ? "\non the Pareto front" : "");
   }
 }

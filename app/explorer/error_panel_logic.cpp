@@ -62,14 +62,22 @@ bool RestDetector::update(const RestKey& key, double now) {
   return resting();
 }
 
-void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& point) {
-  for (ChartPoint& p : points) {
-    if (p.config == point.config) {
-      p = point;
-      return;
-    }
-  }
-  points.push_back(point);
+void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading) {
+  auto it = std::find_if(points.begin(), points.end(), [&](const ChartPoint& p) { return p.config == reading.config; });
+  std::vector<double> ms;
+  if (it != points.end()) ms = std::move(it->msReadings);
+  ms.push_back(reading.ms);
+  if (ms.size() > kChartReadingsKept) ms.erase(ms.begin());
+  ChartPoint point = reading;
+  point.msReadings = std::move(ms);
+  std::vector<double> sorted = point.msReadings;
+  std::sort(sorted.begin(), sorted.end());
+  const size_t n = sorted.size();
+  point.ms = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  if (it != points.end())
+    *it = std::move(point);
+  else
+    points.push_back(std::move(point));
 }
 
 std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points) {

@@ -64,6 +64,26 @@ ErrorMetrics compareVisibility(const float* technique, const float* reference, c
   return m;
 }
 
+ImageErrorMetrics compareImages(const uint8_t* technique, const uint8_t* reference, const uint8_t* valid,
+                                size_t count) {
+  ImageErrorMetrics m;
+  if (count == 0) return m;
+  if (!technique || !reference) throw std::invalid_argument("compareImages: technique and reference must not be null");
+  long long wrong = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if (!isValid(valid, i)) continue;
+    ++m.validPixels;
+    for (size_t c = 0; c < 3; ++c) {
+      if (std::abs(int(technique[4 * i + c]) - int(reference[4 * i + c])) > kImageWrongThreshold) {
+        ++wrong;
+        break;
+      }
+    }
+  }
+  if (m.validPixels > 0) m.imageWrongPct = 100.0 * static_cast<double>(wrong) / static_cast<double>(m.validPixels);
+  return m;
+}
+
 double meanTemporalChange(const std::vector<std::vector<float>>& frames, const uint8_t* valid) {
   if (frames.size() < 2) return 0.0;
   const size_t count = frames.front().size();

@@ -21,6 +21,19 @@ constexpr float kWrongThreshold = 30.0f / 255.0f;
 // valid may be null (all pixels valid); else nonzero marks pixels covered by geometry.
 ErrorMetrics compareVisibility(const float* technique, const float* reference, const uint8_t* valid, size_t count);
 
+// The image-space figure of Scherzer et al. (figure 3): pixels of the final shaded image whose
+// colour differs from the converged one, not pixels whose visibility does. A visibility error
+// the shading hides (grazing light, dark albedo) is wrong in ErrorMetrics but not here.
+struct ImageErrorMetrics {
+  double imageWrongPct = 0;  // any of R, G, B differs by more than kImageWrongThreshold, % of valid pixels
+  long long validPixels = 0;
+};
+
+constexpr int kImageWrongThreshold = 30;  // of 255, in 8-bit units: a difference of exactly 30 is not wrong
+
+// Two RGBA8 images of `count` pixels (alpha ignored); valid as in compareVisibility.
+ImageErrorMetrics compareImages(const uint8_t* technique, const uint8_t* reference, const uint8_t* valid, size_t count);
+
 // Mean absolute frame-to-frame change of visibility over valid pixels, across a sequence.
 double meanTemporalChange(const std::vector<std::vector<float>>& frames, const uint8_t* valid);
 

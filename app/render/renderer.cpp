@@ -78,12 +78,15 @@ void Renderer::setScene(const Scene& scene) {
   gpu_.reset();
   gpu_ = std::make_unique<GpuScene>(scene);
   scene_ = &scene;
-  havePrev_ = false;
+  ++epoch_;
 }
 
 void Renderer::ensureTargets(int w, int h, bool withMotion) {
-  if (w == width_ && h == height_ && gPosition_ && withMotion == gHasMotion_) return;
+  // Per-pixel motion costs a fourth target; only accumulations read it. Which framebuffer is
+  // drawn follows each call, without touching history: the bench renders a technique with and
+  // one without motion in turn.
   gHasMotion_ = withMotion;
+  if (w == width_ && h == height_ && gPosition_) return;
   width_ = w;
   height_ = h;
   gPosition_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.position");
@@ -94,12 +97,12 @@ void Renderer::ensureTargets(int w, int h, bool withMotion) {
   gMotion_ = std::make_unique<Texture2D>(GL_RGBA32F, w, h, "gbuffer.motion");
   gDepth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "gbuffer.depth");
   gFbo_ = Framebuffer("gbuffer");
-  // Per-pixel motion costs a fourth target; only accumulations read it.
-  if (withMotion)
-    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get(), gMotion_.get()}, gDepth_.get());
-  else
-    gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get()}, gDepth_.get());
-  havePrev_ = false;  // a resize is a cut: history no longer matches the screen
+  gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get()}, gDepth_.get());
+  // Per-pixel motion costs a fifth target; only accumulations read it.
+  gFboMotion_ = Framebuffer("gbuffer + motion");
+  gFboMotion_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get(), gMotion_.get()},
+                     gDepth_.get());
+  ++epoch_;  // a resize is a cut: history no longer matches the screen
 }
 
 void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
@@ -138,6 +141,29 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
          t.representation->glslModule() + "\"\n#endif\n";
 }
 
+void Renderer::drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev) {
+  const Framebuffer& fbo = gHasMotion_ ? gFboMotion_ : gFbo_;
+  fbo.bind();
+  const float zero[4] = {0, 0, 0, 0};
+  const GLuint none[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+  glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 3, none);  // surface ids: an integer target
+  if (gHasMotion_) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 4, zero);
+  glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  PassPrograms programs(shaders_,
+                        {"gbuffer",
+                         {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+                         gHasMotion_ ? "#define SL_WRITE_MOTION\n" : ""},
+                        [&](const Program& p, TextureUnits&) {
+                          p.set("u_viewProj", viewProj);
+                          p.set("u_prevViewProj", prev.proj * prev.view);
+                        });
+  gpu_->draw(programs, time, prev.time);
+  glDisable(GL_DEPTH_TEST);
+  gbufferHolds_ = {viewProj, time, epoch_};
+}
+
 void Renderer::drawSky() {
   ProgramSpec spec{"sky", {{GL_VERTEX_SHADER, "passes/sky.vert"}, {GL_FRAGMENT_SHADER, "passes/sky.frag"}}, ""};
   Program& p = shaders_.get(spec);
@@ -157,15 +183,16 @@ void Renderer::drawSky() {
   for (GLint i = 1; i < attachments; ++i) glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void Renderer::drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time) {
+void Renderer::drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time,
+                                const PreviousFrame& prev) {
   glEnable(GL_DEPTH_TEST);
-  PassPrograms programs(shaders_, spec, [this, &setup](const Program& p, TextureUnits& units) {
+  PassPrograms programs(shaders_, spec, [this, &setup, &prev](const Program& p, TextureUnits& units) {
     setup(p, units);
     p.set("u_viewProj", proj_ * view_);
-    p.set("u_prevViewProj", prevProj_ * prevView_);
-    p.set("u_prevView", prevView_);
+    p.set("u_prevViewProj", prev.proj * prev.view);
+    p.set("u_prevView", prev.view);
   });
-  gpu_->draw(programs, time, prevTime_);
+  gpu_->draw(programs, time, prev.time);
   glDisable(GL_DEPTH_TEST);
 }
 
@@ -180,6 +207,10 @@ void Renderer::drawFullscreen() {
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light) {
   for (const auto& d : t.params.decls()) p.set(uniformName(d.key), static_cast<float>(t.params.get(d.key)));
   p.set("u_shadowMapSize", static_cast<float>(ls.size));
+  setLightUniforms(p, light);
+}
+
+void setLightUniforms(const Program& p, const Light& light) {
   p.set("u_lightDirection", glm::normalize(light.direction));
   p.set("u_lightPosition", light.position);
   p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
@@ -192,34 +223,16 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   ensureTargets(in.width, in.height, needMotion);
   view_ = cameraView(in.camera);
   proj_ = cameraProjection(in.camera, static_cast<float>(in.width) / static_cast<float>(in.height));
-  if (!havePrev_ || in.cut) {
-    prevView_ = view_;
-    prevProj_ = proj_;
-    prevTime_ = in.time;
-    for (Viewport* vp : viewports) vp->accumulation->reset();
+  // A cut, a new scene or size, or a viewport's first frame: motion is relative to this frame.
+  const PreviousFrame now{view_, proj_, in.time, epoch_};
+  if (prev_.epoch != epoch_ || in.cut) prev_ = now;
+  for (Viewport* vp : viewports) {
+    if (vp->prev_.epoch == epoch_ && !in.cut) continue;
+    vp->prev_ = now;
+    vp->accumulation->reset();
   }
   FrameGraph graph;
-  graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in, needMotion] {
-               gFbo_.bind();
-               const float zero[4] = {0, 0, 0, 0};
-               const GLuint none[4] = {0, 0, 0, 0};
-               for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, i, zero);
-               glClearNamedFramebufferuiv(gFbo_.id(), GL_COLOR, 3, none);  // surface ids: integer target
-               if (needMotion) glClearNamedFramebufferfv(gFbo_.id(), GL_COLOR, 4, zero);
-               glClearNamedFramebufferfi(gFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-               glEnable(GL_DEPTH_TEST);
-               PassPrograms programs(
-                   shaders_,
-                   {"gbuffer",
-                    {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-                    needMotion ? "#define SL_WRITE_MOTION\n" : ""},
-                   [this](const Program& p, TextureUnits&) {
-                     p.set("u_viewProj", proj_ * view_);
-                     p.set("u_prevViewProj", prevProj_ * prevView_);
-                   });
-               gpu_->draw(programs, in.time, prevTime_);
-               glDisable(GL_DEPTH_TEST);
-             }});
+  graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in] { drawGBuffer(proj_ * view_, in.time, prev_); }});
   if (keepGBuffer) graph.requestSink("gbuffer");
   for (size_t i = 0; i < viewports.size(); ++i) {
     ensureViewportTargets(*viewports[i], in.width, in.height);
@@ -275,11 +288,11 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   // Every program this frame drew with has had all its uniforms set by now.
   shaders_.checkUnsetUniforms();
-  prevView_ = view_;
-  prevProj_ = proj_;
-  prevTime_ = in.time;
-  havePrev_ = true;
-  ++frameIndex_;
+  prev_ = now;
+  for (Viewport* vp : viewports) {
+    vp->prev_ = now;
+    ++vp->frameIndex_;
+  }
 }
 
 // Layout passes, then the shadow pass (one draw per light view into the representation's
@@ -316,7 +329,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.cameraView = view_;
   li.cameraProj = proj_;
   li.params = &t.params;
-  const bool cameraMoved = view_ != prevView_ || proj_ != prevProj_;
+  const bool cameraMoved = view_ != vp.prev_.view || proj_ != vp.prev_.proj;
   li.jitter = vp.accumulation->jitter(t.params, cameraMoved);
   vp.lightSpace = vp.layout->compute(li);
   if (vp.lightSpace.views.empty() || vp.lightSpace.views.size() > static_cast<size_t>(kMaxLightViews))
@@ -339,7 +352,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   part.width = in.width;
   part.height = in.height;
   part.cameraMoved = cameraMoved;
-  part.frameIndex = frameIndex_;
+  part.frameIndex = vp.frameIndex_;
   part.shadowMap = "shadowmap" + tag;
   part.drawFullscreen = [this] { drawFullscreen(); };
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
@@ -369,7 +382,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
              const float background[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // visibility 1, confidence 0
              glClearNamedFramebufferfv(vp.forwardFbo_.id(), GL_COLOR, 1, background);
              glClearNamedFramebufferfi(vp.forwardFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-             drawSceneForward(spec, bindVisibilityInputs, in.time);
+             drawSceneForward(spec, bindVisibilityInputs, in.time, vp.prev_);
              drawSky();
            }});
     g.requestSink("color" + tag);
@@ -407,12 +420,12 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.params = &t.params;
   ctx.view = view_;
   ctx.proj = proj_;
-  ctx.prevView = prevView_;
-  ctx.prevProj = prevProj_;
+  ctx.prevView = vp.prev_.view;
+  ctx.prevProj = vp.prev_.proj;
   ctx.width = in.width;
   ctx.height = in.height;
   ctx.cameraMoved = cameraMoved;
-  ctx.frameIndex = frameIndex_;
+  ctx.frameIndex = vp.frameIndex_;
   for (const auto& name : vp.shownViews)
     if (vp.views_.count(name)) ctx.viewTargets[name] = vp.views_[name].get();
   ctx.techniquePrelude = prelude;
@@ -421,8 +434,8 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   ctx.color = "color" + tag;
   ctx.colorTex = vp.color_.get();
   ctx.depthTex = vp.depth_.get();
-  ctx.drawScene = [this, &in](const ProgramSpec& spec, const ProgramSetup& setup) {
-    drawSceneForward(spec, setup, in.time);
+  ctx.drawScene = [this, &in, &vp](const ProgramSpec& spec, const ProgramSetup& setup) {
+    drawSceneForward(spec, setup, in.time, vp.prev_);
   };
   ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
@@ -439,8 +452,9 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const Texture2D* visTex = vp.visibilityTexture();
 
   g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
-           ProgramSpec spec{
-               "shade", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}}, ""};
+           ProgramSpec spec{"shade",
+                            {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}},
+                            shadePrelude()};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
            vp.colorFbo_.bind();

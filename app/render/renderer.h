@@ -10,6 +10,7 @@
 #include "render/light_views_buffer.h"
 #include "technique.h"
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -23,6 +24,8 @@ struct GpuScene;
 // Uploads every technique parameter as float uniform u_<key>, the shadow-map size and the light.
 // (The light views themselves are a uniform block: LightViewsBuffer.)
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
+// The light's uniforms alone (common/light.glsl), for passes that shade without a technique.
+void setLightUniforms(const Program& p, const Light& light);
 
 // Names of the debug views every technique offers; accumulations add their own.
 const std::vector<std::string>& commonViewNames();
@@ -71,7 +74,17 @@ struct AccumulationContext {
   bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
 };
 
+// The camera and scene time a frame was rendered with: what the next frame's motion, reprojection
+// and "camera moved" are relative to.
+struct PreviousFrame {
+  glm::mat4 view{1.0f}, proj{1.0f};
+  double time = 0.0;
+  uint64_t epoch = 0;  // the renderer's scene/size generation it belongs to (0 = none yet)
+};
+
 // A viewport: one technique with its own state and targets, sharing the camera with the others.
+// Its previous frame is its own too, so viewports rendered in separate calls (the bench renders
+// entries in turn, A B A B ...) see the same history as when rendered alone.
 class Viewport {
  public:
   explicit Viewport(Technique technique);
@@ -101,6 +114,8 @@ class Viewport {
   std::string shadowResource_;  // what the visibility tests read (the representation's output)
   bool accumulated_ = false;
   const Texture2D* shownVisibility_ = nullptr;  // finalVisibility_ or the accumulation's own texture
+  PreviousFrame prev_;                          // this viewport's last frame
+  int frameIndex_ = 0;                          // frames this viewport has rendered
 };
 
 struct FrameInput {
@@ -137,6 +152,15 @@ class Renderer {
   // normal (shaders/common/facet.glsl), 0.
   const Texture2D& gSurface() const { return *gSurface_; }
 
+  // The frame `in` shaded by the deferred shade pass (passes/shade.frag, common/shading.glsl)
+  // with `visibility` (one float per pixel, rows bottom-up like every readback) in place of a
+  // technique's: what a technique's colour would be with that visibility, e.g. the reference's
+  // (image_wrong_pct). Draws `in`'s G-buffer unless it holds that frame already; `in` must have
+  // the size of the last rendered frame. Viewports' histories are not touched. RGBA8, bottom-up.
+  // Empty when the shade program does not build (the shader library has the error); throws
+  // std::invalid_argument on a size mismatch.
+  std::vector<unsigned char> shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility);
+
  private:
   void ensureTargets(int w, int h, bool withMotion);
   void ensureViewportTargets(Viewport& vp, int w, int h);
@@ -148,24 +172,34 @@ class Renderer {
   void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                      const FrameInput& in);
   void drawFullscreen();
+  void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev);
+  std::string shadePrelude() const;  // defines of the deferred shade pass
   // u_gPosition, u_gNormal, u_gAlbedo and a visibility (u_visibility).
   void bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const;
   void drawSky();
-  void drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time);
+  // prev: the frame motion and reprojection are relative to (the viewport's own).
+  void drawSceneForward(const ProgramSpec& spec, const ProgramSetup& setup, double time, const PreviousFrame& prev);
 
   ShaderLibrary& shaders_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gSurface_, gMotion_, gDepth_;
-  Framebuffer gFbo_;
-  bool gHasMotion_ = false;
+  Framebuffer gFbo_, gFboMotion_;  // without and with the motion target
+  bool gHasMotion_ = false;        // this frame's G-buffer writes motion
   bool gbufferFresh_ = false;
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;
-  glm::mat4 prevView_{1.0f}, prevProj_{1.0f};
-  double prevTime_ = 0.0;
-  bool havePrev_ = false;
-  int frameIndex_ = 0;
+  // Bumped by setScene and by a resize: every previous frame of an older epoch is a cut.
+  uint64_t epoch_ = 1;
+  PreviousFrame prev_;  // of the last render call: the shared G-buffer's motion is relative to it
+  struct GBufferContent {
+    glm::mat4 viewProj{1.0f};
+    double time = 0.0;
+    uint64_t epoch = 0;  // 0: nothing drawn
+  } gbufferHolds_;       // what the G-buffer targets hold now
+  // shadeWithVisibility's own targets: the substituted visibility and the colour it gives.
+  std::unique_ptr<Texture2D> substVisibility_, substColor_;
+  Framebuffer substFbo_;
   FrameStats stats_;
   glm::mat4 view_{1.0f}, proj_{1.0f};
 };
