@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=docs/bench/pixel-correct
 mkdir -p "$out"
-bench() { build/shadowlab bench "$@"; }
+bench() { "${SHADOWLAB:-build/shadowlab}" bench "$@"; }
 
 for scene in basic columns; do
   for history in empty filled; do
