@@ -156,25 +156,7 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& o) noexcept {
 }
 
 void Framebuffer::attach(const std::vector<const Texture2D*>& colors, const Texture2D* depth) {
-  std::vector<GLenum> drawBuffers;
-  for (size_t i = 0; i < colors.size(); ++i) {
-    glNamedFramebufferTexture(id_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), colors[i]->id(), 0);
-    drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
-    width_ = colors[i]->width();
-    height_ = colors[i]->height();
-  }
-  if (depth) {
-    glNamedFramebufferTexture(id_, GL_DEPTH_ATTACHMENT, depth->id(), 0);
-    width_ = depth->width();
-    height_ = depth->height();
-  }
-  if (drawBuffers.empty())
-    glNamedFramebufferDrawBuffer(id_, GL_NONE);
-  else
-    glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
-  GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+  attachLayer(colors, depth, 0);  // plain textures ignore the layer
 }
 
 void Framebuffer::attachLayer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, int layer,

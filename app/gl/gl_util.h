@@ -72,7 +72,7 @@ class Framebuffer {
   // Attaches colour targets in order (COLOR0..n) and an optional depth target; throws if
   // the driver reports the combination incomplete.
   void attach(const std::vector<const Texture2D*>& colors, const Texture2D* depth);
-  // The same with one layer (and mip level) of array textures attached.
+  // The same with one layer (and mip level) of array textures attached; attach() is layer 0.
   void attachLayer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, int layer, int level = 0);
   void bind() const;
 
