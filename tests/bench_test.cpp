@@ -3,6 +3,7 @@
 // Runs the built program (SHADOWLAB_BINARY) headless on llvmpipe at small sizes.
 #include "bench/reference_cache.h"
 #include "gl/headless_context.h"
+#include "sanitizer_report.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -52,6 +53,7 @@ RunResult run(const std::string& args, const fs::path& dir) {
   RunResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = readFile(log);
+  test::expectNoSanitizerReport(r.out, args);
   return r;
 }
 
