@@ -4,6 +4,7 @@
 #include "bench/bench.h"
 #include "bench/reference_cache.h"
 #include "gl/headless_context.h"
+#include "sanitizer_report.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -53,6 +54,7 @@ RunResult run(const std::string& args, const fs::path& dir) {
   RunResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = readFile(log);
+  test::expectNoSanitizerReport(r.out, args);
   return r;
 }
 

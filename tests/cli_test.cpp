@@ -1,5 +1,6 @@
 // The command line as a user meets it: list, render with stats, and clear errors for bad input.
 #include "gl_test_util.h"
+#include "sanitizer_report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,7 @@ static RunResult run(const std::string& args) {
   while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
   int status = pclose(p);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  test::expectNoSanitizerReport(r.output, args);
   return r;
 }
 

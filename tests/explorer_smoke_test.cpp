@@ -2,6 +2,7 @@
 // checks the no-display path. These are end-to-end: they catch context creation, ImGui setup
 // and renderer wiring problems that unit tests of the parts cannot.
 #include "explorer/side_panel.h"
+#include "sanitizer_report.h"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
@@ -30,6 +31,7 @@ CommandResult runCommand(const std::string& command) {
   while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  sl::test::expectNoSanitizerReport(result.output, command);
   return result;
 }
 

@@ -52,10 +52,13 @@ void Args::getSize(const std::string& key, int& w, int& h) const {
   if (!has(key)) return;
   std::string v = get(key);
   auto x = v.find('x');
+  // strtol's end pointers point into these strings, so they must outlive the checks below.
+  const std::string ws = x == std::string::npos ? "" : v.substr(0, x);
+  const std::string hs = x == std::string::npos ? "" : v.substr(x + 1);
   char* e1 = nullptr;
   char* e2 = nullptr;
-  long a = x == std::string::npos ? 0 : std::strtol(v.substr(0, x).c_str(), &e1, 10);
-  long b = x == std::string::npos ? 0 : std::strtol(v.substr(x + 1).c_str(), &e2, 10);
+  long a = std::strtol(ws.c_str(), &e1, 10);
+  long b = std::strtol(hs.c_str(), &e2, 10);
   if (x == std::string::npos || *e1 || *e2 || a < 8 || b < 8 || a > 8192 || b > 8192)
     throw ArgError(key + ": expected WIDTHxHEIGHT between 8 and 8192, got '" + v + "'");
   w = static_cast<int>(a);

@@ -351,6 +351,7 @@ int runExplorer(const ExplorerOptions& options) {
   glfwMakeContextCurrent(window);
   glfwSetWindowTitle(window, ("shadowlab explorer - " + state.sceneLabel).c_str());
   enableGlDebugOutput(false);
+  keepGlDriverLoaded();
   setUpImGui(window);
 
   int exitCode = 0;

@@ -5,6 +5,18 @@
 #include <cstdio>
 #include <stdexcept>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define SL_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SL_ASAN 1
+#endif
+#endif
+#ifdef SL_ASAN
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
 namespace sl {
 
 static std::atomic<int> g_glErrors{0};
@@ -37,6 +49,22 @@ void resetGlDebugErrorCount() { g_glErrors = 0; }
 std::string glRendererName() {
   const GLubyte* r = glGetString(GL_RENDERER);
   return r ? reinterpret_cast<const char*>(r) : "unknown";
+}
+
+void keepGlDriverLoaded() {
+#ifdef SL_ASAN
+  std::vector<std::string> drivers;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        const std::string name = info->dlpi_name ? info->dlpi_name : "";
+        if (name.find("/dri/") != std::string::npos || name.find("libgallium") != std::string::npos)
+          static_cast<std::vector<std::string>*>(out)->push_back(name);
+        return 0;
+      },
+      &drivers);
+  // RTLD_NOLOAD: only the already loaded driver; RTLD_NODELETE: dlclose no longer unmaps it.
+  for (const auto& d : drivers) dlopen(d.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+#endif
 }
 
 bool isSoftwareRenderer() {

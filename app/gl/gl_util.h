@@ -14,6 +14,12 @@ void enableGlDebugOutput(bool synchronous);
 int glDebugErrorCount();
 void resetGlDebugErrorCount();
 std::string glRendererName();
+// Sanitizer builds only (a no-op otherwise); call once a context is current. Mesa dlcloses
+// its DRI driver when the display goes away, which unmaps the driver's globals: LeakSanitizer
+// then reports the blocks only those globals pointed to as leaks of an unnamed module, which
+// no suppression can match. Keeping the driver mapped until exit leaves them reachable, so
+// what LeakSanitizer still reports is real and names the driver.
+void keepGlDriverLoaded();
 bool isSoftwareRenderer();  // llvmpipe/softpipe: timer queries there do not measure the work
 
 // Named scope in a captured frame (RenderDoc, apitrace).

@@ -1,5 +1,7 @@
 #include "gl/headless_context.h"
 
+#include "gl/gl_util.h"
+
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
@@ -71,6 +73,7 @@ HeadlessContext::HeadlessContext() {
   }
   display_ = display;
   context_ = ctx;
+  keepGlDriverLoaded();
 }
 
 HeadlessContext::~HeadlessContext() {
