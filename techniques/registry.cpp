@@ -4,6 +4,7 @@
 #include "depth/depth_representations.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
+#include "prefiltered/prefiltered_representations.h"
 
 namespace sl {
 
@@ -76,6 +77,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
   static const auto list = [] {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
+    registerPrefilteredRepresentations(v);
     return v;
   }();
   return list;
@@ -91,7 +93,8 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
 }
 
 const std::vector<Preset>& allPresets() {
-  static const std::vector<Preset> presets = {
+  static const std::vector<Preset> presets = [] {
+    std::vector<Preset> v = {
       {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
       {"uniform", "one shadow map over the whole scene, nearest depth test", "uniform", "depth-nearest", "none", {}},
       {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
@@ -128,7 +131,10 @@ const std::vector<Preset>& allPresets() {
        "depth-pcf",
        "pixel-correct",
        {"pcf.kernel=3"}},
-  };
+    };
+    addPrefilteredPresets(v);
+    return v;
+  }();
   return presets;
 }
 
