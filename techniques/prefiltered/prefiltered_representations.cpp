@@ -208,7 +208,7 @@ void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representati
                               .type = ParamType::Int,
                               .min = 1,
                               .max = 16,
-                              .defaultValue = 4,
+                              .defaultValue = 8,
                               .unit = "terms",
                               .help = "Fourier terms M: 2M basis images in ceil(M/2) RGBA targets"},
                              {.key = "convolution.alpha",
@@ -221,13 +221,13 @@ void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representati
                               .type = ParamType::Float,
                               .min = 1,
                               .max = 8,
-                              .defaultValue = 2,
+                              .defaultValue = 4,
                               .help = "steepens the reconstruction about 1/2 before clamping to [0,1]"},
                              {.key = "convolution.offset",
                               .type = ParamType::Float,
                               .min = 0,
-                              .max = 0.05,
-                              .defaultValue = 0.01,
+                              .max = 0.2,
+                              .defaultValue = 0.015,
                               .unit = "depth [0,1]",
                               .help = "receiver moved toward the light so that its own surface reads lit"}},
       convolutionSpec()));
@@ -241,7 +241,7 @@ void addPrefilteredPresets(std::vector<Preset>& out) {
   add("esm", "focused exponential shadow map, log-space 5x5 blur", "esm", {});
   add("evsm2", "focused EVSM, positive warp (2 moments)", "evsm", {"evsm.warps=positive"});
   add("evsm4", "focused EVSM, both warps (4 moments)", "evsm", {"evsm.warps=both"});
-  add("convolution", "focused convolution shadow map, 4 Fourier terms", "convolution", {});
+  add("convolution", "focused convolution shadow map, 8 Fourier terms", "convolution", {});
   add("gaussian", "focused Gaussian-filtered shadow map (Gumbau et al.)", "gaussian", {});
   add("ewgf", "focused exponentially warped Gaussian filtering (Gumbau et al.)", "ewgf", {});
   add("msm", "focused moment shadow map, 32-bit moments", "msm", {});

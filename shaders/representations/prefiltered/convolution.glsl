@@ -6,8 +6,9 @@
 // ringing; the response is steepened (scale) about 1/2, the receiver moved toward the light
 // (offset), and clamped to [0,1], which hides the remaining ringing.
 // Depths enter as 0.9 z: the series is 2-periodic in z - d, and a receiver at d = 0 under an
-// empty texel (z = 1) would sit on the period's jump (value 1/2); 0.9 keeps every difference,
-// offset included, inside (-1, 1).
+// empty texel (z = 1) would sit on the period's jump (value 1/2); 0.9 keeps every difference
+// inside (-1, 1) for offsets up to 0.11 (larger ones wrap only for receivers nearer than the
+// offset to the light's near plane).
 #include "representations/prefiltered/moment_math.glsl"
 uniform float u_convolution_alpha;
 uniform float u_convolution_scale;
