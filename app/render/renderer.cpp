@@ -30,9 +30,9 @@ const Texture2D* Viewport::viewTexture(const std::string& name) const {
 
 std::vector<std::string> Viewport::availableViews() const {
   std::vector<std::string> v = commonViewNames();
-  for (const PartState* part : {static_cast<const PartState*>(layout.get()),
-                                static_cast<const PartState*>(representation.get()),
-                                static_cast<const PartState*>(accumulation.get())})
+  for (const PartState* part :
+       {static_cast<const PartState*>(layout.get()), static_cast<const PartState*>(representation.get()),
+        static_cast<const PartState*>(accumulation.get())})
     for (const auto& extra : part->views()) v.push_back(extra);
   return v;
 }

@@ -28,11 +28,10 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
 
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
   const bool mips = config_.method == FilterMethod::Mipmap;
-  const ProgramSpec spec{
-      mips ? "moment downsample" : "moment blur",
-      {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
-       {GL_FRAGMENT_SHADER, mips ? "passes/moment_downsample.frag" : "passes/moment_blur.frag"}},
-      filterDefines(config_, spec_.logFilter)};
+  const ProgramSpec spec{mips ? "moment downsample" : "moment blur",
+                         {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
+                          {GL_FRAGMENT_SHADER, mips ? "passes/moment_downsample.frag" : "passes/moment_blur.frag"}},
+                         filterDefines(config_, spec_.logFilter)};
   Program& p = shaders.get(spec);
   if (!p.valid()) return;
   p.use();

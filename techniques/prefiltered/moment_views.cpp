@@ -22,11 +22,14 @@ void addMomentViewPasses(FrameGraph& graph, const PartContext& ctx, const std::s
     const std::string resource = "view." + name + ctx.viewportTag;
     // The view shader includes the technique's modules through the same prelude as the
     // visibility passes (ctx.bindTechnique binds the moment targets and the parameters).
-    std::string defines = name == "variance" ? "#define SL_VIEW_VARIANCE\n" : name == "fourier" ? "#define SL_VIEW_SIGNED\n" : "";
+    std::string defines = name == "variance"  ? "#define SL_VIEW_VARIANCE\n"
+                          : name == "fourier" ? "#define SL_VIEW_SIGNED\n"
+                                              : "";
     graph.add({resource, {moments}, {resource}, [ctx, target, defines] {
-                 ProgramSpec spec{"view moments " + defines,
-                                  {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/moments.frag"}},
-                                  defines + ctx.techniquePrelude};
+                 ProgramSpec spec{
+                     "view moments " + defines,
+                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/moments.frag"}},
+                     defines + ctx.techniquePrelude};
                  Program& p = ctx.shaders->get(spec);
                  if (!p.valid()) return;
                  Framebuffer fbo("view target");

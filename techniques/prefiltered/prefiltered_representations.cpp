@@ -29,9 +29,7 @@ class PrefilteredRepresentation : public Representation {
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
   std::string shadowMapFragment() const override { return "passes/shadow_moments.frag"; }
-  std::unique_ptr<RepresentationState> createState() const override {
-    return std::make_unique<MomentMapState>(spec_);
-  }
+  std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<MomentMapState>(spec_); }
 
  private:
   std::string id_, help_, module_;
@@ -46,8 +44,9 @@ ParamDecl minVariance(const std::string& key, double value) {
           .max = 0.01,
           .defaultValue = value,
           .unit = "depth^2",
-          .help = "variance floor: a flat occluder filling the kernel still gets this spread (against acne and "
-                  "the 16-bit cancellation of z^2 - z*z)",
+          .help =
+              "variance floor: a flat occluder filling the kernel still gets this spread (against acne and "
+              "the 16-bit cancellation of z^2 - z*z)",
           .logScale = true};
 }
 
@@ -71,7 +70,10 @@ double warpExponent(const ParamSet& p, const std::string& key) {
 
 MomentSpec twoMoments() {
   return {.channels = [](const ParamSet&) { return 2; },
-          .clearValue = [](const ParamSet&) { return std::vector<float>{1.0f, 1.0f}; },
+          .clearValue =
+              [](const ParamSet&) {
+                return std::vector<float>{1.0f, 1.0f};
+              },
           .hasVariance = true};
 }
 
@@ -128,109 +130,119 @@ MomentSpec convolutionSpec() {
     }
     return v;
   };
-  s.defines = [](const ParamSet& p) { return "#define SL_CONVOLUTION_TERMS " + std::to_string(p.i("convolution.terms")) + "\n"; };
+  s.defines = [](const ParamSet& p) {
+    return "#define SL_CONVOLUTION_TERMS " + std::to_string(p.i("convolution.terms")) + "\n";
+  };
   s.fourier = true;
   return s;
+}
+
+ParamDecl exponent(const std::string& key, double value, const std::string& help) {
+  return {.key = key,
+          .type = ParamType::Float,
+          .min = 0.01,
+          .max = 100,
+          .defaultValue = value,
+          .help = help + " (clamped to 5.54 in float16 and 42 in float32 storage)",
+          .logScale = true};
+}
+
+std::vector<ParamDecl> esmParams() {
+  return {{.key = "esm.exponent",
+           .type = ParamType::Float,
+           .min = 1,
+           .max = 1000,
+           .defaultValue = 80,
+           .help = "exponent c: sharper and less leaking when larger (log-space filtering: any value is safe in "
+                   "every format)",
+           .logScale = true}};
+}
+
+std::vector<ParamDecl> evsmParams() {
+  return {{.key = "evsm.warps",
+           .type = ParamType::Enum,
+           .defaultValue = 1,
+           .help = "positive warp only (2 moments) or positive and negative (4 moments, min of the two bounds)",
+           .choices = {"positive", "both"}},
+          exponent("evsm.exponent_pos", 40, "positive warp exponent c+"),
+          exponent("evsm.exponent_neg", 5, "negative warp exponent c-"),
+          minVariance("evsm.min_variance", 1e-6),
+          bleed("evsm.bleed")};
+}
+
+std::vector<ParamDecl> msmParams() {
+  return {{.key = "msm.moment_bias",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 0.01,
+           .defaultValue = 3e-5,
+           .help = "moments pulled toward those of a uniform distribution (keeps the Hankel matrix invertible "
+                   "after quantization)",
+           .logScale = true},
+          {.key = "msm.quantize",
+           .type = ParamType::Bool,
+           .defaultValue = 0,
+           .help = "store through the paper's optimized affine quantization (for 16-bit storage)"}};
+}
+
+std::vector<ParamDecl> convolutionParams() {
+  return {{.key = "convolution.terms",
+           .type = ParamType::Int,
+           .min = 1,
+           .max = 16,
+           .defaultValue = 8,
+           .unit = "terms",
+           .help = "Fourier terms M: 2M basis images in ceil(M/2) RGBA targets"},
+          {.key = "convolution.alpha",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 10,
+           .defaultValue = 1,
+           .help = "attenuation exp(-alpha (k/M)^2) of term k against ringing"},
+          {.key = "convolution.scale",
+           .type = ParamType::Float,
+           .min = 1,
+           .max = 8,
+           .defaultValue = 4,
+           .help = "steepens the reconstruction about 1/2 before clamping to [0,1]"},
+          {.key = "convolution.offset",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 0.2,
+           .defaultValue = 0.015,
+           .unit = "depth [0,1]",
+           .help = "receiver moved toward the light so that its own surface reads lit"}};
+}
+
+MomentSpec esmSpec() {
+  return {.channels = [](const ParamSet&) { return 1; },
+          .clearValue = [](const ParamSet&) { return std::vector<float>{1.0f}; },
+          .logFilter = true,
+          .logExponentKey = "esm.exponent"};
 }
 
 }  // namespace
 
 void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representation>>& out) {
   const std::string dir = "representations/prefiltered/";
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "vsm", "variance shadow map (Donnelly & Lauritzen 2006): moments z, z^2; one-tailed Chebyshev bound",
-      dir + "vsm.glsl", std::vector<ParamDecl>{minVariance("vsm.min_variance", 1e-5), bleed("vsm.bleed")},
-      twoMoments()));
-  MomentSpec esm{.channels = [](const ParamSet&) { return 1; },
-                 .clearValue = [](const ParamSet&) { return std::vector<float>{1.0f}; },
-                 .logFilter = true,
-                 .logExponentKey = "esm.exponent"};
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "esm", "exponential shadow map (Annen et al. 2008): exp(c (z - d)), depth filtered in log space",
-      dir + "esm.glsl",
-      std::vector<ParamDecl>{{.key = "esm.exponent",
-                              .type = ParamType::Float,
-                              .min = 1,
-                              .max = 1000,
-                              .defaultValue = 80,
-                              .help = "exponent c: sharper and less leaking when larger (log-space filtering: any "
-                                      "value is safe in every format)",
-                              .logScale = true}},
-      esm));
-  auto exponent = [](const std::string& key, double value, const std::string& help) {
-    return ParamDecl{.key = key,
-                     .type = ParamType::Float,
-                     .min = 0.01,
-                     .max = 100,
-                     .defaultValue = value,
-                     .help = help + " (clamped to 5.54 in float16 and 42 in float32 storage)",
-                     .logScale = true};
+  auto add = [&](std::string id, std::string help, std::vector<ParamDecl> params, MomentSpec spec) {
+    const std::string module = dir + id + ".glsl";
+    out.push_back(std::make_unique<PrefilteredRepresentation>(std::move(id), std::move(help), module, std::move(params),
+                                                              std::move(spec)));
   };
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "evsm", "exponential variance shadow map: Chebyshev bounds on exponentially warped depth", dir + "evsm.glsl",
-      std::vector<ParamDecl>{{.key = "evsm.warps",
-                              .type = ParamType::Enum,
-                              .defaultValue = 1,
-                              .help = "positive warp only (2 moments) or positive and negative (4 moments, min of "
-                                      "the two bounds)",
-                              .choices = {"positive", "both"}},
-                             exponent("evsm.exponent_pos", 40, "positive warp exponent c+"),
-                             exponent("evsm.exponent_neg", 5, "negative warp exponent c-"),
-                             minVariance("evsm.min_variance", 1e-6), bleed("evsm.bleed")},
-      evsmSpec()));
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "gaussian", "Gaussian filtering (Gumbau et al. 2013): VSM moments read as a Gaussian CDF", dir + "gaussian.glsl",
-      std::vector<ParamDecl>{minVariance("gaussian.min_variance", 1e-7)}, twoMoments()));
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "ewgf", "exponentially warped Gaussian filtering (Gumbau et al. 2013): Gaussian CDF on warped-depth moments",
-      dir + "ewgf.glsl",
-      std::vector<ParamDecl>{exponent("ewgf.exponent", 10, "warp exponent c"), minVariance("ewgf.min_variance", 1e-7)},
-      ewgfSpec()));
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "msm", "moment shadow map (Peters & Klein 2015): 4 moments, Hamburger reconstruction", dir + "msm.glsl",
-      std::vector<ParamDecl>{{.key = "msm.moment_bias",
-                              .type = ParamType::Float,
-                              .min = 0,
-                              .max = 0.01,
-                              .defaultValue = 3e-5,
-                              .help = "moments pulled toward those of a uniform distribution (keeps the Hankel "
-                                      "matrix invertible after quantization)",
-                              .logScale = true},
-                             {.key = "msm.quantize",
-                              .type = ParamType::Bool,
-                              .defaultValue = 0,
-                              .help = "store through the paper's optimized affine quantization (for 16-bit storage)"}},
-      msmSpec()));
-  out.push_back(std::make_unique<PrefilteredRepresentation>(
-      "convolution", "convolution shadow map (Annen et al. 2007): Fourier series of the step, M terms",
-      dir + "convolution.glsl",
-      std::vector<ParamDecl>{{.key = "convolution.terms",
-                              .type = ParamType::Int,
-                              .min = 1,
-                              .max = 16,
-                              .defaultValue = 8,
-                              .unit = "terms",
-                              .help = "Fourier terms M: 2M basis images in ceil(M/2) RGBA targets"},
-                             {.key = "convolution.alpha",
-                              .type = ParamType::Float,
-                              .min = 0,
-                              .max = 10,
-                              .defaultValue = 1,
-                              .help = "attenuation exp(-alpha (k/M)^2) of term k against ringing"},
-                             {.key = "convolution.scale",
-                              .type = ParamType::Float,
-                              .min = 1,
-                              .max = 8,
-                              .defaultValue = 4,
-                              .help = "steepens the reconstruction about 1/2 before clamping to [0,1]"},
-                             {.key = "convolution.offset",
-                              .type = ParamType::Float,
-                              .min = 0,
-                              .max = 0.2,
-                              .defaultValue = 0.015,
-                              .unit = "depth [0,1]",
-                              .help = "receiver moved toward the light so that its own surface reads lit"}},
-      convolutionSpec()));
+  add("vsm", "variance shadow map (Donnelly & Lauritzen 2006): moments z, z^2; one-tailed Chebyshev bound",
+      {minVariance("vsm.min_variance", 1e-5), bleed("vsm.bleed")}, twoMoments());
+  add("esm", "exponential shadow map (Annen et al. 2008): exp(c (z - d)), depth filtered in log space", esmParams(),
+      esmSpec());
+  add("evsm", "exponential variance shadow map: Chebyshev bounds on exponentially warped depth", evsmParams(),
+      evsmSpec());
+  add("gaussian", "Gaussian filtering (Gumbau et al. 2013): VSM moments read as a Gaussian CDF",
+      {minVariance("gaussian.min_variance", 1e-7)}, twoMoments());
+  add("ewgf", "exponentially warped Gaussian filtering (Gumbau et al. 2013): Gaussian CDF on warped-depth moments",
+      {exponent("ewgf.exponent", 10, "warp exponent c"), minVariance("ewgf.min_variance", 1e-7)}, ewgfSpec());
+  add("msm", "moment shadow map (Peters & Klein 2015): 4 moments, Hamburger reconstruction", msmParams(), msmSpec());
+  add("convolution", "convolution shadow map (Annen et al. 2007): Fourier series of the step, M terms",
+      convolutionParams(), convolutionSpec());
 }
 
 void addPrefilteredPresets(std::vector<Preset>& out) {

@@ -28,9 +28,10 @@ class MomentProbe {
     auto state = t.representation->createState();
     state->configure(t.params);
     const std::string prelude = state->defines() + "#include \"" + t.representation->glslModule() + "\"\n";
-    Program& p = h_.shaders.get({"moment probe " + preset,
-                                 {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_moments.frag"}},
-                                 prelude});
+    Program& p =
+        h_.shaders.get({"moment probe " + preset,
+                        {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_moments.frag"}},
+                        prelude});
     EXPECT_TRUE(p.valid()) << p.error();
     if (!p.valid()) return {};
     const int w = static_cast<int>(cases.size());
@@ -58,9 +59,10 @@ class MomentProbe {
     auto state = t.representation->createState();
     state->configure(t.params);
     const std::string prelude = state->defines() + "#include \"" + t.representation->glslModule() + "\"\n";
-    Program& p = h_.shaders.get({"moment probe moments " + preset,
-                                 {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_write.frag"}},
-                                 prelude});
+    Program& p =
+        h_.shaders.get({"moment probe moments " + preset,
+                        {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_write.frag"}},
+                        prelude});
     EXPECT_TRUE(p.valid()) << p.error();
     if (!p.valid()) return {};
     Texture2D target(GL_RGBA32F, 8, 1, "probe moments");

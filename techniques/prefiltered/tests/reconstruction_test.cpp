@@ -16,7 +16,18 @@ const std::vector<std::string> kPresets = {"vsm",      "esm",  "evsm2", "evsm4",
 // Depths a caster can leave in the map, valid or not.
 std::vector<float> hardDepths() {
   const float inf = std::numeric_limits<float>::infinity();
-  return {0.0f, 1e-3f, 0.25f, 0.5f, 0.5f + 1e-6f, 0.999f, 1.0f, -0.5f, 2.0f, 1e4f, inf, -inf,
+  return {0.0f,
+          1e-3f,
+          0.25f,
+          0.5f,
+          0.5f + 1e-6f,
+          0.999f,
+          1.0f,
+          -0.5f,
+          2.0f,
+          1e4f,
+          inf,
+          -inf,
           std::numeric_limits<float>::quiet_NaN()};
 }
 
@@ -68,9 +79,10 @@ TEST(PrefilteredReconstruction, ExponentsAtAndBeyondWhatTheFormatHolds) {
   const std::vector<MomentCase> cases = hardCases();
   for (const std::string format : {"float16", "float32"}) {
     for (const std::string c : {"5.54", "42", "100"}) {
-      for (const auto& [preset, keys] :
-           std::vector<std::pair<std::string, std::vector<std::string>>>{
-               {"evsm2", {"evsm.exponent_pos"}}, {"evsm4", {"evsm.exponent_pos", "evsm.exponent_neg"}}, {"ewgf", {"ewgf.exponent"}}}) {
+      for (const auto& [preset, keys] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+               {"evsm2", {"evsm.exponent_pos"}},
+               {"evsm4", {"evsm.exponent_pos", "evsm.exponent_neg"}},
+               {"ewgf", {"ewgf.exponent"}}}) {
         std::vector<std::string> sets = {"filter.format=" + format};
         for (const auto& k : keys) sets.push_back(k + "=" + c);
         expectFiniteUnit(probe.visibility(preset, sets, cases), cases, preset + " " + format + " c=" + c);
@@ -89,8 +101,9 @@ TEST(PrefilteredReconstruction, ConvolutionFiniteForEveryNumberOfTerms) {
   const std::vector<MomentCase> cases = hardCases();
   for (int m = 1; m <= 16; ++m)
     for (const std::string format : {"float16", "float32"})
-      expectFiniteUnit(probe.visibility("convolution", {"convolution.terms=" + std::to_string(m), "filter.format=" + format}, cases),
-                       cases, "convolution M=" + std::to_string(m) + " " + format);
+      expectFiniteUnit(
+          probe.visibility("convolution", {"convolution.terms=" + std::to_string(m), "filter.format=" + format}, cases),
+          cases, "convolution M=" + std::to_string(m) + " " + format);
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
@@ -170,8 +183,9 @@ TEST(PrefilteredReconstruction, FourierApproachesTheStepAsTermsGrow) {
     }
   std::vector<double> errors;
   for (int m : {1, 2, 4, 8, 16}) {
-    const auto v = probe.visibility("convolution", {"convolution.terms=" + std::to_string(m), "convolution.alpha=0",
-                                                    "convolution.scale=1", "convolution.offset=0"},
+    const auto v = probe.visibility("convolution",
+                                    {"convolution.terms=" + std::to_string(m), "convolution.alpha=0",
+                                     "convolution.scale=1", "convolution.offset=0"},
                                     cases);
     ASSERT_EQ(v.size(), cases.size());
     double e = 0;
