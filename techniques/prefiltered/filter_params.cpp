@@ -3,7 +3,9 @@
 
 namespace sl {
 
-std::vector<ParamDecl> filterParams() {
+std::vector<ParamDecl> filterParams(bool withSat) {
+  std::vector<std::string> methods = {"blur", "mipmap"};
+  if (withSat) methods.push_back("sat");
   return {
       {.key = "filter.format",
        .type = ParamType::Enum,
@@ -14,9 +16,10 @@ std::vector<ParamDecl> filterParams() {
       {.key = "filter.method",
        .type = ParamType::Enum,
        .defaultValue = 0,
-       .help = "pre-filter of the moments: separable box blur of filter.width texels, or mip-maps read "
-               "trilinearly at the level filter.width texels wide",
-       .choices = {"blur", "mipmap"}},
+       .help = "pre-filter of the moments: separable box blur of filter.width texels, mip-maps read "
+               "trilinearly at the level filter.width texels wide, or a 32-bit summed-area table (any width "
+               "at the same cost)",
+       .choices = methods},
       {.key = "filter.width",
        .type = ParamType::Int,
        .min = 1,

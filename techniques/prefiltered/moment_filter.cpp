@@ -27,6 +27,7 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
 }  // namespace
 
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
+  if (config_.method == FilterMethod::Sat) return buildSat(shaders);
   const bool mips = config_.method == FilterMethod::Mipmap;
   const ProgramSpec spec{mips ? "moment downsample" : "moment blur",
                          {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},

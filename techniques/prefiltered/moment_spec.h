@@ -30,7 +30,8 @@ struct MomentSpec {
 };
 
 // Parameters every pre-filtered representation has (storage format, filter method and width).
-std::vector<ParamDecl> filterParams();
+// withSat: summed-area tables are offered (not for ESM, whose log-space average is no sum).
+std::vector<ParamDecl> filterParams(bool withSat);
 // Bits per stored float of the `filter.format` parameter: 16 or 32.
 int formatBits(const ParamSet& params);
 // The largest exponent c for which exp(c)^2 stays finite in the storage format: what EVSM's

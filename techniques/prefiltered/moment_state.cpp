@@ -28,8 +28,9 @@ MomentMapState::~MomentMapState() {
 void MomentMapState::configure(const ParamSet& params) {
   MomentConfig c;
   c.channels = spec_.channels(params);
-  c.bits = formatBits(params);
   c.method = static_cast<FilterMethod>(params.i("filter.method"));
+  // Summed-area tables need 32-bit sums whatever the format asked for.
+  c.bits = c.method == FilterMethod::Sat ? 32 : formatBits(params);
   c.width = params.i("filter.width");
   if (c.channels < 1 || c.channels > 32)
     throw ParamError("pre-filtered representation stores " + std::to_string(c.channels) +
@@ -88,11 +89,12 @@ void MomentMapState::beginShadowLayer(int layer) {
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   std::string out = ctx.shadowMap;
-  if (config_.width > 1 || config_.method == FilterMethod::Mipmap) {
+  if (config_.width > 1 || config_.method != FilterMethod::Blur) {
     out = "moments.filtered" + ctx.viewportTag;
     ShaderLibrary* shaders = ctx.shaders;
     auto draw = ctx.drawFullscreen;
-    const char* name = config_.method == FilterMethod::Mipmap ? "prefilter.mips" : "prefilter.blur";
+    static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
+    const std::string name = names[static_cast<int>(config_.method)];
     graph.add({name + ctx.viewportTag, {ctx.shadowMap}, {out}, [this, shaders, draw] { filter(*shaders, draw); }});
   }
   addMomentViewPasses(graph, ctx, out, views());
@@ -103,14 +105,19 @@ void MomentMapState::bind(const Program& p, TextureUnits& units) const {
   // Only programs that sample the moments get them: the shadow pass includes the module too,
   // and binding the targets it renders into would be a feedback loop.
   if (glGetUniformLocation(p.id(), "u_moments0") < 0) return;
-  for (int t = 0; t < config_.targets(); ++t)
+  for (int t = 0; t < config_.targets(); ++t) {
     units.bind(p, "u_moments" + std::to_string(t), moments_[static_cast<size_t>(t)].id(), sampler_);
+    if (config_.method == FilterMethod::Sat)
+      p.set("u_satOffset" + std::to_string(t),
+            t < static_cast<int>(satOffset_.size()) ? satOffset_[static_cast<size_t>(t)] : glm::vec4(0.0f));
+  }
 }
 
 std::string MomentMapState::defines() const {
   std::string d = "#define SL_MOMENT_TARGETS " + std::to_string(config_.targets()) + "\n";
   d += "#define SL_MOMENT_FLOAT_BITS " + std::to_string(config_.bits) + "\n";
   if (config_.method == FilterMethod::Mipmap) d += "#define SL_MOMENT_MIPMAP\n";
+  if (config_.method == FilterMethod::Sat) d += "#define SL_MOMENT_SAT\n";
   if (spec_.logFilter) d += "#define SL_MOMENT_LOG_FILTER\n";
   return d + defines_;
 }

@@ -6,6 +6,8 @@
 #pragma once
 
 #include "gl/gl_util.h"
+
+#include <glm/glm.hpp>
 #include "prefiltered/moment_spec.h"
 #include "technique.h"
 
@@ -14,7 +16,7 @@
 
 namespace sl {
 
-enum class FilterMethod { Blur = 0, Mipmap = 1 };
+enum class FilterMethod { Blur = 0, Mipmap = 1, Sat = 2 };
 
 // What the targets depend on; a change reallocates them.
 struct MomentConfig {
@@ -50,6 +52,7 @@ class MomentMapState : public RepresentationState {
 
  private:
   void allocate(int size, int layers);
+  void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
   const MomentSpec& spec_;
   MomentConfig config_;
   std::vector<float> clear_;
@@ -59,6 +62,7 @@ class MomentMapState : public RepresentationState {
   Texture2D depth_;
   std::vector<Texture2D> moments_, scratch_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: every moment target + depth
+  std::vector<glm::vec4> satOffset_;     // per target: what its summed-area table subtracted
 };
 
 }  // namespace sl

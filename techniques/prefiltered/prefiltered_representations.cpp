@@ -21,7 +21,7 @@ class PrefilteredRepresentation : public Representation {
   PrefilteredRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> own,
                             MomentSpec spec)
       : id_(std::move(id)), help_(std::move(help)), module_(std::move(module)), spec_(std::move(spec)) {
-    params_ = filterParams();
+    params_ = filterParams(!spec_.logFilter);
     params_.insert(params_.end(), own.begin(), own.end());
   }
   std::string id() const override { return id_; }

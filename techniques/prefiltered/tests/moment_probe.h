@@ -142,6 +142,15 @@ inline std::string probeShaderDir() {
   const std::string dir = copyShaders("moment_probe");
   std::ofstream(std::filesystem::path(dir) / "probe_moments.frag") << MomentProbe::probeSource();
   std::ofstream(std::filesystem::path(dir) / "probe_write.frag") << MomentProbe::writeSource();
+  // The filtered lookup (momentsAt) at every texel centre of layer 0: target 0.
+  std::ofstream(std::filesystem::path(dir) / "probe_lookup.frag") << R"(uniform vec2 u_probeSize;
+layout(location = 0) out vec4 o_result;
+void main() {
+  vec4 m[SL_MOMENT_TARGETS];
+  momentsAt(vec3(gl_FragCoord.xy / u_probeSize, 0.0), m);
+  o_result = m[0];
+}
+)";
   return dir;
 }
 
