@@ -1,0 +1,60 @@
+#include "prefiltered/visibility_curve.h"
+
+#include "gl/texture_units.h"
+#include "render/renderer.h"
+
+#include <cmath>
+
+namespace sl {
+
+std::vector<float> reconstructedCurve(ShaderLibrary& shaders, const Technique& t, const MomentMapState& state,
+                                      const glm::vec3& uvLayer, int samples) {
+  const std::string prelude = state.defines() + "#include \"" + t.representation->glslModule() + "\"\n";
+  Program& p =
+      shaders.get({"visibility curve",
+                   {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/visibility_curve.frag"}},
+                   prelude});
+  if (!p.valid()) return {};
+  Texture2D target(GL_RGBA32F, samples, 1, "visibility curve");
+  Framebuffer fbo("visibility curve");
+  fbo.attach({&target}, nullptr);
+  fbo.bind();
+  p.use();
+  setTechniqueUniforms(p, t, LightSpace{}, Light{});
+  p.set("u_uvLayer", uvLayer);
+  p.set("u_samples", static_cast<float>(samples));
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  {
+    TextureUnits units;
+    state.bind(p, units);
+    glBindVertexArray(vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+  }
+  glDeleteVertexArrays(1, &vao);
+  std::vector<float> rgba = target.readFloats(4), out;
+  for (size_t i = 0; i < rgba.size(); i += 4) out.push_back(rgba[i]);
+  return out;
+}
+
+std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, int width, int samples) {
+  const int n = depth.width();
+  const std::vector<float> all = depth.readFloats(1);
+  const size_t layerOffset = static_cast<size_t>(uvLayer.z) * n * n;
+  const int cx = static_cast<int>(std::floor(uvLayer.x * n)), cy = static_cast<int>(std::floor(uvLayer.y * n));
+  std::vector<float> box;
+  for (int y = cy - width / 2; y <= cy + width / 2; ++y)
+    for (int x = cx - width / 2; x <= cx + width / 2; ++x)
+      box.push_back(all[layerOffset + static_cast<size_t>(std::clamp(y, 0, n - 1)) * n + std::clamp(x, 0, n - 1)]);
+  std::vector<float> out;
+  for (int s = 0; s < samples; ++s) {
+    const float d = static_cast<float>(s) / static_cast<float>(std::max(samples - 1, 1));
+    int lit = 0;
+    for (float z : box) lit += d <= z ? 1 : 0;
+    out.push_back(static_cast<float>(lit) / static_cast<float>(box.size()));
+  }
+  return out;
+}
+
+}  // namespace sl
