@@ -117,11 +117,8 @@ int runPlotCommand(int argc, char** argv) {
         const std::vector<float> pos = renderer.gPosition().readFloats(4);
         const size_t i = (static_cast<size_t>(py) * width + px) * 4;
         if (pos[i + 3] < 0.5f) throw ArgError("pixel " + pixel[0] + "," + pixel[1] + " shows no surface");
-        const glm::vec4 P(pos[i], pos[i + 1], pos[i + 2], 1.0f);
-        const LightView& lv = vp.lightSpace.primary();
-        const glm::vec4 clip = lv.viewProj * P;
-        uvLayer = glm::vec3(glm::vec2(clip) / clip.w * 0.5f + 0.5f, 0.0f);
-        receiver = (-(lv.view * P).z - lv.nearPlane) / (lv.farPlane - lv.nearPlane);
+        if (!mapPointOf(glm::vec3(pos[i], pos[i + 1], pos[i + 2]), vp.lightSpace.primary(), uvLayer, receiver))
+          throw ArgError("pixel " + pixel[0] + "," + pixel[1] + " is behind the light's view");
         curves.push_back({"true (box of " + std::to_string(vp.technique.params.i("filter.width")) + " texels)", "black",
                           trueCurve(*state->depthTexture(), uvLayer, vp.technique.params.i("filter.width"), samples)});
       }

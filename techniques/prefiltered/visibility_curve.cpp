@@ -40,13 +40,18 @@ std::vector<float> reconstructedCurve(ShaderLibrary& shaders, const Technique& t
 
 std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, int width, int samples) {
   const int n = depth.width();
-  const std::vector<float> all = depth.readFloats(1);
-  const size_t layerOffset = static_cast<size_t>(uvLayer.z) * n * n;
   const int cx = static_cast<int>(std::floor(uvLayer.x * n)), cy = static_cast<int>(std::floor(uvLayer.y * n));
+  // The box clamped to the map, as the clamp-to-edge filters see it (edge texels repeat).
+  const int x0 = std::clamp(cx - width / 2, 0, n - 1), x1 = std::clamp(cx + width / 2, 0, n - 1);
+  const int y0 = std::clamp(cy - width / 2, 0, n - 1), y1 = std::clamp(cy + width / 2, 0, n - 1);
+  const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+  std::vector<float> region(static_cast<size_t>(bw) * bh);
+  glGetTextureSubImage(depth.id(), 0, x0, y0, static_cast<int>(uvLayer.z), bw, bh, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                       static_cast<GLsizei>(region.size() * sizeof(float)), region.data());
   std::vector<float> box;
   for (int y = cy - width / 2; y <= cy + width / 2; ++y)
     for (int x = cx - width / 2; x <= cx + width / 2; ++x)
-      box.push_back(all[layerOffset + static_cast<size_t>(std::clamp(y, 0, n - 1)) * n + std::clamp(x, 0, n - 1)]);
+      box.push_back(region[static_cast<size_t>(std::clamp(y, y0, y1) - y0) * bw + (std::clamp(x, x0, x1) - x0)]);
   std::vector<float> out;
   for (int s = 0; s < samples; ++s) {
     const float d = static_cast<float>(s) / static_cast<float>(std::max(samples - 1, 1));
@@ -55,6 +60,14 @@ std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, i
     out.push_back(static_cast<float>(lit) / static_cast<float>(box.size()));
   }
   return out;
+}
+
+bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth) {
+  const glm::vec4 clip = view.viewProj * glm::vec4(world, 1.0f);
+  if (!(clip.w > 1e-6f)) return false;
+  uvLayer = glm::vec3(glm::vec2(clip) / clip.w * 0.5f + 0.5f, 0.0f);
+  depth = (-(view.view * glm::vec4(world, 1.0f)).z - view.nearPlane) / (view.farPlane - view.nearPlane);
+  return true;
 }
 
 }  // namespace sl

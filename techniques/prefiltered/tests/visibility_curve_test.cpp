@@ -60,5 +60,19 @@ TEST(VisibilityCurve, PlotCommandWritesOneCurvePerTechniqueAndTheTruth) {
   EXPECT_NE(std::system(bad.c_str()), 0) << "a technique that stores no moments must be refused";
 }
 
+// The explorer's twin (hold V, or --visibility-plot): the window runs with it pinned over a
+// pre-filtered viewport and exits cleanly.
+TEST(VisibilityCurve, ExplorerDrawsThePinnedPlot) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not on PATH";
+  const std::string shot = ::testing::TempDir() + "explorer_plot.png";
+  std::remove(shot.c_str());
+  const std::string cmd = "timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " + std::string(SHADOWLAB_BINARY) +
+                          " --scene overlap --technique vsm --set shadowmap.size=256 --visibility-plot --frames 3"
+                          " --screenshot-on-exit " +
+                          shot + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_TRUE(std::ifstream(shot).good());
+}
+
 }  // namespace
 }  // namespace sl
