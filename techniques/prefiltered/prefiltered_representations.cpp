@@ -214,6 +214,29 @@ std::vector<ParamDecl> convolutionParams() {
            .help = "receiver moved toward the light so that its own surface reads lit"}};
 }
 
+std::vector<ParamDecl> lvsmParams() {
+  return {{.key = "lvsm.layers",
+           .type = ParamType::Int,
+           .min = 1,
+           .max = 16,
+           .defaultValue = 4,
+           .unit = "layers",
+           .help = "equal depth layers, each with its own two moments (2 channels per layer)"},
+          minVariance("lvsm.min_variance", 1e-5)};
+}
+
+MomentSpec lvsmSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet& p) { return 2 * p.i("lvsm.layers"); };
+  // Depth 1 warps to 1 in every layer.
+  s.clearValue = [](const ParamSet& p) {
+    return std::vector<float>(static_cast<size_t>(2 * p.i("lvsm.layers")), 1.0f);
+  };
+  s.defines = [](const ParamSet& p) { return "#define SL_LVSM_LAYERS " + std::to_string(p.i("lvsm.layers")) + "\n"; };
+  s.hasVariance = true;
+  return s;
+}
+
 MomentSpec esmSpec() {
   return {.channels = [](const ParamSet&) { return 1; },
           .clearValue = [](const ParamSet&) { return std::vector<float>{1.0f}; },
@@ -241,6 +264,8 @@ void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representati
   add("ewgf", "exponentially warped Gaussian filtering (Gumbau et al. 2013): Gaussian CDF on warped-depth moments",
       {exponent("ewgf.exponent", 10, "warp exponent c"), minVariance("ewgf.min_variance", 1e-7)}, ewgfSpec());
   add("msm", "moment shadow map (Peters & Klein 2015): 4 moments, Hamburger reconstruction", msmParams(), msmSpec());
+  add("lvsm", "layered variance shadow map (Lauritzen & McCool 2008): VSM moments per depth layer", lvsmParams(),
+      lvsmSpec());
   add("convolution", "convolution shadow map (Annen et al. 2007): Fourier series of the step, M terms",
       convolutionParams(), convolutionSpec());
 }
@@ -257,6 +282,7 @@ void addPrefilteredPresets(std::vector<Preset>& out) {
   add("gaussian", "focused Gaussian-filtered shadow map (Gumbau et al.)", "gaussian", {});
   add("ewgf", "focused exponentially warped Gaussian filtering (Gumbau et al.)", "ewgf", {});
   add("msm", "focused moment shadow map, 32-bit moments", "msm", {});
+  add("lvsm", "focused layered VSM, 4 depth layers", "lvsm", {});
   add("msm16", "focused moment shadow map, 16-bit optimized quantization", "msm",
       {"filter.format=float16", "msm.quantize=on", "msm.moment_bias=6e-5"});
 }

@@ -232,7 +232,8 @@ TEST(MomentMap, BlurDropsNonFiniteTexels) {
 TEST(MomentMap, ClearValueIsTheMomentsOfTheFarPlane) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
-  for (const std::string preset : {"vsm", "esm", "evsm2", "evsm4", "convolution", "gaussian", "ewgf", "msm", "msm16"})
+  for (const std::string preset :
+       {"vsm", "esm", "evsm2", "evsm4", "convolution", "gaussian", "ewgf", "msm", "msm16", "lvsm"})
     for (const std::string extra : {"filter.format=float32", "convolution.terms=7"}) {
       if (extra.rfind("convolution", 0) == 0 && preset != "convolution") continue;
       Map m = momentMap(preset, {extra}, 8);
@@ -260,7 +261,7 @@ TEST(MomentMap, EveryRepresentationRendersFiniteVisibilityEverywhere) {
   for (const std::string sceneId : {"thin-casters", "spotlight", "columns"}) {
     Scene scene = loadScene(sceneId, defaultAssetsDir());
     h.renderer.setScene(scene);
-    for (const std::string rep : {"vsm", "esm", "evsm", "gaussian", "ewgf", "msm", "convolution"})
+    for (const std::string rep : {"vsm", "esm", "evsm", "gaussian", "ewgf", "msm", "convolution", "lvsm"})
       for (const std::string method : {"blur", "mipmap", "sat"})
         for (const std::string format : {"float16", "float32"})
           for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{

@@ -11,7 +11,7 @@ namespace {
 using test::MomentCase;
 
 const std::vector<std::string> kPresets = {"vsm",      "esm",  "evsm2", "evsm4", "convolution",
-                                           "gaussian", "ewgf", "msm",   "msm16"};
+                                           "gaussian", "ewgf", "msm",   "msm16", "lvsm"};
 
 // Depths a caster can leave in the map, valid or not.
 std::vector<float> hardDepths() {
@@ -122,6 +122,26 @@ TEST(PrefilteredReconstruction, VsmIsExactForOnePlanarOccluderOverAPlanarReceive
   for (size_t i = 0; i < v.size(); ++i)
     EXPECT_NEAR(v[i], 1.0f - cases[i].fraction, 2e-4f)
         << "occluder " << cases[i].z1 << " receiver " << cases[i].z2 << " coverage " << cases[i].fraction;
+}
+
+// The overlap case: two occluders at different depths in the kernel and the receiver behind
+// both (truly unlit). VSM's variance spans both occluders and its bound leaks light; layered
+// VSM tests the receiver's layer only, where both occluders sit at warped depth 0.
+TEST(PrefilteredReconstruction, LayeredVsmDoesNotBleedWhereVsmDoes) {
+  test::GlHarness h(test::probeShaderDir());
+  test::MomentProbe probe(h);
+  std::vector<MomentCase> cases;
+  for (float p : {0.2f, 0.5f, 0.8f})
+    for (float r : {0.55f, 0.6f, 0.7f}) cases.push_back({0.1f, 0.45f, p, r});
+  const auto vsm = probe.visibility("vsm", {}, cases);
+  const auto lvsm = probe.visibility("lvsm", {}, cases);
+  ASSERT_EQ(vsm.size(), cases.size());
+  ASSERT_EQ(lvsm.size(), cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    EXPECT_GT(vsm[i], 0.05f) << "the case must leak under VSM (receiver " << cases[i].receiver << ")";
+    // What is left is the variance floor's bound (1e-5 x 16 over a warped distance >= 0.2).
+    EXPECT_LT(lvsm[i], 5e-3f) << "receiver " << cases[i].receiver << " coverage " << cases[i].fraction;
+  }
 }
 
 // A single depth in the kernel: the Gaussian of a (floored) zero variance is a step, up to the
