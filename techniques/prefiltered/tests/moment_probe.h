@@ -138,8 +138,11 @@ void main() {
 };
 
 // A shader folder with the probe added (the source tree is never written).
+// One folder per test: ctest runs tests in parallel processes, and a shared folder would be
+// removed and copied again under a running test.
 inline std::string probeShaderDir() {
-  const std::string dir = copyShaders("moment_probe");
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string dir = copyShaders(std::string("moment_probe_") + (info ? info->name() : "none"));
   std::ofstream(std::filesystem::path(dir) / "probe_moments.frag") << MomentProbe::probeSource();
   std::ofstream(std::filesystem::path(dir) / "probe_write.frag") << MomentProbe::writeSource();
   // The filtered lookup (momentsAt) at every texel centre of layer 0: target 0.
