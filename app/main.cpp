@@ -14,12 +14,13 @@ const char* kUsage =
     "shadowlab - explore, compare and measure shadow-mapping techniques\n"
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
-    "            [--compare T2]... [--view NAME]... [--magnifier] [--light AZ,EL]\n"
+    "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
     "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
+    "  shadowlab plot --scene S --techniques a,b --out F.svg    visibility vs receiver depth at a texel (plot --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 
@@ -27,7 +28,7 @@ int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
                  "--shaders", "--compare", "--view", "--light"},
-                {"--magnifier"});
+                {"--magnifier", "--visibility-plot"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -40,6 +41,7 @@ int runExplorerCommand(int argc, char** argv) {
   o.compareTechniques = args.all("--compare");  // more viewports, side by side, same camera
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
+  o.visibilityPlot = args.has("--visibility-plot");
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
     const std::string v = args.get("--light");
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
       if (cmd == "list") return sl::runListCommand(argc, argv);
       if (cmd == "reference") return sl::runReferenceCommand(argc, argv);
       if (cmd == "bench") return sl::runBenchCommand(argc, argv);
+      if (cmd == "plot") return sl::runPlotCommand(argc, argv);
       if (cmd == "help" || cmd == "--help" || cmd == "-h") {
         std::cout << kUsage;
         return 0;

@@ -4,6 +4,7 @@
 #include "depth/depth_representations.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
+#include "prefiltered/prefiltered_representations.h"
 
 namespace sl {
 
@@ -76,6 +77,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
   static const auto list = [] {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
+    registerPrefilteredRepresentations(v);
     return v;
   }();
   return list;
@@ -91,44 +93,48 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
 }
 
 const std::vector<Preset>& allPresets() {
-  static const std::vector<Preset> presets = {
-      {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
-      {"uniform", "one shadow map over the whole scene, nearest depth test", "uniform", "depth-nearest", "none", {}},
-      {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
-      {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
-      {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
-      {"pixel-correct",
-       "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
-       "focused",
-       "depth-nearest",
-       "pixel-correct",
-       {}},
-      {"lispsm",
-       "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
-       "lispsm",
-       "depth-nearest",
-       "none",
-       {}},
-      {"pixel-correct-lispsm",
-       "pixel-correct over a LiSPSM layout, as the paper pairs them",
-       "lispsm",
-       "depth-nearest",
-       "pixel-correct",
-       {}},
-      {"pixel-correct-at-rest",
-       "pixel-correct that shows the layout's plain test while the camera moves and keeps the most confident "
-       "test at rest",
-       "focused",
-       "depth-nearest",
-       "pixel-correct",
-       {"pc.while_moving=test", "pc.keep_best=on"}},
-      {"pixel-correct-pcf",
-       "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
-       "focused",
-       "depth-pcf",
-       "pixel-correct",
-       {"pcf.kernel=3"}},
-  };
+  static const std::vector<Preset> presets = [] {
+    std::vector<Preset> v = {
+        {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
+        {"uniform", "one shadow map over the whole scene, nearest depth test", "uniform", "depth-nearest", "none", {}},
+        {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
+        {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
+        {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
+        {"pixel-correct",
+         "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
+         "focused",
+         "depth-nearest",
+         "pixel-correct",
+         {}},
+        {"lispsm",
+         "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
+         "lispsm",
+         "depth-nearest",
+         "none",
+         {}},
+        {"pixel-correct-lispsm",
+         "pixel-correct over a LiSPSM layout, as the paper pairs them",
+         "lispsm",
+         "depth-nearest",
+         "pixel-correct",
+         {}},
+        {"pixel-correct-at-rest",
+         "pixel-correct that shows the layout's plain test while the camera moves and keeps the most confident "
+         "test at rest",
+         "focused",
+         "depth-nearest",
+         "pixel-correct",
+         {"pc.while_moving=test", "pc.keep_best=on"}},
+        {"pixel-correct-pcf",
+         "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
+         "focused",
+         "depth-pcf",
+         "pixel-correct",
+         {"pcf.kernel=3"}},
+    };
+    addPrefilteredPresets(v);
+    return v;
+  }();
   return presets;
 }
 

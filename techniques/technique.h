@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,7 +85,11 @@ struct PartContext {
   bool cameraMoved = false;
   int frameIndex = 0;
   std::string shadowMap;  // resource the shadow passes write (representation passes read it)
+  // Targets of the debug views shown in this viewport (a part draws the views it declared).
+  std::map<std::string, Texture2D*> viewTargets;
   std::function<void()> drawFullscreen;
+  // Defines and module includes of the technique, for passes whose shaders use its modules.
+  std::string techniquePrelude;
   // Sets the technique's uniforms and every part's bindings on a program that includes the
   // technique's modules (the technique prelude).
   std::function<void(const Program&, TextureUnits&)> bindTechnique;
@@ -138,6 +143,9 @@ class Layout {
 // summed-area tables) and binds what its GLSL module samples.
 class RepresentationState : public PartState {
  public:
+  // Called every frame before prepare with the technique's current values: targets, formats
+  // and defines may depend on them (storage format, filter method, number of terms).
+  virtual void configure(const ParamSet& params) {}
   // Allocates (or keeps) the targets: size x size texels, `layers` layers.
   virtual void prepare(int size, int layers) = 0;
   // Binds one layer of the targets for the shadow pass and clears it.

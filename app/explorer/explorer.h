@@ -22,6 +22,7 @@ struct ExplorerOptions {
   std::vector<std::string> compareTechniques;  // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
   std::vector<std::string> debugViews;         // debug views shown as thumbnails from the start
   bool magnifier = false;                      // lens on without holding M
+  bool visibilityPlot = false;                 // visibility-vs-depth plot on without holding V
   bool setLight = false;                       // replace the scene's light direction by lightAngles
   glm::vec2 lightAngles{0.0f};                 // degrees: azimuth about +y from +z, elevation
 };

@@ -5,6 +5,7 @@
 #include "explorer/error_panel.h"
 #include "explorer/explorer_state.h"
 #include "explorer/magnifier.h"
+#include "explorer/visibility_plot.h"
 #include "explorer/screenshot.h"
 #include "explorer/side_panel.h"
 #include "explorer/viewport_area.h"
@@ -199,6 +200,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     state.selectedViews.insert(view);
   }
   state.magnifierPinned = state.options.magnifier;
+  state.plotPinned = state.options.visibilityPlot;
   state.cutPending = true;
 
   const int maxFrames = state.options.maxFrames;
@@ -248,7 +250,9 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
         layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
                        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
     advanceCameraAndTime(window, state, dt);
-    renderer.keepGBuffer = errorPanel.wantsGBuffer();
+    // The visibility plot (hold V) reads the G-buffer under the mouse.
+    const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
+    renderer.keepGBuffer = errorPanel.wantsGBuffer() || plotKey;
     const bool rendered = renderViewports(renderer, state, layout);
     errorPanel.afterRender(state, renderer, layout.renderWidth, layout.renderHeight, rendered);
 
@@ -259,6 +263,10 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
     if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
       drawMagnifier(area.hoveredImage, io.MousePos);
+    if (plotKey && area.hoveredViewport >= 0 && area.hoveredViewport < static_cast<int>(state.slots.size()) &&
+        state.slots[static_cast<size_t>(area.hoveredViewport)].viewport)
+      drawVisibilityPlot(shaders, renderer, *state.slots[static_cast<size_t>(area.hoveredViewport)].viewport,
+                         area.hoveredImage, io.MousePos);
 
     ImGui::Render();
     prepareDefaultFramebuffer(fbWidth, fbHeight);

@@ -56,6 +56,7 @@ struct ExplorerState {
 
   // Tools and status.
   bool magnifierPinned = false;  // checkbox; holding M shows it too
+  bool plotPinned = false;       // checkbox; holding V shows the visibility plot too
   bool screenshotRequested = false;
   std::string statusLine;   // last screenshot written, etc.
   std::string renderError;  // exception from the last frame, shown until a frame works again

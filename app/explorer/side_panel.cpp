@@ -145,6 +145,7 @@ void drawCameraPanel(ExplorerState& state) {
         "  Shift        4x faster\n"
         "  wheel        change speed\n"
         "  hold M       magnifier (8x, unfiltered)\n"
+        "  hold V       visibility vs receiver depth (pre-filtered)\n"
         "Camera buttons jump (a cut: accumulated history is reset).");
 }
 
@@ -242,6 +243,7 @@ void drawTimingPanel(Renderer& renderer) {
 void drawToolsPanel(ExplorerState& state) {
   ImGui::Separator();
   ImGui::Checkbox("Magnifier (hold M)", &state.magnifierPinned);
+  ImGui::Checkbox("Visibility plot (hold V)", &state.plotPinned);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) state.screenshotRequested = true;
   if (!state.statusLine.empty()) ImGui::TextWrapped("%s", state.statusLine.c_str());

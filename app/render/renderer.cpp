@@ -30,9 +30,9 @@ const Texture2D* Viewport::viewTexture(const std::string& name) const {
 
 std::vector<std::string> Viewport::availableViews() const {
   std::vector<std::string> v = commonViewNames();
-  for (const PartState* part : {static_cast<const PartState*>(layout.get()),
-                                static_cast<const PartState*>(representation.get()),
-                                static_cast<const PartState*>(accumulation.get())})
+  for (const PartState* part :
+       {static_cast<const PartState*>(layout.get()), static_cast<const PartState*>(representation.get()),
+        static_cast<const PartState*>(accumulation.get())})
     for (const auto& extra : part->views()) v.push_back(extra);
   return v;
 }
@@ -336,6 +336,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
   vp.lightViews_->upload(vp.lightSpace);
+  vp.representation->configure(t.params);
   vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
   const std::string prelude = techniquePrelude(vp);
   const std::string raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
@@ -354,7 +355,10 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   part.cameraMoved = cameraMoved;
   part.frameIndex = vp.frameIndex_;
   part.shadowMap = "shadowmap" + tag;
+  for (const auto& name : vp.shownViews)
+    if (vp.views_.count(name)) part.viewTargets[name] = vp.views_[name].get();
   part.drawFullscreen = [this] { drawFullscreen(); };
+  part.techniquePrelude = prelude;
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
   // What the visibility tests read: the shadow map, or what the representation made of it.

@@ -1,0 +1,127 @@
+// Lookup side of the pre-filtered representations. A representation module defines
+//   void  representationMoments(float z, out vec4 m[SL_MOMENT_TARGETS])   (shadow pass)
+//   float representationFromMoments(vec4 m[SL_MOMENT_TARGETS], float receiverDepth)
+// and includes this file, which samples the filtered moment targets (bilinear, or trilinear at
+// the mip level as wide as filter.width) and gives representationVisibility.
+// SL_MOMENT_TARGETS, SL_MOMENT_FLOAT_BITS and SL_MOMENT_MIPMAP come from MomentMapState.
+uniform float u_filter_width;
+uniform sampler2DArray u_moments0;
+#if SL_MOMENT_TARGETS > 1
+uniform sampler2DArray u_moments1;
+#endif
+#if SL_MOMENT_TARGETS > 2
+uniform sampler2DArray u_moments2;
+#endif
+#if SL_MOMENT_TARGETS > 3
+uniform sampler2DArray u_moments3;
+#endif
+#if SL_MOMENT_TARGETS > 4
+uniform sampler2DArray u_moments4;
+#endif
+#if SL_MOMENT_TARGETS > 5
+uniform sampler2DArray u_moments5;
+#endif
+#if SL_MOMENT_TARGETS > 6
+uniform sampler2DArray u_moments6;
+#endif
+#if SL_MOMENT_TARGETS > 7
+uniform sampler2DArray u_moments7;
+#endif
+
+#ifdef SL_MOMENT_SAT
+uniform vec4 u_satOffset0;
+#if SL_MOMENT_TARGETS > 1
+uniform vec4 u_satOffset1;
+#endif
+#if SL_MOMENT_TARGETS > 2
+uniform vec4 u_satOffset2;
+#endif
+#if SL_MOMENT_TARGETS > 3
+uniform vec4 u_satOffset3;
+#endif
+#if SL_MOMENT_TARGETS > 4
+uniform vec4 u_satOffset4;
+#endif
+#if SL_MOMENT_TARGETS > 5
+uniform vec4 u_satOffset5;
+#endif
+#if SL_MOMENT_TARGETS > 6
+uniform vec4 u_satOffset6;
+#endif
+#if SL_MOMENT_TARGETS > 7
+uniform vec4 u_satOffset7;
+#endif
+
+// The table at continuous texel position P: the integral of the (offset) moments over [0,P].
+// The table read bilinearly is exactly that integral (piecewise bilinear per texel), with the
+// table's texel (i, j) holding it at P = (i + 1, j + 1).
+vec4 satAt(sampler2DArray table, vec2 P, vec2 n, float layer) {
+  return textureLod(table, vec3((P - 0.5) / n, layer), 0.0);
+}
+
+// Mean over the filter.width box centred on uv: four reads, whatever the width. Corners are
+// clamped to [1, n] texels (the table has no zero row or column), which shrinks boxes touching
+// the map's first row or column by up to a texel.
+vec4 satBox(sampler2DArray table, vec4 offset, vec3 uvLayer) {
+  vec2 n = vec2(textureSize(table, 0).xy);
+  vec2 c = uvLayer.xy * n;
+  vec2 lo = clamp(c - 0.5 * u_filter_width, vec2(1.0), n);
+  vec2 hi = clamp(c + 0.5 * u_filter_width, vec2(1.0), n);
+  vec4 sum = satAt(table, hi, n, uvLayer.z) - satAt(table, vec2(lo.x, hi.y), n, uvLayer.z) -
+             satAt(table, vec2(hi.x, lo.y), n, uvLayer.z) + satAt(table, lo, n, uvLayer.z);
+  vec2 extent = hi - lo;
+  return sum / max(extent.x * extent.y, 1e-6) + offset;
+}
+#endif
+
+void momentsAt(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) {
+#ifdef SL_MOMENT_MIPMAP
+  // The level whose texels are filter.width texels of level 0 wide: every filter method then
+  // averages over the same footprint (an explicit level: the visibility code is not in
+  // uniform control flow, where screen-space derivatives would be undefined).
+  float lod = log2(max(u_filter_width, 1.0));
+#else
+  float lod = 0.0;
+#endif
+#ifdef SL_MOMENT_SAT
+#define SL_MOMENT_FETCH(table, offset) satBox(table, offset, uvLayer)
+#else
+#define SL_MOMENT_FETCH(table, offset) textureLod(table, uvLayer, lod)
+#endif
+  m[0] = SL_MOMENT_FETCH(u_moments0, u_satOffset0);
+#if SL_MOMENT_TARGETS > 1
+  m[1] = SL_MOMENT_FETCH(u_moments1, u_satOffset1);
+#endif
+#if SL_MOMENT_TARGETS > 2
+  m[2] = SL_MOMENT_FETCH(u_moments2, u_satOffset2);
+#endif
+#if SL_MOMENT_TARGETS > 3
+  m[3] = SL_MOMENT_FETCH(u_moments3, u_satOffset3);
+#endif
+#if SL_MOMENT_TARGETS > 4
+  m[4] = SL_MOMENT_FETCH(u_moments4, u_satOffset4);
+#endif
+#if SL_MOMENT_TARGETS > 5
+  m[5] = SL_MOMENT_FETCH(u_moments5, u_satOffset5);
+#endif
+#if SL_MOMENT_TARGETS > 6
+  m[6] = SL_MOMENT_FETCH(u_moments6, u_satOffset6);
+#endif
+#if SL_MOMENT_TARGETS > 7
+  m[7] = SL_MOMENT_FETCH(u_moments7, u_satOffset7);
+#endif
+}
+
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  vec4 m[SL_MOMENT_TARGETS];
+  momentsAt(uvLayer, m);
+  float v = representationFromMoments(m, receiverDepth);
+  // Last line of defence only: the tests require representationFromMoments itself to be finite
+  // and within [0,1] for every moment set the filters can produce.
+  return isnan(v) ? 1.0 : clamp(v, 0.0, 1.0);
+}
+
+// Half the filter's footprint: the slope bias then covers the depth range of a tilted receiver
+// across the kernel, as for PCF (the Gaussian CDF reads a receiver at its own mean depth as
+// half shadowed without it).
+float representationFilterRadius() { return 0.5 * max(u_filter_width, 1.0); }

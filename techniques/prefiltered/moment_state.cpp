@@ -1,0 +1,133 @@
+#include "prefiltered/moment_state.h"
+
+#include "gl/texture_units.h"
+#include "prefiltered/moment_views.h"
+#include "render/frame_graph.h"
+
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+GLenum formatFor(int channels, int bits) {
+  // Two-moment representations use RG: half the bandwidth of RGBA in every blur tap and lookup.
+  if (channels == 1) return bits == 16 ? GL_R16F : GL_R32F;
+  if (channels == 2) return bits == 16 ? GL_RG16F : GL_RG32F;
+  return bits == 16 ? GL_RGBA16F : GL_RGBA32F;
+}
+
+int mipLevels(int size) { return static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) + 1; }
+
+}  // namespace
+
+MomentMapState::~MomentMapState() {
+  if (sampler_) glDeleteSamplers(1, &sampler_);
+}
+
+void MomentMapState::configure(const ParamSet& params) {
+  MomentConfig c;
+  c.channels = spec_.channels(params);
+  c.method = static_cast<FilterMethod>(params.i("filter.method"));
+  // Summed-area tables need 32-bit sums whatever the format asked for.
+  c.bits = c.method == FilterMethod::Sat ? 32 : formatBits(params);
+  c.width = params.i("filter.width");
+  if (c.channels < 1 || c.channels > 32)
+    throw ParamError("pre-filtered representation stores " + std::to_string(c.channels) +
+                     " floats per texel (1 to 32 fit in 8 targets)");
+  if (!(c == config_)) depth_ = Texture2D();  // reallocated by prepare
+  config_ = c;
+  clear_ = spec_.clearValue(params);
+  clear_.resize(static_cast<size_t>(4 * c.targets()), 0.0f);
+  defines_ = spec_.defines ? spec_.defines(params) : "";
+  logExponent_ = spec_.logFilter ? params.f(spec_.logExponentKey) : 0.0f;
+}
+
+void MomentMapState::allocate(int size, int layers) {
+  const int levels = config_.method == FilterMethod::Mipmap ? mipLevels(size) : 1;
+  depth_ = Texture2D::array(GL_DEPTH_COMPONENT32F, size, size, layers, 1, "moment map depth");
+  moments_.clear();
+  scratch_.clear();
+  for (int t = 0; t < config_.targets(); ++t) {
+    const GLenum format = formatFor(config_.channelsOf(t), config_.bits);
+    moments_.push_back(Texture2D::array(format, size, size, layers, levels, "moments " + std::to_string(t)));
+    // The blur's first direction lands here; mip-mapping needs no scratch.
+    if (config_.method == FilterMethod::Blur && config_.width > 1)
+      scratch_.push_back(Texture2D::array(format, size, size, layers, 1, "moments scratch " + std::to_string(t)));
+  }
+  shadowFbos_.clear();
+  std::vector<const Texture2D*> colors;
+  for (const auto& m : moments_) colors.push_back(&m);
+  for (int l = 0; l < layers; ++l) {
+    shadowFbos_.emplace_back("moment map layer " + std::to_string(l));
+    shadowFbos_.back().attachLayer(colors, &depth_, l);
+  }
+}
+
+void MomentMapState::prepare(int size, int layers) {
+  if (!sampler_) {
+    glCreateSamplers(1, &sampler_);
+    label(GL_SAMPLER, sampler_, "moment map: filtered");
+  }
+  // Moments are filtered like colour: bilinear within a level, trilinear across mip levels.
+  const bool mips = config_.method == FilterMethod::Mipmap;
+  glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+  glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  if (depth_ && depth_.width() == size && depth_.layers() == layers) return;
+  allocate(size, layers);
+}
+
+void MomentMapState::beginShadowLayer(int layer) {
+  const Framebuffer& fbo = shadowFbos_.at(static_cast<size_t>(layer));
+  fbo.bind();
+  for (int t = 0; t < config_.targets(); ++t)
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, t, &clear_[static_cast<size_t>(4 * t)]);
+  glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+}
+
+std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
+  std::string out = ctx.shadowMap;
+  if (config_.width > 1 || config_.method != FilterMethod::Blur) {
+    out = "moments.filtered" + ctx.viewportTag;
+    ShaderLibrary* shaders = ctx.shaders;
+    auto draw = ctx.drawFullscreen;
+    static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
+    const std::string name = names[static_cast<int>(config_.method)];
+    graph.add({name + ctx.viewportTag, {ctx.shadowMap}, {out}, [this, shaders, draw] { filter(*shaders, draw); }});
+  }
+  addMomentViewPasses(graph, ctx, out, views());
+  return out;
+}
+
+void MomentMapState::bind(const Program& p, TextureUnits& units) const {
+  // Only programs that sample the moments get them: the shadow pass includes the module too,
+  // and binding the targets it renders into would be a feedback loop.
+  if (glGetUniformLocation(p.id(), "u_moments0") < 0) return;
+  for (int t = 0; t < config_.targets(); ++t) {
+    units.bind(p, "u_moments" + std::to_string(t), moments_[static_cast<size_t>(t)].id(), sampler_);
+    if (config_.method == FilterMethod::Sat)
+      p.set("u_satOffset" + std::to_string(t),
+            t < static_cast<int>(satOffset_.size()) ? satOffset_[static_cast<size_t>(t)] : glm::vec4(0.0f));
+  }
+}
+
+std::string MomentMapState::defines() const {
+  std::string d = "#define SL_MOMENT_TARGETS " + std::to_string(config_.targets()) + "\n";
+  d += "#define SL_MOMENT_FLOAT_BITS " + std::to_string(config_.bits) + "\n";
+  if (config_.method == FilterMethod::Mipmap) d += "#define SL_MOMENT_MIPMAP\n";
+  if (config_.method == FilterMethod::Sat) d += "#define SL_MOMENT_SAT\n";
+  if (spec_.logFilter) d += "#define SL_MOMENT_LOG_FILTER\n";
+  return d + defines_;
+}
+
+std::vector<std::string> MomentMapState::views() const { return momentViewNames(spec_.hasVariance, spec_.fourier); }
+
+long long MomentMapState::texels() const {
+  long long perLayer = static_cast<long long>(depth_.width()) * depth_.height();
+  // Colour targets are counted in stored floats per texel over four, plus the depth.
+  return perLayer * std::max(depth_.layers(), 1) * (1 + static_cast<long long>(config_.targets()));
+}
+
+}  // namespace sl

@@ -1,0 +1,68 @@
+// The shadow targets of the pre-filtered representations: 1..8 colour texture arrays (a layer
+// per light view, 16- or 32-bit float, with mip levels when filtered by mip-mapping) that the
+// shadow pass writes the representation's moments into, plus the depth array that decides which
+// caster is nearest. After the shadow pass the filter passes blur them (or build their mips);
+// the visibility tests then read them through one bilinear (or trilinear) sampler.
+#pragma once
+
+#include "gl/gl_util.h"
+
+#include <glm/glm.hpp>
+#include "prefiltered/moment_spec.h"
+#include "technique.h"
+
+#include <functional>
+#include <vector>
+
+namespace sl {
+
+enum class FilterMethod { Blur = 0, Mipmap = 1, Sat = 2 };
+
+// What the targets depend on; a change reallocates them.
+struct MomentConfig {
+  int channels = 2;
+  int bits = 32;
+  FilterMethod method = FilterMethod::Blur;
+  int width = 1;  // box width in texels
+  bool operator==(const MomentConfig&) const = default;
+  int targets() const { return (channels + 3) / 4; }
+  int channelsOf(int target) const { return std::min(4, channels - 4 * target); }
+};
+
+class MomentMapState : public RepresentationState {
+ public:
+  explicit MomentMapState(const MomentSpec& spec) : spec_(spec) {}
+  ~MomentMapState() override;
+  void configure(const ParamSet& params) override;
+  void prepare(int size, int layers) override;
+  void beginShadowLayer(int layer) override;
+  std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
+  void bind(const Program& p, TextureUnits& units) const override;
+  std::string defines() const override;
+  std::vector<std::string> views() const override;
+  const Texture2D* depthTexture() const override { return &depth_; }
+  long long texels() const override;
+
+  // Runs the filter passes now (blur or mips), as the frame graph's pass does.
+  void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
+  const MomentConfig& config() const { return config_; }
+  Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
+  const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
+  const std::vector<float>& clearValue() const { return clear_; }
+
+ private:
+  void allocate(int size, int layers);
+  void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
+  const MomentSpec& spec_;
+  MomentConfig config_;
+  std::vector<float> clear_;
+  std::string defines_;
+  float logExponent_ = 0.0f;
+  GLuint sampler_ = 0;
+  Texture2D depth_;
+  std::vector<Texture2D> moments_, scratch_;
+  std::vector<Framebuffer> shadowFbos_;  // per layer: every moment target + depth
+  std::vector<glm::vec4> satOffset_;     // per target: what its summed-area table subtracted
+};
+
+}  // namespace sl

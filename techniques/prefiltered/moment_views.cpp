@@ -1,0 +1,48 @@
+#include "prefiltered/moment_views.h"
+
+#include "gl/gl_util.h"
+#include "gl/texture_units.h"
+#include "render/frame_graph.h"
+
+namespace sl {
+
+std::vector<std::string> momentViewNames(bool hasVariance, bool fourier) {
+  std::vector<std::string> v = {"moments"};
+  if (hasVariance) v.push_back("variance");
+  if (fourier) v.push_back("fourier");
+  return v;
+}
+
+void addMomentViewPasses(FrameGraph& graph, const PartContext& ctx, const std::string& moments,
+                         const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    auto it = ctx.viewTargets.find(name);
+    if (it == ctx.viewTargets.end() || !it->second) continue;
+    Texture2D* target = it->second;
+    const std::string resource = "view." + name + ctx.viewportTag;
+    // The view shader includes the technique's modules through the same prelude as the
+    // visibility passes (ctx.bindTechnique binds the moment targets and the parameters).
+    std::string defines = name == "variance"  ? "#define SL_VIEW_VARIANCE\n"
+                          : name == "fourier" ? "#define SL_VIEW_SIGNED\n"
+                                              : "";
+    graph.add({resource, {moments}, {resource}, [ctx, target, defines] {
+                 ProgramSpec spec{
+                     "view moments " + defines,
+                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/moments.frag"}},
+                     defines + ctx.techniquePrelude};
+                 Program& p = ctx.shaders->get(spec);
+                 if (!p.valid()) return;
+                 Framebuffer fbo("view target");
+                 fbo.attach({target}, nullptr);
+                 fbo.bind();
+                 p.use();
+                 TextureUnits units;
+                 ctx.bindTechnique(p, units);
+                 p.set("u_viewSize", glm::vec2(target->width(), target->height()));
+                 ctx.drawFullscreen();
+               }});
+    graph.requestSink(resource);
+  }
+}
+
+}  // namespace sl

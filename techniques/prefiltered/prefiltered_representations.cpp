@@ -1,0 +1,290 @@
+// Pre-filtered representations: the shadow map stores moments of the depth distribution that
+// can be filtered like colour, and each representation reconstructs visibility from them.
+// Each is a MomentSpec (what is stored) + a GLSL module under
+// shaders/representations/prefiltered/ (how it is reconstructed).
+#include "prefiltered/prefiltered_representations.h"
+
+#include "prefiltered/moment_spec.h"
+#include "prefiltered/moment_state.h"
+
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kConvolutionSpan = 0.9;  // shaders/representations/prefiltered/convolution.glsl
+
+class PrefilteredRepresentation : public Representation {
+ public:
+  PrefilteredRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> own,
+                            MomentSpec spec)
+      : id_(std::move(id)), help_(std::move(help)), module_(std::move(module)), spec_(std::move(spec)) {
+    params_ = filterParams(!spec_.logFilter);
+    params_.insert(params_.end(), own.begin(), own.end());
+  }
+  std::string id() const override { return id_; }
+  std::string help() const override { return help_; }
+  std::string glslModule() const override { return module_; }
+  std::vector<ParamDecl> params() const override { return params_; }
+  std::string shadowMapFragment() const override { return "passes/shadow_moments.frag"; }
+  std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<MomentMapState>(spec_); }
+
+ private:
+  std::string id_, help_, module_;
+  std::vector<ParamDecl> params_;
+  MomentSpec spec_;
+};
+
+ParamDecl minVariance(const std::string& key, double value) {
+  return {.key = key,
+          .type = ParamType::Float,
+          .min = 0,
+          .max = 0.01,
+          .defaultValue = value,
+          .unit = "depth^2",
+          .help =
+              "variance floor: a flat occluder filling the kernel still gets this spread (against acne and "
+              "the 16-bit cancellation of z^2 - z*z)",
+          .logScale = true};
+}
+
+ParamDecl bleed(const std::string& key) {
+  return {.key = key,
+          .type = ParamType::Float,
+          .min = 0,
+          .max = 0.95,
+          .defaultValue = 0,
+          .help = "light-bleeding reduction: bounds below this become shadow, the rest is rescaled (linstep)"};
+}
+
+std::string warpDefine(const ParamSet& p) {
+  return "#define SL_WARP_MAX_EXPONENT " + std::to_string(maxWarpExponent(formatBits(p))) + "\n";
+}
+
+// The exponent the GLSL uses: clamped to what the storage format holds.
+double warpExponent(const ParamSet& p, const std::string& key) {
+  return std::clamp(p.get(key), 0.01, static_cast<double>(maxWarpExponent(formatBits(p))));
+}
+
+MomentSpec twoMoments() {
+  return {.channels = [](const ParamSet&) { return 2; },
+          .clearValue =
+              [](const ParamSet&) {
+                return std::vector<float>{1.0f, 1.0f};
+              },
+          .hasVariance = true};
+}
+
+MomentSpec evsmSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet& p) { return p.i("evsm.warps") == 0 ? 2 : 4; };
+  s.clearValue = [](const ParamSet& p) {
+    const double cp = warpExponent(p, "evsm.exponent_pos"), cn = warpExponent(p, "evsm.exponent_neg");
+    return std::vector<float>{float(std::exp(cp)), float(std::exp(2 * cp)), float(-std::exp(-cn)),
+                              float(std::exp(-2 * cn))};
+  };
+  s.defines = [](const ParamSet& p) { return warpDefine(p) + (p.i("evsm.warps") == 1 ? "#define SL_EVSM4\n" : ""); };
+  s.hasVariance = true;
+  return s;
+}
+
+MomentSpec ewgfSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet&) { return 2; };
+  s.clearValue = [](const ParamSet& p) {
+    const double c = warpExponent(p, "ewgf.exponent");
+    return std::vector<float>{float(std::exp(c)), float(std::exp(2 * c))};
+  };
+  s.defines = warpDefine;
+  s.hasVariance = true;
+  return s;
+}
+
+MomentSpec msmSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet&) { return 4; };
+  s.clearValue = [](const ParamSet& p) {
+    if (!p.b("msm.quantize")) return std::vector<float>{1, 1, 1, 1};
+    // Column sums of the quantization matrix (msm.glsl) plus the offset: Q * (1,1,1,1).
+    return std::vector<float>{float(-2.07224649 + 32.23703778 - 68.571074599 + 39.3703274134 + 0.035955884801),
+                              float(13.7948857237 - 59.4683975703 + 82.0359750338 - 35.364903257),
+                              float(0.105877704 - 1.9077466311 + 9.3496555107 - 6.6543490743),
+                              float(9.7924062118 - 33.7652110555 + 47.9456096605 - 23.9728048165)};
+  };
+  s.defines = [](const ParamSet& p) { return std::string(p.b("msm.quantize") ? "#define SL_MSM_QUANTIZED\n" : ""); };
+  s.hasVariance = true;
+  return s;
+}
+
+MomentSpec convolutionSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet& p) { return 2 * p.i("convolution.terms"); };
+  s.clearValue = [](const ParamSet& p) {
+    std::vector<float> v;
+    for (int k = 1; k <= p.i("convolution.terms"); ++k) {
+      const double ck = kPi * (2 * k - 1);
+      v.push_back(float(std::sin(ck * kConvolutionSpan)));
+      v.push_back(float(std::cos(ck * kConvolutionSpan)));
+    }
+    return v;
+  };
+  s.defines = [](const ParamSet& p) {
+    return "#define SL_CONVOLUTION_TERMS " + std::to_string(p.i("convolution.terms")) + "\n";
+  };
+  s.fourier = true;
+  return s;
+}
+
+ParamDecl exponent(const std::string& key, double value, const std::string& help) {
+  return {.key = key,
+          .type = ParamType::Float,
+          .min = 0.01,
+          .max = 100,
+          .defaultValue = value,
+          .help = help + " (clamped to 5.54 in float16 and 42 in float32 storage)",
+          .logScale = true};
+}
+
+std::vector<ParamDecl> esmParams() {
+  return {{.key = "esm.exponent",
+           .type = ParamType::Float,
+           .min = 1,
+           .max = 1000,
+           .defaultValue = 80,
+           .help = "exponent c: sharper and less leaking when larger (log-space filtering: any value is safe in "
+                   "every format)",
+           .logScale = true}};
+}
+
+std::vector<ParamDecl> evsmParams() {
+  return {{.key = "evsm.warps",
+           .type = ParamType::Enum,
+           .defaultValue = 1,
+           .help = "positive warp only (2 moments) or positive and negative (4 moments, min of the two bounds)",
+           .choices = {"positive", "both"}},
+          exponent("evsm.exponent_pos", 40, "positive warp exponent c+"),
+          exponent("evsm.exponent_neg", 5, "negative warp exponent c-"),
+          minVariance("evsm.min_variance", 1e-6),
+          bleed("evsm.bleed")};
+}
+
+std::vector<ParamDecl> msmParams() {
+  return {{.key = "msm.moment_bias",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 0.01,
+           .defaultValue = 3e-5,
+           .help = "moments pulled toward those of a uniform distribution (keeps the Hankel matrix invertible "
+                   "after quantization)",
+           .logScale = true},
+          {.key = "msm.quantize",
+           .type = ParamType::Bool,
+           .defaultValue = 0,
+           .help = "store through the paper's optimized affine quantization (for 16-bit storage)"}};
+}
+
+std::vector<ParamDecl> convolutionParams() {
+  return {{.key = "convolution.terms",
+           .type = ParamType::Int,
+           .min = 1,
+           .max = 16,
+           .defaultValue = 8,
+           .unit = "terms",
+           .help = "Fourier terms M: 2M basis images in ceil(M/2) RGBA targets"},
+          {.key = "convolution.alpha",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 10,
+           .defaultValue = 1,
+           .help = "attenuation exp(-alpha (k/M)^2) of term k against ringing"},
+          {.key = "convolution.scale",
+           .type = ParamType::Float,
+           .min = 1,
+           .max = 8,
+           .defaultValue = 4,
+           .help = "steepens the reconstruction about 1/2 before clamping to [0,1]"},
+          {.key = "convolution.offset",
+           .type = ParamType::Float,
+           .min = 0,
+           .max = 0.2,
+           .defaultValue = 0.015,
+           .unit = "depth [0,1]",
+           .help = "receiver moved toward the light so that its own surface reads lit"}};
+}
+
+std::vector<ParamDecl> lvsmParams() {
+  return {{.key = "lvsm.layers",
+           .type = ParamType::Int,
+           .min = 1,
+           .max = 16,
+           .defaultValue = 4,
+           .unit = "layers",
+           .help = "equal depth layers, each with its own two moments (2 channels per layer)"},
+          minVariance("lvsm.min_variance", 1e-5)};
+}
+
+MomentSpec lvsmSpec() {
+  MomentSpec s;
+  s.channels = [](const ParamSet& p) { return 2 * p.i("lvsm.layers"); };
+  // Depth 1 warps to 1 in every layer.
+  s.clearValue = [](const ParamSet& p) {
+    return std::vector<float>(static_cast<size_t>(2 * p.i("lvsm.layers")), 1.0f);
+  };
+  s.defines = [](const ParamSet& p) { return "#define SL_LVSM_LAYERS " + std::to_string(p.i("lvsm.layers")) + "\n"; };
+  s.hasVariance = true;
+  return s;
+}
+
+MomentSpec esmSpec() {
+  return {.channels = [](const ParamSet&) { return 1; },
+          .clearValue = [](const ParamSet&) { return std::vector<float>{1.0f}; },
+          .logFilter = true,
+          .logExponentKey = "esm.exponent"};
+}
+
+}  // namespace
+
+void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representation>>& out) {
+  const std::string dir = "representations/prefiltered/";
+  auto add = [&](std::string id, std::string help, std::vector<ParamDecl> params, MomentSpec spec) {
+    const std::string module = dir + id + ".glsl";
+    out.push_back(std::make_unique<PrefilteredRepresentation>(std::move(id), std::move(help), module, std::move(params),
+                                                              std::move(spec)));
+  };
+  add("vsm", "variance shadow map (Donnelly & Lauritzen 2006): moments z, z^2; one-tailed Chebyshev bound",
+      {minVariance("vsm.min_variance", 1e-5), bleed("vsm.bleed")}, twoMoments());
+  add("esm", "exponential shadow map (Annen et al. 2008): exp(c (z - d)), depth filtered in log space", esmParams(),
+      esmSpec());
+  add("evsm", "exponential variance shadow map: Chebyshev bounds on exponentially warped depth", evsmParams(),
+      evsmSpec());
+  add("gaussian", "Gaussian filtering (Gumbau et al. 2013): VSM moments read as a Gaussian CDF",
+      {minVariance("gaussian.min_variance", 1e-7)}, twoMoments());
+  add("ewgf", "exponentially warped Gaussian filtering (Gumbau et al. 2013): Gaussian CDF on warped-depth moments",
+      {exponent("ewgf.exponent", 10, "warp exponent c"), minVariance("ewgf.min_variance", 1e-7)}, ewgfSpec());
+  add("msm", "moment shadow map (Peters & Klein 2015): 4 moments, Hamburger reconstruction", msmParams(), msmSpec());
+  add("lvsm", "layered variance shadow map (Lauritzen & McCool 2008): VSM moments per depth layer", lvsmParams(),
+      lvsmSpec());
+  add("convolution", "convolution shadow map (Annen et al. 2007): Fourier series of the step, M terms",
+      convolutionParams(), convolutionSpec());
+}
+
+void addPrefilteredPresets(std::vector<Preset>& out) {
+  auto add = [&out](std::string id, std::string help, std::string rep, std::vector<std::string> overrides) {
+    out.push_back({std::move(id), std::move(help), "focused", std::move(rep), "none", std::move(overrides)});
+  };
+  add("vsm", "focused variance shadow map, 5x5 blur", "vsm", {});
+  add("esm", "focused exponential shadow map, log-space 5x5 blur", "esm", {});
+  add("evsm2", "focused EVSM, positive warp (2 moments)", "evsm", {"evsm.warps=positive"});
+  add("evsm4", "focused EVSM, both warps (4 moments)", "evsm", {"evsm.warps=both"});
+  add("convolution", "focused convolution shadow map, 8 Fourier terms", "convolution", {});
+  add("gaussian", "focused Gaussian-filtered shadow map (Gumbau et al.)", "gaussian", {});
+  add("ewgf", "focused exponentially warped Gaussian filtering (Gumbau et al.)", "ewgf", {});
+  add("msm", "focused moment shadow map, 32-bit moments", "msm", {});
+  add("lvsm", "focused layered VSM, 4 depth layers", "lvsm", {});
+  add("msm16", "focused moment shadow map, 16-bit optimized quantization", "msm",
+      {"filter.format=float16", "msm.quantize=on", "msm.moment_bias=6e-5"});
+}
+
+}  // namespace sl

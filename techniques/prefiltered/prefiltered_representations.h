@@ -1,0 +1,10 @@
+#pragma once
+
+#include "technique.h"
+
+namespace sl {
+// vsm, esm, evsm, gaussian, ewgf, msm, convolution (techniques/prefiltered/README.md).
+void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representation>>& out);
+// Their presets: focused layout, no accumulation.
+void addPrefilteredPresets(std::vector<Preset>& out);
+}  // namespace sl
