@@ -2,6 +2,7 @@
 #include "technique.h"
 
 #include "depth/depth_representations.h"
+#include "layouts/cascaded.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
 
@@ -67,6 +68,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     std::vector<std::unique_ptr<Layout>> v;
     registerBasicLayouts(v);
     registerWarpedLayouts(v);
+    registerCascadedLayouts(v);
     return v;
   }();
   return list;
@@ -128,6 +130,13 @@ const std::vector<Preset>& allPresets() {
        "depth-pcf",
        "pixel-correct",
        {"pcf.kernel=3"}},
+      {"cascaded",
+       "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
+       "each, practical split scheme, blended borders, nearest depth test",
+       "cascaded",
+       "depth-nearest",
+       "none",
+       {}},
   };
   return presets;
 }

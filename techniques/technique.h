@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -88,6 +89,11 @@ struct PartContext {
   // Sets the technique's uniforms and every part's bindings on a program that includes the
   // technique's modules (the technique prelude).
   std::function<void(const Program&, TextureUnits&)> bindTechnique;
+  std::string techniquePrelude;  // a ProgramSpec prelude that includes the technique's modules
+  // Binds the G-buffer (u_gPosition, u_gNormal, u_gAlbedo, u_gSurface; resource "gbuffer").
+  std::function<void(const Program&, TextureUnits&)> bindGBuffer;
+  // Debug views of this part shown this frame, and where to draw them (RGBA8, viewport size).
+  std::map<std::string, Texture2D*> viewTargets;
 };
 
 // The one shape of per-viewport state of every part (layout, representation, accumulation):

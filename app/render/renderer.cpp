@@ -30,9 +30,9 @@ const Texture2D* Viewport::viewTexture(const std::string& name) const {
 
 std::vector<std::string> Viewport::availableViews() const {
   std::vector<std::string> v = commonViewNames();
-  for (const PartState* part : {static_cast<const PartState*>(layout.get()),
-                                static_cast<const PartState*>(representation.get()),
-                                static_cast<const PartState*>(accumulation.get())})
+  for (const PartState* part :
+       {static_cast<const PartState*>(layout.get()), static_cast<const PartState*>(representation.get()),
+        static_cast<const PartState*>(accumulation.get())})
     for (const auto& extra : part->views()) v.push_back(extra);
   return v;
 }
@@ -356,18 +356,24 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   part.shadowMap = "shadowmap" + tag;
   part.drawFullscreen = [this] { drawFullscreen(); };
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
+  part.techniquePrelude = prelude;
+  part.bindGBuffer = [this](const Program& p, TextureUnits& units) {
+    units.bind(p, "u_gPosition", gPosition_->id());
+    units.bind(p, "u_gNormal", gNormal_->id());
+    units.bind(p, "u_gAlbedo", gAlbedo_->id());
+    units.bind(p, "u_gSurface", gSurface_->id());
+  };
+  for (const auto& name : vp.shownViews)
+    if (vp.views_.count(name)) part.viewTargets[name] = vp.views_[name].get();
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
   // What the visibility tests read: the shadow map, or what the representation made of it.
   const std::string sm = vp.representation->addPasses(g, part);
   vp.shadowResource_ = sm;
 
   // Binds the G-buffer and every part's inputs on a visibility-computing program.
-  auto bindVisibilityInputs = [this, &vp](const Program& p, TextureUnits& units) {
+  auto bindVisibilityInputs = [this, &vp, bindGBuffer = part.bindGBuffer](const Program& p, TextureUnits& units) {
     bindTechnique(p, units, vp);
-    units.bind(p, "u_gPosition", gPosition_->id());
-    units.bind(p, "u_gNormal", gNormal_->id());
-    units.bind(p, "u_gAlbedo", gAlbedo_->id());
-    units.bind(p, "u_gSurface", gSurface_->id());
+    bindGBuffer(p, units);
   };
 
   if (t.accumulation->passesThrough()) {
