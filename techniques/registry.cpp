@@ -30,8 +30,9 @@ const std::vector<ParamDecl>& commonParams() {
        .type = ParamType::Enum,
        .defaultValue = 2,
        .help = "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
-               "(+constant)",
-       .choices = {"none", "constant", "slope", "normal-offset"}},
+               "(+constant), receiver plane (+constant: each filter tap compares against the receiver's plane "
+               "extrapolated to that texel; Isidoro 2006)",
+       .choices = {"none", "constant", "slope", "normal-offset", "receiver-plane"}},
       {.key = "bias.constant",
        .type = ParamType::Float,
        .min = 0,
