@@ -42,7 +42,7 @@ LightView cascadeView(const LayoutInput& in, const CameraFrustum& cam, float a, 
   if (light.type == Light::Type::Spot)
     return fitPerspective(light, lightViewMatrix(light, in.jitter.rotationRad), receivers, casters, size, true,
                           in.params->b("layout.snap"), in.jitter);
-  return lispsmView(light, in.cameraView, receivers, casters, in.params->f("lispsm.n_scale"), size, in.jitter);
+  return lispsmView(light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter);
 }
 
 class CascadedState : public LayoutState {
@@ -101,7 +101,7 @@ class CascadedLayout : public Layout {
 };
 
 std::vector<ParamDecl> CascadedLayout::params() const {
-  return {
+  std::vector<ParamDecl> decls = {
       {.key = "cascades.count",
        .type = ParamType::Int,
        .min = 1,
@@ -137,15 +137,10 @@ std::vector<ParamDecl> CascadedLayout::params() const {
        .help = "warp inside each split: none (snapped orthographic maps) or LiSPSM with lispsm.n_scale (the survey's "
                "z-partitioning and warping; not snapped)",
        .choices = {"none", "lispsm"}},
-      {.key = "lispsm.n_scale",
-       .type = ParamType::Float,
-       .min = 0.05,
-       .max = 20,
-       .defaultValue = 1,
-       .unit = "x n_opt",
-       .help = "with cascades.warp=lispsm: the warp strength inside each split, as a multiple of that split's n_opt",
-       .logScale = true},
   };
+  // With cascades.warp=lispsm: the warp's n inside each split (that split's own z_n and n_opt).
+  for (auto&& d : lispsmParams()) decls.push_back(d);
+  return decls;
 }
 
 }  // namespace

@@ -16,14 +16,20 @@ namespace sl {
 
 namespace {
 
-// Below this sin(gamma) the warp degenerates (n -> infinity): plain focusing is the same.
-constexpr float kMinSinGamma = 0.05f;
+// Below kFallbackSinGamma the warp degenerates (n -> infinity): the focused map is the same.
+// Between it and kFullWarpSinGamma n grows smoothly to infinity and the warp axis turns to the
+// fixed light basis, so the map does not pop when the view turns toward the light (beyond the
+// paper, which switches at once).
+constexpr float kFallbackSinGamma = 0.05f, kFullWarpSinGamma = 0.15f;
+// n is capped at this many body depths: the warp is then within ~d/n of orthographic (about a
+// texel at 1024²), which is what the fallback's focused map is.
+constexpr float kMaxNOverD = 1000.0f;
 
 // The warp and its fit, in the light view whose +y is the projected view direction: receivers
 // span [lo, hi] there, casters [zLightMin, zLightMax] along the light.
 LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sinGamma, const glm::vec3& viewDir,
                      const std::vector<glm::vec3>& receivers, glm::vec3 lo, glm::vec3 hi, float zLightMin,
-                     float zLightMax, float nScale, int size, const LayoutJitter& jitter) {
+                     float zLightMax, const LispsmN& nChoice, float warpWeight, int size, const LayoutJitter& jitter) {
   // n_opt (Wimmer et al. 2004, general case): z_n is the view-space distance to the body's near
   // side, d the body's extent along the warp axis, z_f = z_n + d sin(gamma).
   float zn = 1e30f;
@@ -33,7 +39,9 @@ LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sin
   const float znLight = zn / sinGamma;
   const float zfLight = znLight + d * sinGamma;
   const float nOpt = (znLight + std::sqrt(zfLight * znLight)) / sinGamma;
-  const float n = std::max(nOpt * nScale, 1e-4f);
+  // The survey's endpoints of the free parameter: n = z_n (PSM-like), n_opt, n -> infinity.
+  const float nBase = nChoice.mode == LispsmN::Mode::ZNear ? znLight : nOpt;
+  const float n = std::clamp(nBase * nChoice.scale / warpWeight, 1e-4f, kMaxNOverD * d);
   const float f = n + d;
 
   // Projection centre: the eye's lateral position, n behind the body's near side on the warp
@@ -62,6 +70,17 @@ LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sin
     addWarped(glm::vec3(q.x, q.y, zLightMin));
     addWarped(glm::vec3(q.x, q.y, zLightMax));
   }
+  if (warpWeight < 1.0f) {
+    // Toward the fallback the window turns into the focused map's: square in light units and
+    // centred (a post-warp x' is x / (distance from the centre), y' spans 2 over d), never
+    // smaller than the fit, so the receivers stay covered.
+    const float side = std::max(hi.x - lo.x, d);
+    const glm::vec2 square(0.5f * side / (n + 0.5f * d), side / d);
+    const glm::vec2 centre = 0.5f * glm::vec2(wlo + whi), half = 0.5f * glm::vec2(whi - wlo);
+    const glm::vec2 grown = glm::max(half, glm::mix(square, half, warpWeight));
+    wlo = glm::vec3(centre - grown, wlo.z);
+    whi = glm::vec3(centre + grown, whi.z);
+  }
   glm::vec2 extent = glm::max(glm::vec2(whi - wlo), glm::vec2(1e-6f));
   glm::vec2 offset = jitter.offsetTexels * extent / static_cast<float>(size);
   wlo += glm::vec3(offset, 0.0f);
@@ -87,26 +106,42 @@ LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sin
 
 }  // namespace
 
+// The light view with -z along the light and +y along the view direction projected onto the
+// light's plane, turned toward the fixed basis (lightViewMatrix) by 1 - w near the fallback.
+static glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
+                           float roll) {
+  const glm::vec3 L = glm::normalize(light.direction);
+  glm::vec3 up = glm::normalize(viewDir - L * cosGamma);
+  if (w < 1.0f) {
+    const glm::mat4 fixed = lightViewMatrix(light, 0.0f);
+    const glm::vec3 fixedUp(fixed[0][1], fixed[1][1], fixed[2][1]);
+    const float angle = std::atan2(glm::dot(glm::cross(fixedUp, up), L), glm::dot(fixedUp, up));
+    up = glm::vec3(glm::rotate(glm::mat4(1.0f), angle * w, L) * glm::vec4(fixedUp, 0.0f));
+  }
+  glm::mat4 lightView = glm::lookAt(eye, eye + L, up);
+  if (roll != 0.0f) lightView = glm::rotate(glm::mat4(1.0f), roll, glm::vec3(0, 0, 1)) * lightView;
+  return lightView;
+}
+
 LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
-                     const std::vector<glm::vec3>& casters, float nScale, int size, const LayoutJitter& jitter) {
+                     const std::vector<glm::vec3>& casters, const LispsmN& nChoice, int size,
+                     const LayoutJitter& jitter) {
   const glm::mat4 invView = glm::inverse(cameraView);
   const glm::vec3 eye = glm::vec3(invView[3]);
   const glm::vec3 viewDir = -glm::normalize(glm::vec3(invView[2]));
-  const glm::vec3 L = glm::normalize(light.direction);
-  const float cosGamma = glm::dot(viewDir, L);
+  const float cosGamma = glm::dot(viewDir, glm::normalize(light.direction));
   const float sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
-  if (light.type == Light::Type::Spot || sinGamma < kMinSinGamma) {
+  auto focused = [&] {
     glm::mat4 view = lightViewMatrix(light, jitter.rotationRad);
     if (light.type == Light::Type::Spot)
       return fitPerspective(light, view, receivers, casters, size, true, false, jitter);
     return fitOrthographic(view, receivers, casters, size, false, jitter);
-  }
-
-  // Light view: -z along the light, +y along the view direction projected perpendicular to it.
-  const glm::vec3 up = glm::normalize(viewDir - L * cosGamma);
-  glm::mat4 lightView = glm::lookAt(eye, eye + L, up);
-  if (jitter.rotationRad != 0.0f)
-    lightView = glm::rotate(glm::mat4(1.0f), jitter.rotationRad, glm::vec3(0, 0, 1)) * lightView;
+  };
+  if (light.type == Light::Type::Spot || sinGamma < kFallbackSinGamma || nChoice.mode == LispsmN::Mode::Infinity)
+    return focused();
+  const float t = std::min((sinGamma - kFallbackSinGamma) / (kFullWarpSinGamma - kFallbackSinGamma), 1.0f);
+  const float w = t * t * (3.0f - 2.0f * t);  // smoothstep: n and the basis change without a kink
+  const glm::mat4 lightView = warpBasis(light, eye, viewDir, cosGamma, w, jitter.rotationRad);
 
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (const auto& p : receivers) {
@@ -122,7 +157,33 @@ LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std:
   }
   zLightMin = std::min(zLightMin, lo.z);
   zLightMax = std::max(zLightMax, hi.z);
-  return warpedView(lightView, eye, sinGamma, viewDir, receivers, lo, hi, zLightMin, zLightMax, nScale, size, jitter);
+  return warpedView(lightView, eye, sinGamma, viewDir, receivers, lo, hi, zLightMin, zLightMax, nChoice,
+                    std::max(w, 1e-6f), size, jitter);
+}
+
+LispsmN lispsmN(const ParamSet& params) {
+  LispsmN n;
+  n.scale = params.f("lispsm.n_scale");
+  n.mode = static_cast<LispsmN::Mode>(params.i("lispsm.n"));
+  return n;
+}
+
+std::vector<ParamDecl> lispsmParams() {
+  return {{.key = "lispsm.n",
+           .type = ParamType::Enum,
+           .defaultValue = 0,
+           .help = "the warp's free parameter n (the survey's slider endpoints): n_opt (even aliasing error), z_n "
+                   "(PSM-like: the projection centre at the eye's distance), infinity (no warp: the focused map)",
+           .choices = {"n_opt", "z_n", "infinity"}},
+          {.key = "lispsm.n_scale",
+           .type = ParamType::Float,
+           .min = 0.05,
+           .max = 20,
+           .defaultValue = 1,
+           .unit = "x n",
+           .help = "warp strength: the projection centre's distance as a multiple of the chosen n (small = strong "
+                   "warp, more texels near the viewer; large = towards focused)",
+           .logScale = true}};
 }
 
 namespace {
@@ -135,17 +196,7 @@ class LispsmLayout : public Layout {
            "more texels near the viewer";
   }
   std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
-  std::vector<ParamDecl> params() const override {
-    return {{.key = "lispsm.n_scale",
-             .type = ParamType::Float,
-             .min = 0.05,
-             .max = 20,
-             .defaultValue = 1,
-             .unit = "x n_opt",
-             .help = "warp strength: the projection centre's distance n as a multiple of n_opt (small = strong warp, "
-                     "more texels near the viewer; large = towards focused)",
-             .logScale = true}};
-  }
+  std::vector<ParamDecl> params() const override { return lispsmParams(); }
 
   LightSpace compute(const LayoutInput& in) const override {
     const Bounds bounds = in.scene->boundsAt(in.time);
@@ -154,8 +205,7 @@ class LispsmLayout : public Layout {
     auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
     if (receivers.empty()) receivers = casters;
     return LightSpace::single(
-        lispsmView(in.scene->light, in.cameraView, receivers, casters, in.params->f("lispsm.n_scale"), size, in.jitter),
-        size);
+        lispsmView(in.scene->light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter), size);
   }
 };
 
