@@ -5,6 +5,7 @@
 #include "layouts/cascaded.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
+#include "layouts/tsm.h"
 
 namespace sl {
 
@@ -70,6 +71,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     registerBasicLayouts(v);
     registerWarpedLayouts(v);
     registerCascadedLayouts(v);
+    registerTrapezoidalLayouts(v);
     return v;
   }();
   return list;
@@ -131,6 +133,13 @@ const std::vector<Preset>& allPresets() {
        "depth-pcf",
        "pixel-correct",
        {"pcf.kernel=3"}},
+      {"tsm",
+       "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % rule, "
+       "nearest depth test",
+       "tsm",
+       "depth-nearest",
+       "none",
+       {}},
       {"cascaded",
        "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
        "each, practical split scheme, blended borders, nearest depth test",
