@@ -33,7 +33,7 @@ glm::dmat3 squareToQuad(const Quad& q) {
 }
 
 struct Trapezoid {
-  Quad corners;  // top-left, top-right, base-right, base-left (top = near the viewer)
+  Quad corners;  // to (0,0) (1,0) (1,1) (0,1) of the square: top edge (near the viewer) first
   bool valid = false;
 };
 
@@ -66,7 +66,10 @@ Trapezoid fitTrapezoid(const std::vector<glm::dvec2>& pts, glm::dvec2 nearC, glm
     hi = std::max(hi, across / along);
   }
   auto at = [&](double along, double slope) { return q + u * along + side * (along * slope); };
-  t.corners = {at(eta, lo), at(eta, hi), at(eta + lambda, hi), at(eta + lambda, lo)};
+  // Map +x to -side so that (x, y) keep the light plane's orientation: a mirrored map turns
+  // front faces into back faces, and the shadow pass culls by winding (it stored the far walls of
+  // a box the camera stands in: 78 % wrong).
+  t.corners = {at(eta, hi), at(eta, lo), at(eta + lambda, lo), at(eta + lambda, hi)};
   t.valid = std::isfinite(eta) && hi > lo;
   return t;
 }

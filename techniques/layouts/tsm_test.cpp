@@ -49,6 +49,25 @@ TEST(Tsm, TrapezoidCoversEveryVisibleReceiverAndItsCasters) {
   }
 }
 
+// A mirrored map turns front faces into back faces (the shadow pass culls by winding).
+TEST(Tsm, KeepsTheLightPlanesOrientation) {
+  for (const std::string id : {"basic", "columns", "terrain"}) {
+    Scene scene = loadScene(id, defaultAssetsDir());
+    for (const Camera& cam : scene.cameras) {
+      LightSpace ls = layoutFor("tsm", scene, cam);
+      const glm::mat4 inv = glm::inverse(ls.primary().view);
+      const glm::vec3 o = glm::vec3(inv * glm::vec4(0, 0, -50, 1)), x = glm::vec3(inv * glm::vec4(0.01f, 0, -50, 1)),
+                      y = glm::vec3(inv * glm::vec4(0, 0.01f, -50, 1));
+      auto ndc2 = [&](const glm::vec3& p) {
+        glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
+        return glm::vec2(c) / c.w;
+      };
+      const glm::vec2 dx = ndc2(x) - ndc2(o), dy = ndc2(y) - ndc2(o);
+      EXPECT_GT(dx.x * dy.y - dx.y * dy.x, 0.0f) << id << "/" << cam.name;
+    }
+  }
+}
+
 TEST(Tsm, FocusLineLandsAtItsShareOfTheMapAndNearTexelsAreDenser) {
   Scene scene = loadScene("columns", defaultAssetsDir());
   const Camera& cam = scene.cameras.front();
