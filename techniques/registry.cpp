@@ -5,6 +5,7 @@
 #include "layouts/cascaded.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
+#include "layouts/psm.h"
 #include "layouts/tsm.h"
 
 namespace sl {
@@ -72,6 +73,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     registerWarpedLayouts(v);
     registerCascadedLayouts(v);
     registerTrapezoidalLayouts(v);
+    registerPerspectiveLayouts(v);
     return v;
   }();
   return list;
@@ -133,6 +135,13 @@ const std::vector<Preset>& allPresets() {
        "depth-pcf",
        "pixel-correct",
        {"pcf.kernel=3"}},
+      {"psm",
+       "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
+       "nearest depth test",
+       "psm",
+       "depth-nearest",
+       "none",
+       {}},
       {"tsm",
        "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % rule, "
        "nearest depth test",

@@ -88,9 +88,10 @@ TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
     hc.setup(scene, cam);
     h.renderer.setScene(scene);
     const double focused = runCase(h, scene, cam, "standard", {"shadowmap.size=1024"}, hc.name);
-    std::printf("%-50s focused %.2f %%", hc.name.c_str(), focused);
+    std::printf("%-50s focused %.2f %%", hc.name.c_str(), focused);  // one line per case
     for (const auto& [preset, sets] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"lispsm", {"shadowmap.size=1024"}},
+             {"psm", {"shadowmap.size=1024"}},
              {"tsm", {"shadowmap.size=1024"}},
              {"cascaded", {"shadowmap.size=512"}},
              {"cascaded", {"shadowmap.size=512", "cascades.warp=lispsm"}},
