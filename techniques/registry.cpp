@@ -156,6 +156,13 @@ const std::vector<Preset>& allPresets() {
        "depth-nearest",
        "none",
        {}},
+      {"sdsm",
+       "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
+       "a GPU reduction (one frame of latency), nearest depth test",
+       "cascaded",
+       "depth-nearest",
+       "none",
+       {"fit.sdsm=on"}},
   };
   return presets;
 }

@@ -230,6 +230,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     if (vp->prev_.epoch == epoch_ && !in.cut) continue;
     vp->prev_ = now;
     vp->accumulation->reset();
+    vp->layout->reset();  // e.g. SDSM bounds of frames before the cut
   }
   FrameGraph graph;
   graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in] { drawGBuffer(proj_ * view_, in.time, prev_); }});
@@ -365,6 +366,10 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   };
   for (const auto& name : vp.shownViews)
     if (vp.views_.count(name)) part.viewTargets[name] = vp.views_[name].get();
+  part.replaceLightSpace = [&vp](const LightSpace& ls) {
+    vp.lightSpace = ls;
+    vp.lightViews_->upload(vp.lightSpace);
+  };
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
   // What the visibility tests read: the shadow map, or what the representation made of it.
   const std::string sm = vp.representation->addPasses(g, part);

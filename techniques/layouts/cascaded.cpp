@@ -10,6 +10,7 @@
 #include "layouts/cascade_fit.h"
 #include "layouts/light_frame.h"
 #include "layouts/lispsm.h"
+#include "layouts/sdsm.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,11 @@ namespace {
 
 // The camera depth range the splits cover: the camera's near plane to the farthest point of the
 // scene (or the far plane). Both stay put while the camera turns, so do the splits and spheres.
-std::pair<float, float> splitRange(const CameraFrustum& cam, const Bounds& bounds) {
+std::pair<float, float> splitRange(const CameraFrustum& cam, const Bounds& bounds, const VisibleBounds& visible) {
+  // Sample-distribution fitting: the splits go over the depths the pixels showed (with 1 %).
+  if (visible.valid)
+    return {std::max(cam.zNear, visible.depthMin * 0.99f),
+            std::max(std::min(cam.zFar, visible.depthMax * 1.01f), cam.zNear * 1.01f)};
   float farthest = 0.0f;
   for (const auto& p : boxCorners(bounds)) farthest = std::max(farthest, glm::length(p - cam.eye));
   const float zFar = std::min(cam.zFar, farthest);
@@ -45,19 +50,19 @@ LightView cascadeView(const LayoutInput& in, const CameraFrustum& cam, float a, 
   return lispsmView(light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter);
 }
 
-class CascadedState : public LayoutState {
+class CascadedState : public SdsmState {
  public:
-  using LayoutState::LayoutState;
+  using SdsmState::SdsmState;
   LightSpace compute(const LayoutInput& in) override {
     cameraView_ = in.cameraView;
-    return layout_.compute(in);
+    return SdsmState::compute(in);
   }
   // The GLSL module picks the split by the pixel's camera view depth.
   void bind(const Program& p, TextureUnits&) const override { p.set("u_cameraView", cameraView_); }
   std::vector<std::string> views() const override { return {"cascades"}; }
   std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) override {
     addCascadesViewPass(graph, ctx);
-    return {};
+    return SdsmState::addPasses(graph, ctx);
   }
 
  private:
@@ -79,7 +84,7 @@ class CascadedLayout : public Layout {
     const CameraFrustum cam = cameraFrustum(in.cameraView, in.cameraProj);
     const Bounds bounds = in.scene->boundsAt(in.time);
     const auto casters = boxCorners(bounds);
-    const auto [zNear, zFar] = splitRange(cam, bounds);
+    const auto [zNear, zFar] = splitRange(cam, bounds, in.params->b("fit.sdsm") ? in.visible : VisibleBounds{});
     const int count = in.params->i("cascades.count");
     const auto scheme = static_cast<SplitScheme>(in.params->i("cascades.scheme"));
     const auto splits = cascadeSplits(count, scheme, in.params->f("cascades.lambda"), zNear, zFar);
@@ -140,6 +145,7 @@ std::vector<ParamDecl> CascadedLayout::params() const {
   };
   // With cascades.warp=lispsm: the warp's n inside each split (that split's own z_n and n_opt).
   for (auto&& d : lispsmParams()) decls.push_back(d);
+  for (auto&& d : sdsmParams()) decls.push_back(d);
   return decls;
 }
 
