@@ -20,6 +20,7 @@ const char* kUsage =
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
     "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
+    "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
       if (cmd == "list") return sl::runListCommand(argc, argv);
       if (cmd == "reference") return sl::runReferenceCommand(argc, argv);
       if (cmd == "bench") return sl::runBenchCommand(argc, argv);
+      if (cmd == "plot") return sl::runPlotCommand(argc, argv);
       if (cmd == "help" || cmd == "--help" || cmd == "-h") {
         std::cout << kUsage;
         return 0;

@@ -5,4 +5,5 @@ int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
 int runReferenceCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
+int runPlotCommand(int argc, char** argv);
 }  // namespace sl
