@@ -156,6 +156,12 @@ const std::vector<Preset>& allPresets() {
        "depth-nearest",
        "none",
        {}},
+      {"pixel-correct-cascaded",
+       "pixel-correct over cascades: jitter and confidence in each split's own texels",
+       "cascaded",
+       "depth-nearest",
+       "pixel-correct",
+       {}},
       {"sdsm",
        "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
        "a GPU reduction (one frame of latency), nearest depth test",
