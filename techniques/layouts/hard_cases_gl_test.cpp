@@ -93,6 +93,7 @@ TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
              {"lispsm", {"shadowmap.size=1024"}},
              {"psm", {"shadowmap.size=1024"}},
              {"tsm", {"shadowmap.size=1024"}},
+             {"face-partitioned", {"shadowmap.size=512"}},
              {"cascaded", {"shadowmap.size=512"}},
              {"cascaded", {"shadowmap.size=512", "cascades.warp=lispsm"}},
              {"pixel-correct-lispsm", {"shadowmap.size=1024"}}}) {
