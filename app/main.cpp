@@ -21,6 +21,7 @@ const char* kUsage =
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
     "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
     "  shadowlab plot --scene S --techniques a,b --out F.svg    visibility vs receiver depth at a texel (plot --help)\n"
+    "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 

@@ -2,9 +2,13 @@
 #include "technique.h"
 
 #include "depth/depth_representations.h"
+#include "layouts/cascaded.h"
+#include "layouts/face_partitioned.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
 #include "prefiltered/prefiltered_representations.h"
+#include "layouts/psm.h"
+#include "layouts/tsm.h"
 
 namespace sl {
 
@@ -30,8 +34,9 @@ const std::vector<ParamDecl>& commonParams() {
        .type = ParamType::Enum,
        .defaultValue = 2,
        .help = "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
-               "(+constant)",
-       .choices = {"none", "constant", "slope", "normal-offset"}},
+               "(+constant), receiver plane (+constant: each filter tap compares against the receiver's plane "
+               "extrapolated to that texel; Isidoro 2006)",
+       .choices = {"none", "constant", "slope", "normal-offset", "receiver-plane"}},
       {.key = "bias.constant",
        .type = ParamType::Float,
        .min = 0,
@@ -68,6 +73,10 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     std::vector<std::unique_ptr<Layout>> v;
     registerBasicLayouts(v);
     registerWarpedLayouts(v);
+    registerCascadedLayouts(v);
+    registerTrapezoidalLayouts(v);
+    registerPerspectiveLayouts(v);
+    registerFacePartitionedLayouts(v);
     return v;
   }();
   return list;
@@ -131,6 +140,48 @@ const std::vector<Preset>& allPresets() {
          "depth-pcf",
          "pixel-correct",
          {"pcf.kernel=3"}},
+        {"psm",
+         "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
+         "nearest depth test",
+         "psm",
+         "depth-nearest",
+         "none",
+         {}},
+        {"tsm",
+         "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % rule, "
+         "nearest depth test",
+         "tsm",
+         "depth-nearest",
+         "none",
+         {}},
+        {"cascaded",
+         "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
+         "each, practical split scheme, blended borders, nearest depth test",
+         "cascaded",
+         "depth-nearest",
+         "none",
+         {}},
+        {"pixel-correct-cascaded",
+         "pixel-correct over cascades: jitter and confidence in each split's own texels",
+         "cascaded",
+         "depth-nearest",
+         "pixel-correct",
+         {}},
+        {"face-partitioned",
+         "face partitioning (Lloyd et al. 2006): one LiSPSM map per side face of the view frustum, nearest depth test",
+         "face-partitioned",
+         "depth-nearest",
+         "none",
+         // Measured: its warped maps' texels are anisotropic, and the slope bias measures the smaller
+         // side; one texel of slope leaves acne near the horizon (techniques/layouts/README.md).
+         {"bias.slope=2"}},
+        {"sdsm",
+         "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
+         "a GPU reduction (one frame of latency), nearest depth test",
+         "cascaded",
+         "depth-nearest",
+         "none",
+         {"fit.sdsm=on"}},
     };
     addPrefilteredPresets(v);
     return v;

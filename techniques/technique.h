@@ -63,6 +63,14 @@ struct LightSpace {
   static LightSpace single(const LightView& view, int size) { return LightSpace{{view}, size}; }
 };
 
+// What the visible pixels of an earlier frame covered (sample-distribution fitting, SDSM):
+// camera view depth and position in the light's fixed basis (lightViewMatrix), min and max.
+struct VisibleBounds {
+  bool valid = false;
+  float depthMin = 0, depthMax = 0;
+  glm::vec3 lightMin{0.0f}, lightMax{0.0f};  // x, y and light-view distance
+};
+
 struct LayoutInput {
   const Scene* scene = nullptr;
   double time = 0.0;
@@ -70,6 +78,7 @@ struct LayoutInput {
   glm::mat4 cameraProj{1.0f};
   const ParamSet* params = nullptr;
   LayoutJitter jitter;
+  VisibleBounds visible;  // set by SdsmState when fit.sdsm is on and bounds have arrived
 };
 
 // What a part's per-viewport state sees when it adds its passes to a frame.
@@ -85,14 +94,18 @@ struct PartContext {
   bool cameraMoved = false;
   int frameIndex = 0;
   std::string shadowMap;  // resource the shadow passes write (representation passes read it)
-  // Targets of the debug views shown in this viewport (a part draws the views it declared).
-  std::map<std::string, Texture2D*> viewTargets;
   std::function<void()> drawFullscreen;
-  // Defines and module includes of the technique, for passes whose shaders use its modules.
-  std::string techniquePrelude;
   // Sets the technique's uniforms and every part's bindings on a program that includes the
   // technique's modules (the technique prelude).
   std::function<void(const Program&, TextureUnits&)> bindTechnique;
+  std::string techniquePrelude;  // a ProgramSpec prelude that includes the technique's modules
+  // Binds the G-buffer (u_gPosition, u_gNormal, u_gAlbedo, u_gSurface; resource "gbuffer").
+  std::function<void(const Program&, TextureUnits&)> bindGBuffer;
+  // Debug views of this part shown this frame, and where to draw them (RGBA8, viewport size).
+  std::map<std::string, Texture2D*> viewTargets;
+  // Replaces this frame's light space after the layout's passes recomputed it (SDSM with no
+  // readback latency); the number of views and their kind must stay the same.
+  std::function<void(const LightSpace&)> replaceLightSpace;
 };
 
 // The one shape of per-viewport state of every part (layout, representation, accumulation):

@@ -6,4 +6,5 @@ int runListCommand(int argc, char** argv);
 int runReferenceCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
 int runPlotCommand(int argc, char** argv);
+int runPlotDpdsCommand(int argc, char** argv);  // `plot dpds`, dispatched by runPlotCommand
 }  // namespace sl

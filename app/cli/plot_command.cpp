@@ -21,7 +21,8 @@ const char* kPlotUsage =
     "usage: shadowlab plot --scene S --techniques a,b,... [--set key=value]... [--camera NAME] [--size WxH]\n"
     "                      [--pixel X,Y] [--range LO,HI] [--samples N] --out F.svg\n"
     "  every technique must be pre-filtered (vsm, esm, evsm2, evsm4, gaussian, ewgf, msm, msm16, convolution);\n"
-    "  X,Y: screen pixel from the bottom left (default: the centre); LO,HI: receiver depths shown (0,1).\n";
+    "  X,Y: screen pixel from the bottom left (default: the centre); LO,HI: receiver depths shown (0,1).\n"
+    "       shadowlab plot dpds --help   the layouts' perspective aliasing (dp/ds) along the view\n";
 
 struct Curve {
   std::string label, color;
@@ -72,6 +73,8 @@ void writeSvg(const std::string& path, const std::vector<Curve>& curves, float l
 }  // namespace
 
 int runPlotCommand(int argc, char** argv) {
+  // `plot dpds` is the layouts' perspective-aliasing plot (plot_dpds_command.cpp).
+  if (argc >= 3 && std::string(argv[2]) == "dpds") return runPlotDpdsCommand(argc, argv);
   for (int i = 2; i < argc; ++i)
     if (std::string(argv[i]) == "--help") {
       std::cout << kPlotUsage;

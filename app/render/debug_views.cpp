@@ -44,7 +44,10 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
     if (!vp.views_.count(name)) return;
     const std::string modules = needsTechnique ? prelude : "";
     Texture2D* target = vp.views_[name].get();
-    g.add({"view." + name + tag, reads, {"view." + name + tag}, [this, &vp, target, frag, modules, visTex, needsTechnique] {
+    g.add({"view." + name + tag,
+           reads,
+           {"view." + name + tag},
+           [this, &vp, target, frag, modules, visTex, needsTechnique] {
              ProgramSpec spec{
                  "view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
              Program& p = shaders_.get(spec);
@@ -109,9 +112,19 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              Camera cut = in.camera;
              cut.farPlane = std::min(cut.farPlane, glm::length(in.camera.position - center) + radius);
              glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
-             addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f), glm::vec3(1.0f, 0.85f, 0.1f));
-             for (const LightView& lv : vp.lightSpace.views)
-               addBox(lines, unprojectCube(lv.viewProj, -1.0f, 1.0f), glm::vec3(0.2f, 0.9f, 1.0f));
+             // Yellow, or white beside partitioned views (whose second colour is yellow).
+             const bool partitioned = vp.lightSpace.views.size() > 1;
+             addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f),
+                    partitioned ? glm::vec3(1.0f) : glm::vec3(1.0f, 0.85f, 0.1f));
+             // One light view in cyan; the views of a partitioned layout in the colours of the
+             // `cascades` view (shaders/views/cascades.frag), nearest split first.
+             static const glm::vec3 palette[8] = {{0.90f, 0.30f, 0.25f}, {0.95f, 0.75f, 0.20f}, {0.35f, 0.75f, 0.30f},
+                                                  {0.25f, 0.55f, 0.90f}, {0.65f, 0.40f, 0.85f}, {0.30f, 0.80f, 0.80f},
+                                                  {0.90f, 0.55f, 0.70f}, {0.60f, 0.60f, 0.60f}};
+             const auto& views = vp.lightSpace.views;
+             for (size_t i = 0; i < views.size(); ++i)
+               addBox(lines, unprojectCube(views[i].viewProj, -1.0f, 1.0f),
+                      views.size() == 1 ? glm::vec3(0.2f, 0.9f, 1.0f) : palette[i % 8]);
              glNamedBufferSubData(linesVbo_, 0,
                                   static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
                                   lines.data());

@@ -230,6 +230,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     if (vp->prev_.epoch == epoch_ && !in.cut) continue;
     vp->prev_ = now;
     vp->accumulation->reset();
+    vp->layout->reset();  // e.g. SDSM bounds of frames before the cut
   }
   FrameGraph graph;
   graph.add({"gbuffer", {}, {"gbuffer"}, [this, &in] { drawGBuffer(proj_ * view_, in.time, prev_); }});
@@ -320,6 +321,41 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
          }});
 }
 
+// What every part of a viewport's technique sees while it adds its passes.
+PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
+                                  const std::string& prelude) {
+  PartContext part;
+  part.viewportTag = tag;
+  part.scene = scene_;
+  part.time = in.time;
+  part.shaders = &shaders_;
+  part.params = &vp.technique.params;
+  part.lightSpace = &vp.lightSpace;
+  part.view = view_;
+  part.proj = proj_;
+  part.width = in.width;
+  part.height = in.height;
+  part.cameraMoved = cameraMoved;
+  part.frameIndex = vp.frameIndex_;
+  part.shadowMap = "shadowmap" + tag;
+  for (const auto& name : vp.shownViews)
+    if (vp.views_.count(name)) part.viewTargets[name] = vp.views_[name].get();
+  part.drawFullscreen = [this] { drawFullscreen(); };
+  part.techniquePrelude = prelude;
+  part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
+  part.bindGBuffer = [this](const Program& p, TextureUnits& units) {
+    units.bind(p, "u_gPosition", gPosition_->id());
+    units.bind(p, "u_gNormal", gNormal_->id());
+    units.bind(p, "u_gAlbedo", gAlbedo_->id());
+    units.bind(p, "u_gSurface", gSurface_->id());
+  };
+  part.replaceLightSpace = [&vp](const LightSpace& ls) {
+    vp.lightSpace = ls;
+    vp.lightViews_->upload(vp.lightSpace);
+  };
+  return part;
+}
+
 void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
   const std::string tag = "[" + std::to_string(index) + "]";
   Technique& t = vp.technique;
@@ -341,37 +377,16 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   const std::string prelude = techniquePrelude(vp);
   const std::string raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
-  PartContext part;
-  part.viewportTag = tag;
-  part.scene = scene_;
-  part.time = in.time;
-  part.shaders = &shaders_;
-  part.params = &t.params;
-  part.lightSpace = &vp.lightSpace;
-  part.view = view_;
-  part.proj = proj_;
-  part.width = in.width;
-  part.height = in.height;
-  part.cameraMoved = cameraMoved;
-  part.frameIndex = vp.frameIndex_;
-  part.shadowMap = "shadowmap" + tag;
-  for (const auto& name : vp.shownViews)
-    if (vp.views_.count(name)) part.viewTargets[name] = vp.views_[name].get();
-  part.drawFullscreen = [this] { drawFullscreen(); };
-  part.techniquePrelude = prelude;
-  part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
+  PartContext part = partContext(vp, tag, in, cameraMoved, prelude);
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
   // What the visibility tests read: the shadow map, or what the representation made of it.
   const std::string sm = vp.representation->addPasses(g, part);
   vp.shadowResource_ = sm;
 
   // Binds the G-buffer and every part's inputs on a visibility-computing program.
-  auto bindVisibilityInputs = [this, &vp](const Program& p, TextureUnits& units) {
+  auto bindVisibilityInputs = [this, &vp, bindGBuffer = part.bindGBuffer](const Program& p, TextureUnits& units) {
     bindTechnique(p, units, vp);
-    units.bind(p, "u_gPosition", gPosition_->id());
-    units.bind(p, "u_gNormal", gNormal_->id());
-    units.bind(p, "u_gAlbedo", gAlbedo_->id());
-    units.bind(p, "u_gSurface", gSurface_->id());
+    bindGBuffer(p, units);
   };
 
   if (t.accumulation->passesThrough()) {

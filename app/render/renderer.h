@@ -169,6 +169,8 @@ class Renderer {
   std::string techniquePrelude(const Viewport& vp) const;
   // The technique's uniforms and every part's bindings (light views, shadow map, ...).
   void bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const;
+  PartContext partContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
+                          const std::string& prelude);
   void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                      const FrameInput& in);
   void drawFullscreen();

@@ -1,5 +1,6 @@
 // Shared depth bias (survey: "bias"). SL_BIAS_MODE (from the renderer's prelude, the index of
-// bias.mode): 0 none, 1 constant, 2 slope-scaled, 3 normal offset.
+// bias.mode): 0 none, 1 constant, 2 slope-scaled, 3 normal offset, 4 receiver plane
+// (common/receiver_plane.glsl: the plane's gradient comes from receiverPlaneGradient below).
 #ifndef SL_BIAS_MODE
 #define SL_BIAS_MODE 2
 #endif
@@ -27,11 +28,40 @@ float biasDepth(vec3 p, float cosTheta, int view) {
   {
     // A receiver tilted by theta changes depth by tan(theta) per world unit; a filter that
     // reads texels r away from the receiver sees that change over r more texels.
-    float tanTheta = clamp(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4), 0.0, 20.0);
+    // No clamp below the 1e-4 floor of cos: a clamp (it was tan <= 20, 87 degrees) leaves the
+    // receivers behind each texel centre of a grazing plane shadowing themselves, which shows
+    // as a wedge over whole regions (a sun 0.06 degrees up has tan = 955).
+    float tanTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4);
     float texels = u_bias_slope + representationFilterRadius();
     bias += texels * tanTheta * layoutTexelWorldSize(p, view) * layoutDepthScale(view);
   }
 #endif
   return bias;
 #endif
+}
+
+// d(stored depth)/d(uv) of the receiver's tangent plane (normal n) at p in `view`, for
+// receiver-plane depth bias. Orthographic views: exact, from the normal in light-view space
+// (the window is texelWorldSize x size wide on both axes). Perspective or warped views: from two
+// steps on the tangent plane projected by the layout. Bounded to one depth range per texel (an
+// edge-on receiver, whose plane is a line in the map) and 0 where it is not finite.
+vec2 receiverPlaneGradient(vec3 p, vec3 n, int view, ShadowCoord c0) {
+  vec2 g;
+#ifdef SL_PERSPECTIVE_MAP
+  vec3 t1 = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(n, t1);
+  float h = 4.0 * layoutTexelWorldSize(p, view);
+  ShadowCoord c1 = layoutShadowCoordIn(p + t1 * h, view), c2 = layoutShadowCoordIn(p + t2 * h, view);
+  vec2 a = c1.uv - c0.uv, b = c2.uv - c0.uv;
+  float za = c1.depth - c0.depth, zb = c2.depth - c0.depth;
+  float det = a.x * b.y - a.y * b.x;
+  g = vec2(za * b.y - zb * a.y, a.x * zb - b.x * za) / det;
+#else
+  vec3 nl = mat3(lightViewMatrix[view]) * n;
+  float nz = nl.z < 0.0 ? min(nl.z, -1e-4) : max(nl.z, 1e-4);
+  g = nl.xy / nz * (lightViewRange[view].z * u_shadowMapSize) * layoutDepthScale(view);
+#endif
+  float perTexel = length(g) / u_shadowMapSize;
+  if (isnan(perTexel) || isinf(perTexel)) return vec2(0.0);
+  return perTexel > 1.0 ? g / perTexel : g;
 }

@@ -6,12 +6,16 @@
 
 // The test in one light view: x visibility (1 = lit), y confidence in [0,1] (1 = the sample
 // sat on a texel centre). coord: where it read the map (uv, biased receiver depth, view); z < -1
-// when the point is outside the view's map (lit: nothing was rendered as a caster there).
-vec2 shadowTestIn(vec3 P, vec3 N, float cosTheta, int view, out vec4 coord) {
+// when the point is outside the view's map (lit: nothing was rendered as a caster there). F: the
+// triangle's own normal, whose plane is what the map rasterized (receiver-plane bias).
+vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coord) {
   coord = vec4(0.0, 0.0, -2.0, -1.0);
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, cosTheta, view), view);
   if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return vec2(1.0, 0.0);
   coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
+#if SL_BIAS_MODE == 4
+  sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P, F, view, sc));
+#endif
   float visibility = representationVisibility(vec3(coord.xy, coord.w), coord.z);
   vec2 texelPos = sc.uv * u_shadowMapSize;
   vec2 fromCenter = abs(texelPos - (floor(texelPos) + 0.5));
@@ -32,10 +36,10 @@ vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {
   // The layout picks the view(s) at the surface point; the bias is applied within each view.
   ShadowCoord pick = layoutShadowCoord(P);
   if (pick.view < 0) return vec2(1.0, 0.0);
-  vec2 result = shadowTestIn(P, N, cosTheta, pick.view, coord);
+  vec2 result = shadowTestIn(P, N, F, cosTheta, pick.view, coord);
   if (pick.view2 >= 0 && pick.weight2 > 0.0) {
     vec4 coord2;
-    result = mix(result, shadowTestIn(P, N, cosTheta, pick.view2, coord2), clamp(pick.weight2, 0.0, 1.0));
+    result = mix(result, shadowTestIn(P, N, F, cosTheta, pick.view2, coord2), clamp(pick.weight2, 0.0, 1.0));
   }
   return result;
 }

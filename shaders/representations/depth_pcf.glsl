@@ -1,4 +1,5 @@
 // Box PCF: the average of N x N nearest-texel tests around the receiver's texel.
+#include "common/receiver_plane.glsl"
 uniform sampler2DArray u_shadowMap;
 uniform float u_pcf_kernel;
 
@@ -10,8 +11,11 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec2 start = uv - texel * float(n - 1) * 0.5;
   float lit = 0.0;
   for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x)
-      lit += receiverDepth <= texture(u_shadowMap, vec3(start + vec2(x, y) * texel, uvLayer.z)).r ? 1.0 : 0.0;
+    for (int x = 0; x < n; ++x) {
+      vec2 tap = start + vec2(x, y) * texel;
+      float depth = receiverDepthAt(receiverDepth, tap, 1.0 / texel);
+      lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
+    }
   return lit / float(n * n);
 }
 

@@ -1,4 +1,5 @@
 // PCF over a Poisson disk, optionally rotated per pixel by interleaved gradient noise.
+#include "common/receiver_plane.glsl"
 uniform sampler2DArray u_shadowMap;
 uniform float u_poisson_samples;
 uniform float u_poisson_radius;
@@ -27,7 +28,8 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   float lit = 0.0;
   for (int i = 0; i < n; ++i) {
     vec2 offset = rot * kPoisson[i] * u_poisson_radius * texel;
-    lit += receiverDepth <= texture(u_shadowMap, vec3(uv + offset, uvLayer.z)).r ? 1.0 : 0.0;
+    float depth = receiverDepthAt(receiverDepth, uv + offset, 1.0 / texel);
+    lit += depth <= texture(u_shadowMap, vec3(uv + offset, uvLayer.z)).r ? 1.0 : 0.0;
   }
   return lit / float(n);
 }

@@ -2,6 +2,7 @@
 #include "layouts/layouts.h"
 
 #include "layouts/light_frame.h"
+#include "layouts/sdsm.h"
 
 namespace sl {
 
@@ -36,6 +37,8 @@ class FocusedLayout : public Layout {
     return "light frustum fitted to view frustum ∩ scene, casters extended toward the light (Brabec et al. 2002)";
   }
   std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
+  std::vector<ParamDecl> params() const override { return sdsmParams(); }
+  std::unique_ptr<LayoutState> createState() const override { return std::make_unique<SdsmState>(*this); }
   LightSpace compute(const LayoutInput& in) const override {
     const Light& light = in.scene->light;
     Bounds bounds = in.scene->boundsAt(in.time);
@@ -43,6 +46,9 @@ class FocusedLayout : public Layout {
     auto casters = boxCorners(bounds);
     auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
     if (receivers.empty()) receivers = casters;  // looking away from the scene: nothing to focus on
+    // Sample-distribution fitting: only what the pixels showed (light-space box, fixed basis).
+    if (in.params->b("fit.sdsm") && in.visible.valid && light.type != Light::Type::Spot)
+      receivers = visibleBoxCorners(light, in.visible);
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
     if (light.type == Light::Type::Spot)

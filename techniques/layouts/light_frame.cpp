@@ -70,7 +70,10 @@ static Polygon orderCap(std::vector<glm::vec3> pts, const glm::vec3& n) {
 }
 
 std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& proj, const Bounds& box) {
-  auto c = frustumCorners(view, proj);  // index = x + 2y + 4z (bits)
+  return clipCornersToBox(frustumCorners(view, proj), box);
+}
+
+std::vector<glm::vec3> clipCornersToBox(const std::vector<glm::vec3>& c, const Bounds& box) {
   static const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   std::vector<Polygon> body;
   for (auto& f : faces) body.push_back({c[f[0]], c[f[1]], c[f[2]], c[f[3]]});
@@ -99,7 +102,7 @@ float quantizeTexelSize(float texel) {
 }
 
 LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
-                           const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter) {
+                          const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter) {
   glm::vec2 lo(1e30f), hi(-1e30f);
   float zNear = 1e30f, zFar = -1e30f;  // as positive distances along the light direction
   for (const auto& p : receivers) {
@@ -135,8 +138,8 @@ LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec
 }
 
 LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
-                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
-                          const LayoutJitter& jitter) {
+                         const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
+                         const LayoutJitter& jitter) {
   float zNear = 1e30f, zFar = 0.0f;
   for (const auto* set : {&receivers, &casters})
     for (const auto& p : *set) {

@@ -18,18 +18,21 @@ std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& pr
 
 // Vertices of (camera frustum ∩ box); empty when they do not intersect.
 std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& proj, const Bounds& box);
+// The same for any convex body given as 8 corners indexed x + 2y + 4z (bits) like a frustum's;
+// corners may coincide (a pyramid: the faces that collapse clip nothing away).
+std::vector<glm::vec3> clipCornersToBox(const std::vector<glm::vec3>& corners, const Bounds& box);
 
 std::vector<glm::vec3> boxCorners(const Bounds& b);
 
 // Orthographic fit: window and depth range in light view space, snapping, jitter, matrices.
 // `receivers` bound the window; `casters` extend the near plane toward the light.
 LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
-                           const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter);
+                          const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter);
 
 // Perspective (spot) fit: the cone, optionally cropped to the receivers' projection.
 LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
-                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
-                          const LayoutJitter& jitter);
+                         const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
+                         const LayoutJitter& jitter);
 
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.

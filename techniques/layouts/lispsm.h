@@ -2,6 +2,22 @@
 
 #include "technique.h"
 
+#include <vector>
+
 namespace sl {
 void registerWarpedLayouts(std::vector<std::unique_ptr<Layout>>& out);
-}
+
+// The LiSPSM view of `receivers` (with `casters` along their light rays) for a camera with view
+// matrix `cameraView` with the chosen n; a spot light, or a view (anti)parallel to the light,
+// gets the focused map instead. Cascades call it once per split (z-partitioning and warping).
+// The free parameter n: a named endpoint (the survey's slider: z_n PSM-like, n_opt, infinity =
+// focused) times a scale.
+struct LispsmN {
+  enum class Mode { Optimal = 0, ZNear = 1, Infinity = 2 } mode = Mode::Optimal;
+  float scale = 1.0f;
+};
+LispsmN lispsmN(const ParamSet& params);  // from lispsm.n and lispsm.n_scale
+std::vector<ParamDecl> lispsmParams();    // their declarations (lispsm and cascaded share them)
+LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
+                     const std::vector<glm::vec3>& casters, const LispsmN& n, int size, const LayoutJitter& jitter);
+}  // namespace sl

@@ -1,0 +1,43 @@
+// Sample-distribution bounds (Lauritzen, Salvi, Lefohn 2011): min/max over the visible pixels of
+// their camera view depth and of their position in the light's fixed basis, reduced per work
+// group in shared memory, then once per group into the result buffer. Floats are stored as
+// order-preserving uints so that atomicMin/atomicMax compare them correctly.
+layout(local_size_x = 16, local_size_y = 16) in;
+uniform sampler2D u_gPosition;
+uniform mat4 u_cameraView;
+uniform mat4 u_lightView;
+layout(std430, binding = 3) buffer DepthBounds {
+  uint bounds[8];  // view depth min, max; light x min, max; y min, max; light depth min, max
+};
+shared uint groupBounds[8];
+
+uint orderedBits(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+
+void main() {
+  if (gl_LocalInvocationIndex < 8u) groupBounds[gl_LocalInvocationIndex] = (gl_LocalInvocationIndex & 1u) == 0u ? 0xffffffffu : 0u;
+  barrier();
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (all(lessThan(pixel, textureSize(u_gPosition, 0)))) {
+    vec4 P = texelFetch(u_gPosition, pixel, 0);
+    // Covered and finite: a NaN would poison the bounds for the frames that read them.
+    if (P.w > 0.5 && !any(isnan(P.xyz)) && !any(isinf(P.xyz))) {
+      vec3 q = (u_lightView * vec4(P.xyz, 1.0)).xyz;
+      float values[4] = float[4](-(u_cameraView * vec4(P.xyz, 1.0)).z, q.x, q.y, -q.z);
+      for (int k = 0; k < 4; ++k) {
+        atomicMin(groupBounds[2 * k], orderedBits(values[k]));
+        atomicMax(groupBounds[2 * k + 1], orderedBits(values[k]));
+      }
+    }
+  }
+  barrier();
+  if (gl_LocalInvocationIndex < 8u) {
+    uint i = gl_LocalInvocationIndex;
+    if ((i & 1u) == 0u)
+      atomicMin(bounds[i], groupBounds[i]);
+    else
+      atomicMax(bounds[i], groupBounds[i]);
+  }
+}

@@ -1,0 +1,112 @@
+// The numerically hard cases for every layout (llvmpipe, small frames): no NaN/Inf,
+// visibility in [0, 1], no GL error, and no layout much worse than the focused map at the same
+// texel count (a warp or partition must degrade to focusing, never to garbage).
+#include "metrics/metrics.h"
+#include "reference/reference.h"
+#include "tests/gl_test_util.h"
+
+#include <functional>
+
+namespace sl {
+namespace {
+
+struct HardCase {
+  std::string name;
+  std::function<void(Scene&, Camera&)> setup;
+};
+
+void look(Camera& c, glm::vec3 from, glm::vec3 dir) {
+  c.position = from;
+  c.target = from + glm::normalize(dir) * 5.0f;
+}
+
+std::vector<HardCase> hardCases() {
+  return {
+      {"light behind the viewer, looking down the light",
+       [](Scene& s, Camera& c) { look(c, glm::vec3(2.0f, 5.0f, 3.0f), s.light.direction); }},
+      {"light along the view direction, toward the viewer",
+       [](Scene& s, Camera& c) {
+         look(c, glm::vec3(0.5f, 0.6f, 5.0f), glm::vec3(0.0f, 0.15f, -1.0f));
+         s.light.direction = -glm::normalize(c.target - c.position);
+       }},
+      {"light parallel to the ground",
+       [](Scene& s, Camera&) { s.light.direction = glm::normalize(glm::vec3(-1.0f, 0.0f, 0.3f)); }},
+      {"near 0.01, far 10000",
+       [](Scene&, Camera& c) {
+         c.nearPlane = 0.01f;
+         c.farPlane = 10000.0f;
+       }},
+      {"camera inside a caster",
+       [](Scene&, Camera& c) { look(c, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(1, -0.2f, 1)); }},
+      {"casters behind the camera",
+       [](Scene& s, Camera& c) {
+         look(c, glm::vec3(-1.5f, 1.5f, -1.5f), glm::vec3(-1.0f, -0.4f, -1.0f));
+         s.light.direction = glm::normalize(glm::vec3(-1.0f, -0.5f, -1.0f));
+       }},
+  };
+}
+
+double wrongPct(const Scene& scene, const test::Frame& f) {
+  ReferenceTracer tracer(scene, 0.0);
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<float> vis(n);
+  std::vector<uint8_t> valid(n);
+  for (size_t i = 0; i < n; ++i) {
+    vis[i] = f.visibility[2 * i];
+    valid[i] = f.position[4 * i + 3] > 0.5f;
+  }
+  return compareVisibility(vis.data(), ref.data(), valid.data(), n).wrongPixelPct;
+}
+
+// Runs `preset` with `sets` on the case; checks the frame and returns its wrong pixels.
+double runCase(test::GlHarness& h, const Scene& scene, const Camera& cam, const std::string& preset,
+               const std::vector<std::string>& sets, const std::string& what) {
+  Viewport vp(makeTechnique(preset, sets));
+  vp.shownViews = vp.availableViews();
+  FrameInput in;
+  in.camera = cam;
+  in.width = 160;
+  in.height = 90;
+  in.cut = true;
+  h.renderer.render(in, {&vp});
+  const test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
+  EXPECT_EQ(f.nonfinite(), 0) << what << " " << preset;
+  for (size_t i = 0; i < f.visibility.size(); i += 2) {
+    EXPECT_GE(f.visibility[i], 0.0f) << what << " " << preset;
+    EXPECT_LE(f.visibility[i], 1.0f) << what << " " << preset;
+    if (f.visibility[i] < 0.0f || f.visibility[i] > 1.0f) break;
+  }
+  return wrongPct(scene, f);
+}
+
+TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
+  test::GlHarness h;
+  for (const HardCase& hc : hardCases()) {
+    Scene scene = loadScene("basic", defaultAssetsDir());
+    Camera cam = scene.cameras.front();
+    hc.setup(scene, cam);
+    h.renderer.setScene(scene);
+    const double focused = runCase(h, scene, cam, "standard", {"shadowmap.size=1024"}, hc.name);
+    std::printf("%-50s focused %.2f %%", hc.name.c_str(), focused);  // one line per case
+    for (const auto& [preset, sets] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"lispsm", {"shadowmap.size=1024"}},
+             {"psm", {"shadowmap.size=1024"}},
+             {"tsm", {"shadowmap.size=1024"}},
+             {"face-partitioned", {"shadowmap.size=512"}},
+             {"cascaded", {"shadowmap.size=512"}},
+             {"cascaded", {"shadowmap.size=512", "cascades.warp=lispsm"}},
+             {"pixel-correct-lispsm", {"shadowmap.size=1024"}}}) {
+      const double wrong = runCase(h, scene, cam, preset, sets, hc.name);
+      std::printf(", %s%s %.2f %%", preset.c_str(), sets.size() > 1 ? "+warp" : "", wrong);
+      // Never garbage: within a point of the focused map's wrong pixels (one frame, 160x90).
+      EXPECT_LE(wrong, focused + 1.0) << hc.name << " " << preset << (sets.size() > 1 ? "+warp" : "");
+    }
+    std::printf("\n");
+  }
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+}  // namespace
+}  // namespace sl

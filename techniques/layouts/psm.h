@@ -1,0 +1,7 @@
+#pragma once
+
+#include "technique.h"
+
+namespace sl {
+void registerPerspectiveLayouts(std::vector<std::unique_ptr<Layout>>& out);
+}

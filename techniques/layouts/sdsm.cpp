@@ -1,0 +1,128 @@
+#include "layouts/sdsm.h"
+
+#include "gl/gl_util.h"
+#include "gl/shader_library.h"
+#include "gl/texture_units.h"
+#include "layouts/light_frame.h"
+#include "render/frame_graph.h"
+
+#include <cstring>
+
+namespace sl {
+
+namespace {
+
+constexpr int kRing = 4;  // latency 0..3: the buffer of frame k is read in frame k + latency
+
+float fromOrderedBits(uint32_t u) {
+  u = (u & 0x80000000u) != 0u ? u & 0x7fffffffu : ~u;
+  float f;
+  std::memcpy(&f, &u, sizeof(f));
+  return f;
+}
+
+}  // namespace
+
+std::vector<ParamDecl> sdsmParams() {
+  return {{.key = "fit.sdsm",
+           .type = ParamType::Bool,
+           .defaultValue = 0,
+           .help = "sample-distribution fitting (Lauritzen et al. 2011): fit to the depths and light-space bounds of "
+                   "the pixels actually visible, from a GPU min/max reduction before the shadow pass"},
+          {.key = "fit.sdsm_latency",
+           .type = ParamType::Int,
+           .min = 0,
+           .max = 3,
+           .defaultValue = 1,
+           .unit = "frames",
+           .help = "frames between the reduction and the fit that uses it: 0 waits for the GPU in the same frame, "
+                   "1-3 read an earlier frame's result without a stall (lags behind camera motion)"}};
+}
+
+std::vector<glm::vec3> visibleBoxCorners(const Light& light, const VisibleBounds& visible) {
+  const glm::mat4 toWorld = glm::inverse(lightViewMatrix(light, 0.0f));
+  const glm::vec3 pad = 0.01f * glm::max(visible.lightMax - visible.lightMin, glm::vec3(1e-3f));
+  const glm::vec3 lo = visible.lightMin - pad, hi = visible.lightMax + pad;
+  std::vector<glm::vec3> out;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 q(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, -(i & 4 ? hi.z : lo.z));
+    out.emplace_back(toWorld * glm::vec4(q, 1.0f));
+  }
+  return out;
+}
+
+struct SdsmState::Gpu {
+  GLuint buffers[kRing] = {};
+  Gpu() {
+    glCreateBuffers(kRing, buffers);
+    for (GLuint b : buffers) {
+      glNamedBufferData(b, 8 * sizeof(uint32_t), nullptr, GL_DYNAMIC_READ);
+      label(GL_BUFFER, b, "sdsm bounds");
+    }
+  }
+  ~Gpu() { glDeleteBuffers(kRing, buffers); }
+  VisibleBounds read(int slot) const {
+    uint32_t raw[8];
+    glGetNamedBufferSubData(buffers[slot], 0, sizeof(raw), raw);
+    VisibleBounds v;
+    float f[8];
+    for (int i = 0; i < 8; ++i) f[i] = fromOrderedBits(raw[i]);
+    v.valid = f[0] <= f[1] && std::isfinite(f[0]) && std::isfinite(f[1]);
+    v.depthMin = f[0];
+    v.depthMax = f[1];
+    v.lightMin = glm::vec3(f[2], f[4], f[6]);
+    v.lightMax = glm::vec3(f[3], f[5], f[7]);
+    return v;
+  }
+};
+
+SdsmState::SdsmState(const Layout& layout) : LayoutState(layout) {}
+SdsmState::~SdsmState() = default;
+
+void SdsmState::reset() {
+  frames_ = 0;
+  latest_ = VisibleBounds{};
+}
+
+LightSpace SdsmState::compute(const LayoutInput& in) {
+  lastInput_ = in;
+  if (!in.params->b("fit.sdsm")) return layout_.compute(in);
+  const int latency = in.params->i("fit.sdsm_latency");
+  // The reduction of frame k - latency is complete by now (a finished frame's is, at least).
+  if (gpu_ && latency > 0 && frames_ >= latency) latest_ = gpu_->read((frames_ - latency) % kRing);
+  LayoutInput withBounds = in;
+  withBounds.visible = latest_;
+  return layout_.compute(withBounds);
+}
+
+std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartContext& ctx) {
+  if (!ctx.params->b("fit.sdsm")) return {};
+  if (!gpu_) gpu_ = std::make_unique<Gpu>();
+  const std::string res = "sdsm.bounds" + ctx.viewportTag;
+  const int slot = frames_ % kRing;
+  graph.add({"sdsm.reduce" + ctx.viewportTag, {"gbuffer"}, {res}, [this, ctx, slot] {
+               ProgramSpec spec{"sdsm reduce", {{GL_COMPUTE_SHADER, "passes/depth_bounds.comp"}}, ""};
+               Program& p = ctx.shaders->get(spec);
+               if (!p.valid()) return;
+               const uint32_t init[8] = {~0u, 0u, ~0u, 0u, ~0u, 0u, ~0u, 0u};
+               glNamedBufferSubData(gpu_->buffers[slot], 0, sizeof(init), init);
+               p.use();
+               TextureUnits units;
+               ctx.bindGBuffer(p, units);
+               p.set("u_cameraView", ctx.view);
+               p.set("u_lightView", lightViewMatrix(ctx.scene->light, 0.0f));
+               glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, gpu_->buffers[slot]);
+               glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
+               glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+               if (ctx.params->i("fit.sdsm_latency") > 0) return;
+               // No latency: wait for the result and refit this frame's light space with it.
+               latest_ = gpu_->read(slot);
+               LayoutInput in = lastInput_;
+               in.visible = latest_;
+               ctx.replaceLightSpace(layout_.compute(in));
+             }});
+  ++frames_;
+  return {res};
+}
+
+}  // namespace sl
