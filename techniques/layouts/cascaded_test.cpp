@@ -4,6 +4,7 @@
 #include "gl/shader_library.h"
 #include "layouts/cascade_fit.h"
 #include "layouts/light_frame.h"
+#include "layouts/layout_test_util.h"
 #include "technique.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,13 +17,7 @@ namespace sl {
 namespace {
 
 LightSpace cascadesFor(const Scene& scene, const Camera& cam, std::vector<std::string> overrides = {}) {
-  Technique t = makeTechnique("cascaded", overrides);
-  LayoutInput in;
-  in.scene = &scene;
-  in.cameraView = cameraView(cam);
-  in.cameraProj = cameraProjection(cam, 16.0f / 9.0f);
-  in.params = &t.params;
-  return t.layout->compute(in);
+  return test::layoutFor("cascaded", scene, cam, std::move(overrides));
 }
 
 // Normalized window position and stored depth of p in view v.

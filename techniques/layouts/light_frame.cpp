@@ -200,4 +200,23 @@ LightView fitPerspective(const Light& light, const glm::mat4& lightView, const s
   return ls;
 }
 
+FocusBody focusBody(const LayoutInput& in) {
+  FocusBody b;
+  b.bounds = in.scene->boundsAt(in.time);
+  b.size = in.params->i("shadowmap.size");
+  b.casters = boxCorners(b.bounds);
+  b.receivers = clipFrustumToBox(in.cameraView, in.cameraProj, b.bounds);
+  if (b.receivers.empty()) b.receivers = b.casters;  // looking away from the scene: nothing to focus on
+  b.lightView = lightViewMatrix(in.scene->light, in.jitter.rotationRad);
+  return b;
+}
+
+LightSpace focusedMap(const LayoutInput& in, const FocusBody& b) {
+  const Light& light = in.scene->light;
+  if (light.type == Light::Type::Spot)
+    return LightSpace::single(
+        fitPerspective(light, b.lightView, b.receivers, b.casters, b.size, true, false, in.jitter), b.size);
+  return LightSpace::single(fitOrthographic(b.lightView, b.receivers, b.casters, b.size, false, in.jitter), b.size);
+}
+
 }  // namespace sl

@@ -34,6 +34,20 @@ LightView fitPerspective(const Light& light, const glm::mat4& lightView, const s
                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
                          const LayoutJitter& jitter);
 
+// What the fitted layouts start from: the scene's bounds and corners (the casters), the visible
+// receivers (view frustum ∩ bounds; the corners when the view misses the scene), the light view
+// (with the jitter's roll) and the texels per side.
+struct FocusBody {
+  Bounds bounds;
+  std::vector<glm::vec3> casters, receivers;
+  glm::mat4 lightView{1.0f};
+  int size = 1024;
+};
+FocusBody focusBody(const LayoutInput& in);
+// The focused map of that body (Brabec et al. 2002), unsnapped: what the warped layouts fall back
+// to for spot lights and degenerate views.
+LightSpace focusedMap(const LayoutInput& in, const FocusBody& body);
+
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.
 float quantizeTexelSize(float texel);

@@ -2,6 +2,7 @@
 // view turns toward the light through the fallback to focusing.
 #include "gl/shader_library.h"
 #include "layouts/light_frame.h"
+#include "layouts/layout_test_util.h"
 #include "technique.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,16 +14,7 @@
 namespace sl {
 namespace {
 
-LightSpace layoutFor(const std::string& preset, const Scene& scene, const Camera& cam,
-                     std::vector<std::string> overrides = {}) {
-  Technique t = makeTechnique(preset, overrides);
-  LayoutInput in;
-  in.scene = &scene;
-  in.cameraView = cameraView(cam);
-  in.cameraProj = cameraProjection(cam, 16.0f / 9.0f);
-  in.params = &t.params;
-  return t.layout->compute(in);
-}
+using test::layoutFor;
 
 glm::vec2 texelPos(const LightSpace& ls, const glm::vec3& p) {
   glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);

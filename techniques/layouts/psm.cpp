@@ -154,18 +154,13 @@ class PerspectiveLayout : public Layout {
 
 LightSpace PerspectiveLayout::compute(const LayoutInput& in) const {
   const Light& light = in.scene->light;
-  const Bounds bounds = in.scene->boundsAt(in.time);
-  const int size = in.params->i("shadowmap.size");
-  const auto casters = boxCorners(bounds);
-  auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
-  if (receivers.empty()) receivers = casters;
-  const glm::mat4 lightView = lightViewMatrix(light, in.jitter.rotationRad);
-  auto focused = [&] {
-    if (light.type == Light::Type::Spot)
-      return LightSpace::single(fitPerspective(light, lightView, receivers, casters, size, true, false, in.jitter),
-                                size);
-    return LightSpace::single(fitOrthographic(lightView, receivers, casters, size, false, in.jitter), size);
-  };
+  const FocusBody fb = focusBody(in);
+  const Bounds& bounds = fb.bounds;
+  const int size = fb.size;
+  const auto& casters = fb.casters;
+  const auto& receivers = fb.receivers;
+  const glm::mat4& lightView = fb.lightView;
+  auto focused = [&] { return focusedMap(in, fb); };
   if (light.type == Light::Type::Spot) return focused();
   // The body: visible receivers and, toward the light, where their casters can be.
   const glm::vec3 L = glm::normalize(light.direction);

@@ -3,6 +3,7 @@
 // pushing the near plane trades warp for an even depth distribution.
 #include "gl/shader_library.h"
 #include "layouts/light_frame.h"
+#include "layouts/layout_test_util.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>
@@ -13,13 +14,7 @@ namespace sl {
 namespace {
 
 LightSpace layoutFor(const Scene& scene, const Camera& cam, std::vector<std::string> overrides = {}) {
-  Technique t = makeTechnique("psm", overrides);
-  LayoutInput in;
-  in.scene = &scene;
-  in.cameraView = cameraView(cam);
-  in.cameraProj = cameraProjection(cam, 16.0f / 9.0f);
-  in.params = &t.params;
-  return t.layout->compute(in);
+  return test::layoutFor("psm", scene, cam, std::move(overrides));
 }
 
 glm::vec3 ndc(const LightSpace& ls, const glm::vec3& p) {

@@ -2,6 +2,7 @@
 // lands at tsm.focus_share of the map, and texels are denser near the viewer than with focusing.
 #include "gl/shader_library.h"
 #include "layouts/light_frame.h"
+#include "layouts/layout_test_util.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>
@@ -11,16 +12,7 @@
 namespace sl {
 namespace {
 
-LightSpace layoutFor(const std::string& preset, const Scene& scene, const Camera& cam,
-                     std::vector<std::string> overrides = {}) {
-  Technique t = makeTechnique(preset, overrides);
-  LayoutInput in;
-  in.scene = &scene;
-  in.cameraView = cameraView(cam);
-  in.cameraProj = cameraProjection(cam, 16.0f / 9.0f);
-  in.params = &t.params;
-  return t.layout->compute(in);
-}
+using test::layoutFor;
 
 glm::vec3 ndc(const LightSpace& ls, const glm::vec3& p) {
   glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
