@@ -5,6 +5,7 @@
 
 #include "accumulation/pixel_correct.h"
 #include "metrics/metrics.h"
+#include "bench/reference_cache.h"
 #include "reference/reference.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -29,9 +30,19 @@ struct Comparison {
   std::vector<uint8_t> valid;
 };
 
+// One tracer per scene and time for the whole test binary: building the BVH for every
+// comparison only costs time.
+// Keyed by the scene's content, not its address: tests' scenes live on the stack.
+const ReferenceTracer& tracerFor(const Scene& scene, double time) {
+  static std::map<std::pair<std::string, double>, std::unique_ptr<ReferenceTracer>> tracers;
+  auto& slot = tracers[{sceneContentHash(scene), time}];
+  if (!slot) slot = std::make_unique<ReferenceTracer>(scene, time);
+  return *slot;
+}
+
 Comparison compareToReference(const Scene& scene, const Frame& f, double time) {
   Comparison c;
-  ReferenceTracer tracer(scene, time);
+  const ReferenceTracer& tracer = tracerFor(scene, time);
   ReferenceOptions opts;
   opts.time = time;
   c.reference = tracer.visibility(f.gbuffer(), opts);
