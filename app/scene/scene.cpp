@@ -95,7 +95,16 @@ std::vector<std::string> builtinSceneIds(const std::string& assetsDir) {
   return ids;
 }
 
-glm::mat4 cameraView(const Camera& c) { return glm::lookAt(c.position, c.target, c.up); }
+glm::mat4 cameraView(const Camera& c) {
+  // A camera looking along its up vector (straight down with the default +Y up) has no defined
+  // roll: lookAt would divide by zero and every pixel would be NaN. Pick a perpendicular up.
+  const glm::vec3 forward = c.target - c.position;
+  glm::vec3 up = c.up;
+  const float f = glm::length(forward), u = glm::length(up);
+  if (f > 0.0f && (!(u > 0.0f) || glm::length(glm::cross(forward / f, up / u)) < 1e-4f))
+    up = std::abs(forward.z) < 0.9f * f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+  return glm::lookAt(c.position, c.target, up);
+}
 
 glm::mat4 cameraProjection(const Camera& c, float aspect) {
   // glm's default clip space is OpenGL's (depth -1..1) unless GLM_FORCE_DEPTH_ZERO_TO_ONE is set.

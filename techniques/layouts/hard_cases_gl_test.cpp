@@ -38,6 +38,16 @@ std::vector<HardCase> hardCases() {
        }},
       {"camera inside a caster",
        [](Scene&, Camera& c) { look(c, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(1, -0.2f, 1)); }},
+      {"camera and light straight down (view along its up vector)",
+       [](Scene& s, Camera& c) {
+         look(c, glm::vec3(0.3f, 6.0f, 0.2f), glm::vec3(0.0f, -1.0f, 0.0f));
+         c.up = glm::vec3(0.0f, 1.0f, 0.0f);
+         s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+       }},
+      {"a scene that is one flat plane",
+       [](Scene& s, Camera&) {
+         s.instances.resize(1);  // basic's first object is its ground
+       }},
       {"casters behind the camera",
        [](Scene& s, Camera& c) {
          look(c, glm::vec3(-1.5f, 1.5f, -1.5f), glm::vec3(-1.0f, -0.4f, -1.0f));
@@ -72,6 +82,10 @@ double runCase(test::GlHarness& h, const Scene& scene, const Camera& cam, const 
   h.renderer.render(in, {&vp});
   const test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
   EXPECT_EQ(f.nonfinite(), 0) << what << " " << preset;
+  // A degenerate camera (NaN view matrix) draws nothing and would pass every other check.
+  long long covered = 0;
+  for (size_t i = 3; i < f.position.size(); i += 4) covered += f.position[i] > 0.5f ? 1 : 0;
+  EXPECT_GT(covered, in.width * in.height / 10) << what << " " << preset << ": the scene is not in the frame";
   for (size_t i = 0; i < f.visibility.size(); i += 2) {
     EXPECT_GE(f.visibility[i], 0.0f) << what << " " << preset;
     EXPECT_LE(f.visibility[i], 1.0f) << what << " " << preset;
