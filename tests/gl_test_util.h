@@ -63,6 +63,20 @@ inline Frame readFrame(const Renderer& r, const Viewport& vp, int w, int h) {
   return f;
 }
 
+// One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.
+inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset,
+                        const std::vector<std::string>& sets, int w, int hgt) {
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique(preset, sets));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = w;
+  in.height = hgt;
+  h.renderer.render(in, {&vp});
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return readFrame(h.renderer, vp, w, hgt);
+}
+
 // Copies the shader folder to a temp dir (hot-reload tests edit the copy, never the source).
 inline std::string copyShaders(const std::string& name) {
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / name;

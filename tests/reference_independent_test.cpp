@@ -146,14 +146,7 @@ int independentVisibility(const GridCaster& caster, const glm::dvec3& p, const g
 Agreement compareOnScene(const std::string& id) {
   test::GlHarness h;
   Scene scene = loadScene(id, defaultAssetsDir());
-  h.renderer.setScene(scene);
-  Viewport vp(makeTechnique("standard"));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
-  h.renderer.render(in, {&vp});
-  const test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
+  const test::Frame f = test::renderOnce(h, scene, "standard", {}, 160, 90);
   const std::vector<float> embree = ReferenceTracer(scene).visibility(f.gbuffer(), ReferenceOptions{});
   const glm::dvec3 toLight = -glm::dvec3(glm::normalize(scene.light.direction));
   GridCaster caster(scene, toLight);
@@ -164,9 +157,9 @@ Agreement compareOnScene(const std::string& id) {
     ++a.covered;
     const glm::dvec3 p(f.position[4 * i], f.position[4 * i + 1], f.position[4 * i + 2]);
     const glm::dvec3 n(f.normal[4 * i], f.normal[4 * i + 1], f.normal[4 * i + 2]);
-    const WorldTriangle* tri =
-        f.surface[4 * i] > 0 ? caster.triangle(static_cast<int>(f.surface[4 * i]) - 1, static_cast<int>(f.surface[4 * i + 1]))
-                             : nullptr;
+    const WorldTriangle* tri = f.surface[4 * i] > 0 ? caster.triangle(static_cast<int>(f.surface[4 * i]) - 1,
+                                                                      static_cast<int>(f.surface[4 * i + 1]))
+                                                    : nullptr;
     EXPECT_NE(tri, nullptr) << "covered pixel " << i << " names no triangle";
     bool terminator = false;
     const int verdict = independentVisibility(caster, p, glm::normalize(n), tri, toLight, terminator);
@@ -179,8 +172,9 @@ Agreement compareOnScene(const std::string& id) {
     a.shadowed += verdict == 0 ? 1 : 0;
     if ((embree[i] > 0.5f) != (verdict == 1)) ++a.disagree;
   }
-  std::printf("%s: %lld covered, %lld shadowed, %lld ties, %lld terminator pixels (%lld lit by standard), %lld disagree\n",
-              id.c_str(), a.covered, a.shadowed, a.ties, a.terminator, a.terminatorLitByTechnique, a.disagree);
+  std::printf(
+      "%s: %lld covered, %lld shadowed, %lld ties, %lld terminator pixels (%lld lit by standard), %lld disagree\n",
+      id.c_str(), a.covered, a.shadowed, a.ties, a.terminator, a.terminatorLitByTechnique, a.disagree);
   return a;
 }
 

@@ -45,14 +45,7 @@ Tally traceAndCompare(const std::string& name, const std::string& sceneJson,
   for (size_t i = 0; i < scene.instances.size(); ++i)
     if (scene.instances[i].name == "ground") ground = static_cast<int>(i);
   EXPECT_GE(ground, 0);
-  h.renderer.setScene(scene);
-  Viewport vp(makeTechnique("standard"));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 96;
-  h.renderer.render(in, {&vp});
-  const test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
+  const test::Frame f = test::renderOnce(h, scene, "standard", {}, 160, 96);
   ReferenceTracer tracer(scene);
   const std::vector<float> reference = tracer.visibility(f.gbuffer(), ReferenceOptions{});
   const glm::dvec3 towardLight = -glm::dvec3(glm::normalize(scene.light.direction));

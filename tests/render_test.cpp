@@ -93,18 +93,7 @@ GroundCount compareGround(const Frame& f, const std::vector<glm::vec2>& poly, fl
   return c;
 }
 
-Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset, std::vector<std::string> sets, int w,
-                 int hgt, Viewport** keep = nullptr) {
-  h.renderer.setScene(scene);
-  Viewport vp(makeTechnique(preset, sets));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = w;
-  in.height = hgt;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return test::readFrame(h.renderer, vp, w, hgt);
-}
+using test::renderOnce;
 
 }  // namespace
 

@@ -37,10 +37,15 @@ std::vector<std::string> Viewport::availableViews() const {
   return v;
 }
 
-void Renderer::bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const {
+void Renderer::bindGBuffer(const Program& p, TextureUnits& units) const {
   units.bind(p, "u_gPosition", gPosition_->id());
   units.bind(p, "u_gNormal", gNormal_->id());
   units.bind(p, "u_gAlbedo", gAlbedo_->id());
+  units.bind(p, "u_gSurface", gSurface_->id());
+}
+
+void Renderer::bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const {
+  bindGBuffer(p, units);
   units.bind(p, "u_visibility", visibility->id());
 }
 
@@ -343,12 +348,7 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.drawFullscreen = [this] { drawFullscreen(); };
   part.techniquePrelude = prelude;
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
-  part.bindGBuffer = [this](const Program& p, TextureUnits& units) {
-    units.bind(p, "u_gPosition", gPosition_->id());
-    units.bind(p, "u_gNormal", gNormal_->id());
-    units.bind(p, "u_gAlbedo", gAlbedo_->id());
-    units.bind(p, "u_gSurface", gSurface_->id());
-  };
+  part.bindGBuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
   part.replaceLightSpace = [&vp](const LightSpace& ls) {
     vp.lightSpace = ls;
     vp.lightViews_->upload(vp.lightSpace);

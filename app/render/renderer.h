@@ -176,7 +176,8 @@ class Renderer {
   void drawFullscreen();
   void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev);
   std::string shadePrelude() const;  // defines of the deferred shade pass
-  // u_gPosition, u_gNormal, u_gAlbedo and a visibility (u_visibility).
+  // u_gPosition, u_gNormal, u_gAlbedo, u_gSurface; and with a visibility (u_visibility).
+  void bindGBuffer(const Program& p, TextureUnits& units) const;
   void bindGBuffer(const Program& p, TextureUnits& units, const Texture2D* visibility) const;
   void drawSky();
   // prev: the frame motion and reprojection are relative to (the viewport's own).
