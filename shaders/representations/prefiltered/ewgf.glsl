@@ -19,9 +19,9 @@ void representationMoments(float z, out vec4 m[SL_MOMENT_TARGETS]) {
 float representationFromMoments(vec4 m[SL_MOMENT_TARGETS], float receiverDepth) {
   float c = ewgfExponent();
   float w = warpDepth(receiverDepth, vec2(c)).x;
-  float mean = m[0].x;
+  float mean = storageMean(m[0].x);
   float slope = 2.0 * c * w;
-  float variance = max(m[0].y - mean * mean, u_ewgf_min_variance * slope * slope);
+  float variance = max(storageVariance(m[0].x, m[0].y), u_ewgf_min_variance * slope * slope);
   return gaussianVisibility(w, mean, variance);
 }
 // sigma^2 of the stored warped depths (the variance view: in warped units).

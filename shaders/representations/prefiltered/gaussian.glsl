@@ -6,8 +6,8 @@ uniform float u_gaussian_min_variance;
 void representationMoments(float z, out vec4 m[SL_MOMENT_TARGETS]) { m[0] = vec4(z, z * z, 0.0, 0.0); }
 
 float representationFromMoments(vec4 m[SL_MOMENT_TARGETS], float receiverDepth) {
-  float mean = m[0].x;
-  float variance = max(m[0].y - mean * mean, u_gaussian_min_variance);
+  float mean = storageMean(m[0].x);
+  float variance = max(storageVariance(m[0].x, m[0].y), u_gaussian_min_variance);
   return gaussianVisibility(receiverDepth, mean, variance);
 }
 // sigma^2 of the stored depths (the variance view).

@@ -34,6 +34,24 @@ float gaussianVisibility(float t, float mean, float variance) {
   return 0.5 * erfcApprox((t - mean) / (sigma * 1.41421356));
 }
 
+// What the storage format can tell apart (SL_MOMENT_FLOAT_BITS: 16 or 32). A stored moment m is
+// rounded to within half an ulp, a relative 2^-11 in float16 (2^-24 in float32), so the mean of
+// one planar occluder is off by up to that much, and m2 - m1^2 cancels to noise of about twice
+// the ulp of m2. A Gaussian reads both literally: a receiver on its own occluder (d = mean) is
+// half lit, and the noise variance makes a wide Gaussian out of a single depth. So a variance
+// within the noise counts as none, and the receiver is compared with the mean moved back by
+// its rounding error (a bias of exactly what the format cannot resolve).
+#if SL_MOMENT_FLOAT_BITS == 16
+const float kMomentRelativeUlp = 1.0 / 1024.0;
+#else
+const float kMomentRelativeUlp = 1.0 / 8388608.0;
+#endif
+float storageVariance(float m1, float m2) {
+  float variance = m2 - m1 * m1;
+  return variance > 2.0 * kMomentRelativeUlp * abs(m2) ? variance : 0.0;
+}
+float storageMean(float m1) { return m1 + 0.5 * kMomentRelativeUlp * abs(m1); }
+
 // Positive and negative exponential warps of depth rescaled to [-1,1] (EVSM, EWGF).
 vec2 warpDepth(float z, vec2 c) {
   float x = 2.0 * z - 1.0;
