@@ -22,6 +22,7 @@ const char* kUsage =
     "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
     "  shadowlab plot --scene S --techniques a,b --out F.svg    visibility vs receiver depth at a texel (plot --help)\n"
     "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
+    "  shadowlab figure --tour T --step N --out F.png           a lecture-tour step as a figure (figure --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
       if (cmd == "reference") return sl::runReferenceCommand(argc, argv);
       if (cmd == "bench") return sl::runBenchCommand(argc, argv);
       if (cmd == "plot") return sl::runPlotCommand(argc, argv);
+      if (cmd == "figure") return sl::runFigureCommand(argc, argv);
       if (cmd == "help" || cmd == "--help" || cmd == "-h") {
         std::cout << kUsage;
         return 0;
