@@ -16,6 +16,7 @@ const char* kUsage =
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
+    "  shadowlab --tour T.json [--tour-step N] [--presenter]    play a lecture tour (arrows/PageUp/PageDown, F5)\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
@@ -29,8 +30,8 @@ const char* kUsage =
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light"},
-                {"--magnifier", "--visibility-plot"});
+                 "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step"},
+                {"--magnifier", "--visibility-plot", "--presenter"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -44,6 +45,9 @@ int runExplorerCommand(int argc, char** argv) {
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
+  o.tour = args.get("--tour");  // its steps replace --scene, --technique and the views
+  o.tourStep = args.getInt("--tour-step", 1);
+  o.presenter = args.has("--presenter");
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
     const std::string v = args.get("--light");
