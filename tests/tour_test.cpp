@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 
 namespace sl {
 namespace {
@@ -138,6 +139,33 @@ TEST(TourParse, ShippedToursParseAndResolve) {
       EXPECT_FALSE(t.steps[i].caption.empty()) << f << " " << describeStep(t, i);
     }
   }
+}
+
+// Byte mutations of a shipped tour: whatever the damage, parsing ends in a TourError or a tour,
+// never another exception or a crash (a fuzzer calls parseTour the same way).
+TEST(TourParse, MutatedToursFailCleanly) {
+  std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/tours/pixel-correct.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(text.empty());
+  const std::string replacements = "{}[]\",:0-9.eE\\ ax";
+  uint32_t seed = 12345;
+  auto next = [&seed] { return seed = seed * 1664525u + 1013904223u; };
+  int parsed = 0, rejected = 0;
+  for (int i = 0; i < 400; ++i) {
+    std::string t = text;
+    for (int k = 0; k < 1 + i % 3; ++k) t[next() % t.size()] = replacements[next() % replacements.size()];
+    try {
+      parseTour(t, "mutated.json");
+      ++parsed;
+    } catch (const TourError& e) {
+      EXPECT_NE(std::string(e.what()).find("mutated.json"), std::string::npos) << e.what();
+      ++rejected;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "not a TourError: " << e.what();
+    }
+  }
+  EXPECT_GT(rejected, 100);
+  EXPECT_GT(parsed, 0);
 }
 
 // Every step of every shipped tour as a figure at 160x90 per panel (at most 3 frames): renders, no NaN, no GL or

@@ -40,6 +40,13 @@ PlotJob plotJob(const Tour& tour, size_t step, const std::string& svg, int w, in
   std::string list;
   for (const auto& t : s.plot.techniques) list += (list.empty() ? "" : ",") + t;
   if (!list.empty()) job.args.insert(job.args.end(), {"--techniques", list});
+  // Overrides every viewport shares (a filter width, say) hold for the plotted techniques too.
+  if (s.plot.kind == TourPlot::Kind::Visibility && !s.viewports.empty())
+    for (const auto& o : s.viewports.front().overrides)
+      if (std::all_of(s.viewports.begin(), s.viewports.end(), [&](const TourViewport& v) {
+            return std::find(v.overrides.begin(), v.overrides.end(), o) != v.overrides.end();
+          }))
+        job.args.insert(job.args.end(), {"--set", o});
   if (s.plot.pixel.x >= 0)
     job.args.insert(job.args.end(), {"--pixel", std::to_string(s.plot.pixel.x) + "," + std::to_string(s.plot.pixel.y)});
   return job;
