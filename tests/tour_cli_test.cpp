@@ -122,5 +122,51 @@ TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
   ImGui::DestroyContext();
 }
 
+// The keys a presenter uses, through ImGui's key state as the GLFW backend fills it.
+TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
+  test::GlHarness h;
+  ExplorerState state;
+  state.assetsDir = defaultAssetsDir();
+  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+  h.renderer.setScene(*state.scene);
+  const std::string tour = writeTour("keys.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
+    {"title": "b", "viewports": ["pcf"]}, {"title": "c", "viewports": ["vsm"]}]})");
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(320, 240);
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int w = 0, hgt = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &hgt);
+  TourPlayer player;
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
+  // One frame with the key down after one with it up: pressed once.
+  auto press = [&](int key) {
+    ImGui::NewFrame();
+    ImGui::EndFrame();
+    io.KeysDown[key] = true;
+    ImGui::NewFrame();
+    player.handleKeys(state, h.renderer);
+    ImGui::EndFrame();
+    io.KeysDown[key] = false;
+  };
+  press(267);  // GLFW_KEY_PAGE_DOWN
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_EQ(state.slots[0].viewport->technique.presetId, "pcf");
+  press(262);  // GLFW_KEY_RIGHT
+  EXPECT_EQ(player.step(), 2u);
+  press(262);  // already on the last step
+  EXPECT_EQ(player.step(), 2u);
+  press(266);  // GLFW_KEY_PAGE_UP
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_FALSE(player.presenter());
+  press(294);  // GLFW_KEY_F5
+  EXPECT_TRUE(player.presenter());
+  EXPECT_GT(io.FontGlobalScale, 1.5f);
+  press(294);
+  EXPECT_FALSE(player.presenter());
+  ImGui::DestroyContext();
+}
+
 }  // namespace
 }  // namespace sl

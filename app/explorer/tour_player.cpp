@@ -57,12 +57,15 @@ void addCaptionGlyphs() {
   }
 }
 
-// "1: n = z_n · 2: n_opt": the tour's panel names, which the tiles' headers do not show.
+// "1: n = z_n   2: n_opt": the tour's panel names and stand-ins, which the tiles' headers do not show.
 std::string viewportLabels(const TourStep& s) {
   std::string out;
-  for (size_t i = 0; i < s.viewports.size(); ++i)
-    if (!s.viewports[i].label.empty())
-      out += (out.empty() ? "" : "   ") + std::to_string(i + 1) + ": " + s.viewports[i].label;
+  for (size_t i = 0; i < s.viewports.size(); ++i) {
+    const TourViewport& v = s.viewports[i];
+    std::string name = v.label;
+    if (!findPreset(v.technique)) name = v.technique + " (not built yet: standard shown)";
+    if (!name.empty()) out += (out.empty() ? "" : "   ") + std::to_string(i + 1) + ": " + name;
+  }
   return out;
 }
 
