@@ -252,10 +252,9 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     const ImGuiIO& io = ImGui::GetIO();
     const float panelWidth = tour.presenter() ? 0.0f : std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
     const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
-    const MainAreaLayout layout =
-        layoutMainArea(ImVec2(panelWidth, 0),
-                       ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
-                       state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+    const MainAreaLayout layout = layoutMainArea(
+        ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
+        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
     advanceCameraAndTime(window, state, dt);
     // The visibility plot (hold V) reads the G-buffer under the mouse.
     const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
