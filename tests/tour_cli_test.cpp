@@ -101,7 +101,8 @@ TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
                                                    "lispsm", "psm"]},
     {"title": "b", "scene": "basic", "light": [90, 45], "camera": "top", "viewports": ["pixel-correct"]}]})");
   TourPlayer player;
-  ImGui::CreateContext();  // the player sets the font scale for presenter mode
+  ImGui::CreateContext();                // the player sets the font scale for presenter mode
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the source tree
   ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
   EXPECT_EQ(state.scene->name, "columns");
   EXPECT_EQ(state.viewportCount, 4);  // three viewports use the 2x2 layout
@@ -133,6 +134,7 @@ TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
     {"title": "b", "viewports": ["pcf"]}, {"title": "c", "viewports": ["vsm"]}]})");
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini in the source tree
   io.DisplaySize = ImVec2(320, 240);
   io.DeltaTime = 1.0f / 60.0f;
   unsigned char* pixels = nullptr;
