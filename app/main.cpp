@@ -16,20 +16,22 @@ const char* kUsage =
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
+    "  shadowlab --tour T.json [--tour-step N] [--presenter]    play a lecture tour (arrows/PageUp/PageDown, F5)\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
     "  shadowlab bench --scene S --techniques a,b --json F ...  time and error vs. the reference (bench --help)\n"
     "  shadowlab plot --scene S --techniques a,b --out F.svg    visibility vs receiver depth at a texel (plot --help)\n"
     "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
+    "  shadowlab figure --tour T --step N --out F.png           a lecture-tour step as a figure (figure --help)\n"
     "\n"
     "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
 
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light"},
-                {"--magnifier", "--visibility-plot"});
+                 "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step"},
+                {"--magnifier", "--visibility-plot", "--presenter"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -43,6 +45,9 @@ int runExplorerCommand(int argc, char** argv) {
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
+  o.tour = args.get("--tour");  // its steps replace --scene, --technique and the views
+  o.tourStep = args.getInt("--tour-step", 1);
+  o.presenter = args.has("--presenter");
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
     const std::string v = args.get("--light");
@@ -68,6 +73,7 @@ int main(int argc, char** argv) {
       if (cmd == "reference") return sl::runReferenceCommand(argc, argv);
       if (cmd == "bench") return sl::runBenchCommand(argc, argv);
       if (cmd == "plot") return sl::runPlotCommand(argc, argv);
+      if (cmd == "figure") return sl::runFigureCommand(argc, argv);
       if (cmd == "help" || cmd == "--help" || cmd == "-h") {
         std::cout << kUsage;
         return 0;

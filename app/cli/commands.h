@@ -6,5 +6,6 @@ int runListCommand(int argc, char** argv);
 int runReferenceCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
 int runPlotCommand(int argc, char** argv);
+int runFigureCommand(int argc, char** argv);    // tour steps as figures (tour/figure.h)
 int runPlotDpdsCommand(int argc, char** argv);  // `plot dpds`, dispatched by runPlotCommand
 }  // namespace sl

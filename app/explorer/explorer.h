@@ -25,6 +25,9 @@ struct ExplorerOptions {
   bool visibilityPlot = false;                 // visibility-vs-depth plot on without holding V
   bool setLight = false;                       // replace the scene's light direction by lightAngles
   glm::vec2 lightAngles{0.0f};                 // degrees: azimuth about +y from +z, elevation
+  std::string tour;                            // lecture tour to play (explorer/tour_player.h), or ""
+  int tourStep = 1;                            // its first step shown (1-based)
+  bool presenter = false;                      // start the tour in presenter mode
 };
 
 // Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the

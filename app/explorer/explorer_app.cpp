@@ -8,6 +8,7 @@
 #include "explorer/visibility_plot.h"
 #include "explorer/screenshot.h"
 #include "explorer/side_panel.h"
+#include "explorer/tour_player.h"
 #include "explorer/viewport_area.h"
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
@@ -202,6 +203,10 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   state.magnifierPinned = state.options.magnifier;
   state.plotPinned = state.options.visibilityPlot;
   state.cutPending = true;
+  TourPlayer tour;
+  if (!state.options.tour.empty() &&
+      !tour.start(state, renderer, state.options.tour, state.options.tourStep, state.options.presenter))
+    return 1;
 
   const int maxFrames = state.options.maxFrames;
   glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
@@ -239,16 +244,17 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    drawSidePanel(state, renderer, shaders);
+    tour.handleKeys(state, renderer);
+    if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
     ensureViewportSlots(state);
     applySelectedViews(state);
 
     const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
+    const float panelWidth = tour.presenter() ? 0.0f : std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
     const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
-    const MainAreaLayout layout =
-        layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
-                       state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+    const MainAreaLayout layout = layoutMainArea(
+        ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
+        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
     advanceCameraAndTime(window, state, dt);
     // The visibility plot (hold V) reads the G-buffer under the mouse.
     const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
@@ -260,6 +266,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     // replaced them).
     const MainAreaResult area = drawMainArea(layout, state);
     state.hoveredViewport = area.hoveredViewport;
+    tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
     const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
     if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
       drawMagnifier(area.hoveredImage, io.MousePos);

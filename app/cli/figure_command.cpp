@@ -1,0 +1,138 @@
+// `shadowlab figure`: renders tour steps headless as figures (tour/figure.h), one PNG per step,
+// plus an SVG beside it for a step with a plot (made by `shadowlab plot` on the step's scene).
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "gl/gl_util.h"
+#include "gl/headless_context.h"
+#include "gl/shader_library.h"
+#include "tour/figure.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kFigureUsage =
+    "usage: shadowlab figure --tour T.json (--step N --out F.png | --all --out DIR) [--size WxH]\n"
+    "  renders tour steps headless: every viewport and its debug views side by side (a row per\n"
+    "  frame count of the step), title and caption burnt in. N counts from 1; --size is one panel\n"
+    "  (default 480x270). --all writes DIR/step-01.png ...; a step with a plot also writes F.svg.\n";
+
+struct PlotJob {
+  std::vector<std::string> args;
+};
+
+// The `shadowlab plot` command line of a step's plot, writing `svg`.
+PlotJob plotJob(const Tour& tour, size_t step, const std::string& svg, int w, int h) {
+  const TourStep& s = tour.steps[step];
+  PlotJob job;
+  job.args = {"shadowlab", "plot"};
+  if (s.plot.kind == TourPlot::Kind::Dpds) job.args.push_back("dpds");
+  job.args.insert(job.args.end(), {"--scene", stepScenePath(tour, step), "--size",
+                                   std::to_string(w) + "x" + std::to_string(h), "--out", svg});
+  if (s.camera.kind == TourCamera::Kind::Scene && !s.camera.name.empty())
+    job.args.insert(job.args.end(), {"--camera", s.camera.name});
+  std::string list;
+  for (const auto& t : s.plot.techniques) list += (list.empty() ? "" : ",") + t;
+  if (!list.empty()) job.args.insert(job.args.end(), {"--techniques", list});
+  // Overrides every viewport shares (a filter width, say) hold for the plotted techniques too.
+  if (s.plot.kind == TourPlot::Kind::Visibility && !s.viewports.empty())
+    for (const auto& o : s.viewports.front().overrides)
+      if (std::all_of(s.viewports.begin(), s.viewports.end(), [&](const TourViewport& v) {
+            return std::find(v.overrides.begin(), v.overrides.end(), o) != v.overrides.end();
+          }))
+        job.args.insert(job.args.end(), {"--set", o});
+  if (s.plot.pixel.x >= 0)
+    job.args.insert(job.args.end(), {"--pixel", std::to_string(s.plot.pixel.x) + "," + std::to_string(s.plot.pixel.y)});
+  return job;
+}
+
+int runPlot(PlotJob& job) {
+  std::vector<char*> argv;
+  for (auto& a : job.args) argv.push_back(a.data());
+  return runPlotCommand(static_cast<int>(argv.size()), argv.data());
+}
+
+}  // namespace
+
+int runFigureCommand(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--help") {
+      std::cout << kFigureUsage;
+      return 0;
+    }
+  try {
+    Args args(argc, argv, 2, {"--tour", "--step", "--out", "--size", "--shaders"}, {"--all"});
+    if (!args.has("--tour")) throw ArgError("--tour T.json is required");
+    if (!args.has("--out")) throw ArgError("--out is required");
+    if (args.has("--all") == args.has("--step")) throw ArgError("give either --step N or --all");
+    FigureOptions options;
+    args.getSize("--size", options.panelWidth, options.panelHeight);
+    const Tour tour = loadTour(args.get("--tour"));
+    std::vector<std::pair<size_t, std::string>> jobs;  // step, PNG path
+    if (args.has("--all")) {
+      fs::create_directories(args.get("--out"));
+      for (size_t i = 0; i < tour.steps.size(); ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "step-%02zu.png", i + 1);
+        jobs.emplace_back(i, (fs::path(args.get("--out")) / name).string());
+      }
+    } else {
+      const int n = args.getInt("--step", 0);
+      if (n < 1 || n > static_cast<int>(tour.steps.size()))
+        throw ArgError("--step " + args.get("--step") + ": " + tour.file + " has steps 1 to " +
+                       std::to_string(tour.steps.size()));
+      jobs.emplace_back(size_t(n - 1), args.get("--out"));
+    }
+
+    std::vector<PlotJob> plots;
+    long long nonfinite = 0;
+    std::vector<std::string> errors;
+    {
+      HeadlessContext context;
+      enableGlDebugOutput(true);
+      ShaderLibrary shaders(args.get("--shaders", defaultShaderDir()));
+      for (const auto& [step, png] : jobs) {
+        const FigureResult r = renderTourFigure(tour, step, shaders, options);
+        writePng(png, r.image.width, r.image.height, [&] {
+          // writePng takes GL's bottom-up rows.
+          std::vector<unsigned char> flipped(r.image.pixels.size());
+          const size_t row = size_t(r.image.width) * 4;
+          for (int y = 0; y < r.image.height; ++y)
+            std::copy_n(&r.image.pixels[size_t(r.image.height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+          return flipped;
+        }());
+        nonfinite += r.nonfinitePixels;
+        std::cout << "figure: " << png << " (" << describeStep(tour, step) << ", " << r.panels << " panels"
+                  << (tour.steps[step].built() ? "" : ", not built yet") << ")\n";
+        if (tour.steps[step].plot.kind != TourPlot::Kind::None)
+          plots.push_back(plotJob(tour, step, fs::path(png).replace_extension(".svg").string(), options.panelWidth,
+                                  options.panelHeight));
+      }
+      errors = shaders.errors();
+    }
+    for (const auto& e : errors) std::cerr << e;
+    // After the figures' context is gone: `plot` opens its own.
+    for (auto& p : plots)
+      if (int rc = runPlot(p); rc != 0) return rc;
+    if (!errors.empty()) return 3;
+    if (nonfinite > 0) {
+      std::cerr << "figure: " << nonfinite << " non-finite visibility pixels\n";
+      return 4;
+    }
+    return 0;
+  } catch (const ArgError& e) {
+    std::cerr << "figure: " << e.what() << "\n" << kFigureUsage;
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "figure: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace sl

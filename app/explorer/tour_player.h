@@ -1,0 +1,44 @@
+// Lecture tours in the explorer (--tour T.json, docs/tour-format.md): each step sets the scene,
+// camera, light, viewports and debug views; Right/Down/PageDown go to the next step and
+// Left/Up/PageUp to the previous one (presenter clickers send PageUp/PageDown), F5 toggles
+// presenter mode (no side panel, large text, viewports filling the window). The caption sits in
+// a strip under the viewports.
+#pragma once
+
+#include "explorer/explorer_state.h"
+#include "tour/tour.h"
+
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+
+namespace sl {
+
+class Renderer;
+
+class TourPlayer {
+ public:
+  // Loads the tour and shows step `firstStep` (1-based); false after printing why not.
+  bool start(ExplorerState& state, Renderer& renderer, const std::string& path, int firstStep, bool presenter);
+  bool active() const { return tour_.has_value(); }
+  bool presenter() const { return active() && presenter_; }
+  size_t step() const { return step_; }
+  // Keys (ignored while a text field has the keyboard); call before the panels are drawn.
+  void handleKeys(ExplorerState& state, Renderer& renderer);
+  // Height the caption strip takes from the bottom of the main area (0 without a tour).
+  float captionHeight() const;
+  // The caption strip (title, caption, step buttons) over the bottom `captionHeight()` of the area.
+  void drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize);
+  // Shows step `index` (0-based); a step that fails to apply keeps the window with its message.
+  void show(ExplorerState& state, Renderer& renderer, size_t index);
+
+ private:
+  void setPresenter(bool on);
+  std::optional<Tour> tour_;
+  size_t step_ = 0;
+  bool presenter_ = false;
+  std::string error_;  // why the current step could not be shown
+};
+
+}  // namespace sl

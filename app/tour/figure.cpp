@@ -1,0 +1,167 @@
+// renderTourFigure (see figure.h): the step is rendered with the renderer `shadowlab render`
+// uses, with a still camera, and each captured frame's images are copied into one CPU image.
+#include "tour/figure.h"
+
+#include "explorer/explorer_state.h"
+#include "gl/shader_library.h"
+#include "render/colour_key.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace sl {
+namespace {
+
+const glm::vec3 kBackground{0.09f, 0.09f, 0.1f};
+const glm::vec3 kText{0.92f, 0.92f, 0.9f};
+const glm::vec3 kDimText{0.7f, 0.72f, 0.75f};
+constexpr int kKeyBar = 10;  // colour-key bar height
+
+struct Panel {
+  size_t viewport = 0;
+  std::string view;  // "" = the colour image
+  bool placeholder = false;
+  std::string title;
+};
+
+struct FigureLayout {
+  int margin = 12, panelW = 0, panelH = 0, cellW = 0, cellH = 0, headerH = 0, gridTop = 0, keyH = 0;
+  int cols = 0, rows = 0, width = 0, height = 0;
+  std::vector<std::string> captionLines;
+};
+
+std::vector<Panel> panelsOf(const TourStep& s) {
+  std::vector<Panel> panels;
+  for (size_t v = 0; v < s.viewports.size(); ++v) {
+    const TourViewport& vp = s.viewports[v];
+    const std::string name = vp.label.empty() ? vp.technique : vp.label;
+    if (!findPreset(vp.technique)) {
+      panels.push_back({v, "", true, name + " (not built yet)"});
+      continue;
+    }
+    panels.push_back({v, "", false, name});
+    for (const auto& view : vp.views) panels.push_back({v, view, false, name + " \xC2\xB7 " + view});
+  }
+  return panels;
+}
+
+FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const FigureFonts& fonts,
+                    const FigureOptions& o) {
+  FigureLayout l;
+  l.panelW = o.panelWidth, l.panelH = o.panelHeight;
+  l.cols = static_cast<int>(panels.size());
+  l.rows = static_cast<int>(s.frames.size());
+  const bool anyKey = std::any_of(panels.begin(), panels.end(),
+                                  [](const Panel& p) { return !p.view.empty() && viewColourKey(p.view).valid(); });
+  const int body = fonts.lineHeight(FigureFonts::Style::Body);
+  l.keyH = anyKey ? 4 + kKeyBar + body : 0;
+  l.cellW = l.panelW + l.margin;
+  l.cellH = body + l.panelH + l.keyH + l.margin;
+  l.width = l.margin + l.cols * l.cellW;
+  l.headerH = l.margin + fonts.lineHeight(FigureFonts::Style::Title);
+  l.gridTop = l.headerH + l.margin / 2;
+  l.captionLines = fonts.wrap(s.shownCaption(), l.width - 2 * l.margin, FigureFonts::Style::Body);
+  l.height = l.gridTop + l.rows * l.cellH + static_cast<int>(l.captionLines.size()) * body + l.margin;
+  return l;
+}
+
+void drawColourKey(RgbaImage& img, const FigureFonts& fonts, const ColourKey& key, int x, int y, int w) {
+  for (int i = 0; i < w; ++i) img.fillRect(x + i, y, 1, kKeyBar, key.sample(w > 1 ? float(i) / float(w - 1) : 0.0f));
+  const int ty = y + kKeyBar + 2;
+  for (const auto& [at, text] : key.labels) {
+    const int tw = fonts.width(text, FigureFonts::Style::Body);
+    const int tx = std::clamp(x + static_cast<int>(at * float(w)) - tw / 2, x, x + w - tw);
+    fonts.draw(img, tx, ty, text, FigureFonts::Style::Body, kDimText);
+  }
+}
+
+std::string frameSuffix(const TourStep& s, int frames) {
+  if (s.frames.size() == 1 && frames == 1) return "";
+  return " \xC2\xB7 " + std::to_string(frames) + (frames == 1 ? " frame" : " frames");
+}
+
+// Copies one capture (a row) of every panel from the viewports' textures.
+void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fonts, const TourStep& s,
+                const std::vector<Panel>& panels, const std::vector<std::unique_ptr<Viewport>>& vps, int row,
+                int frames) {
+  const int body = fonts.lineHeight(FigureFonts::Style::Body);
+  for (size_t c = 0; c < panels.size(); ++c) {
+    const Panel& p = panels[c];
+    const int x = l.margin + static_cast<int>(c) * l.cellW, y = l.gridTop + row * l.cellH;
+    fonts.draw(out.image, x, y, p.title + frameSuffix(s, frames), FigureFonts::Style::Body, kText);
+    const int iy = y + body;
+    if (p.placeholder) {
+      out.image.fillRect(x, iy, l.panelW, l.panelH, {0.18f, 0.18f, 0.2f});
+      fonts.draw(out.image, x + 8, iy + l.panelH / 2 - body / 2, "not built yet", FigureFonts::Style::Body, kDimText);
+      continue;
+    }
+    const Viewport& vp = *vps[p.viewport];
+    const Texture2D* tex = p.view.empty() ? vp.colorTexture() : vp.viewTexture(p.view);
+    if (!tex) throw std::runtime_error("view '" + p.view + "' was not drawn");
+    out.image.blitBottomUp(tex->readRgba8(), l.panelW, l.panelH, x, iy);
+    ++out.panels;
+    if (!p.view.empty()) {
+      const ColourKey key = viewColourKey(p.view);
+      if (key.valid()) drawColourKey(out.image, fonts, key, x, iy + l.panelH + 4, l.panelW);
+    }
+  }
+  for (const auto& vp : vps) {
+    if (!vp) continue;
+    const std::vector<float> vis = vp->visibilityTexture()->readFloats(2);
+    for (size_t i = 0; i < vis.size(); i += 2) out.nonfinitePixels += std::isfinite(vis[i]) ? 0 : 1;
+  }
+}
+
+}  // namespace
+
+FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shaders, const FigureOptions& o) {
+  const TourStep& s = tour.steps.at(step);
+  Scene scene = loadStepScene(tour, step, o.assetsDir.empty() ? defaultAssetsDir() : o.assetsDir);
+  if (s.setLight) scene.light.direction = directionFromLightAngles(s.lightAngles.x, s.lightAngles.y);
+  const Camera camera = stepCamera(tour, step, scene);
+
+  const float bodyPx = std::clamp(o.panelHeight / 16.0f, 11.0f, 20.0f);
+  FigureFonts fonts(bodyPx, bodyPx * 1.4f);
+  const std::vector<Panel> panels = panelsOf(s);
+  const FigureLayout l = layOut(s, panels, fonts, o);
+  FigureResult out;
+  out.image = RgbaImage(l.width, l.height, kBackground);
+  fonts.draw(out.image, l.margin, l.margin / 2, s.title, FigureFonts::Style::Title, kText);
+
+  std::vector<std::unique_ptr<Viewport>> vps(s.viewports.size());
+  std::vector<Viewport*> shown;
+  for (size_t v = 0; v < s.viewports.size(); ++v) {
+    if (!findPreset(s.viewports[v].technique)) continue;
+    vps[v] = std::make_unique<Viewport>(makeTechnique(s.viewports[v].technique, s.viewports[v].overrides));
+    vps[v]->shownViews = s.viewports[v].views;
+    shown.push_back(vps[v].get());
+  }
+  if (!shown.empty()) {
+    Renderer renderer(shaders);
+    renderer.setScene(scene);
+    size_t row = 0;
+    for (int f = 1; f <= s.frames.back(); ++f) {
+      FrameInput in;
+      in.camera = camera;
+      in.width = l.panelW;
+      in.height = l.panelH;
+      in.cut = f == 1;
+      renderer.render(in, shown);
+      if (f == s.frames[row]) captureRow(out, l, fonts, s, panels, vps, static_cast<int>(row++), f);
+    }
+  } else {
+    for (size_t row = 0; row < s.frames.size(); ++row)
+      captureRow(out, l, fonts, s, panels, vps, static_cast<int>(row), s.frames[row]);
+  }
+  const int body = fonts.lineHeight(FigureFonts::Style::Body);
+  int y = l.gridTop + l.rows * l.cellH;
+  for (const auto& line : l.captionLines) {
+    fonts.draw(out.image, l.margin, y, line, FigureFonts::Style::Body, kText);
+    y += body;
+  }
+  return out;
+}
+
+}  // namespace sl

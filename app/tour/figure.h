@@ -1,0 +1,30 @@
+// Headless figures of tour steps: each viewport's colour image and its debug views side by side
+// (a row per captured frame count), the step's title and caption and each panel's title burnt
+// in, a colour key under heat-map views; no UI chrome. Needs a current GL context (HeadlessContext).
+#pragma once
+
+#include "tour/figure_image.h"
+#include "tour/tour.h"
+
+#include <string>
+
+namespace sl {
+
+class ShaderLibrary;
+
+struct FigureOptions {
+  int panelWidth = 480, panelHeight = 270;  // each rendered image
+  std::string assetsDir;                    // "" = defaultAssetsDir()
+};
+
+struct FigureResult {
+  RgbaImage image;
+  long long nonfinitePixels = 0;  // visibility pixels that were NaN/Inf, over every capture
+  int panels = 0;                 // rendered images in the figure (placeholders not counted)
+};
+
+// Renders step `step` (0-based) of `tour`. A step that is not built yet gets placeholder panels
+// for the missing techniques. Throws TourError (bad scene/camera) or std::runtime_error.
+FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shaders, const FigureOptions& options);
+
+}  // namespace sl

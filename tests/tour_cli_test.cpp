@@ -1,0 +1,174 @@
+// `shadowlab figure` as a user meets it, and the explorer's tour player applying steps to the
+// window's state (no window needed: the player drives the same state the panels do).
+#include "explorer/explorer_state.h"
+#include "explorer/tour_player.h"
+#include "gl_test_util.h"
+#include "sanitizer_report.h"
+
+#include <stb_image.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace sl {
+namespace {
+
+struct RunResult {
+  int code = -1;
+  std::string output;
+};
+
+RunResult run(const std::string& args) {
+  const std::string cmd = std::string(SHADOWLAB_BINARY) + " " + args + " 2>&1";
+  RunResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  test::expectNoSanitizerReport(r.output, args);
+  return r;
+}
+
+std::string writeTour(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kTwoSteps = R"({"title": "t", "steps": [
+  {"title": "one", "caption": "first", "scene": "basic",
+   "viewports": [{"technique": "standard", "views": ["aliasing"]}, "pcf"]},
+  {"title": "two", "caption": "second", "scene": "columns", "requires": ["alias-free"],
+   "viewports": ["alias-free", "lispsm"], "plot": {"kind": "dpds", "techniques": ["uniform", "lispsm"]}}
+]})";
+
+TEST(FigureCli, StepWritesAPngOfAllPanels) {
+  const std::string tour = writeTour("figure_two.json", kTwoSteps);
+  const std::string png = ::testing::TempDir() + "figure_step1.png";
+  std::filesystem::remove(png);
+  const RunResult r = run("figure --tour " + tour + " --step 1 --size 96x64 --out " + png);
+  ASSERT_EQ(r.code, 0) << r.output;
+  int w = 0, h = 0, n = 0;
+  ASSERT_TRUE(stbi_info(png.c_str(), &w, &h, &n)) << png;
+  EXPECT_GE(w, 3 * 96);  // colour + aliasing of viewport 1, colour of viewport 2
+  EXPECT_GE(h, 64);
+  EXPECT_NE(r.output.find("3 panels"), std::string::npos) << r.output;
+}
+
+TEST(FigureCli, AllWritesEveryStepAndThePlot) {
+  const std::string tour = writeTour("figure_all.json", kTwoSteps);
+  const std::string dir = ::testing::TempDir() + "figure_all";
+  std::filesystem::remove_all(dir);
+  const RunResult r = run("figure --tour " + tour + " --all --size 80x48 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/step-01.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/step-02.png"));
+  EXPECT_NE(r.output.find("not built yet"), std::string::npos) << r.output;
+  std::ifstream svg(dir + "/step-02.svg");
+  ASSERT_TRUE(svg.good()) << "no plot written";
+  const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("lispsm"), std::string::npos);
+}
+
+TEST(FigureCli, BadInputIsAClearError) {
+  const std::string tour = writeTour("figure_bad.json", kTwoSteps);
+  RunResult r = run("figure --tour " + tour + " --step 3 --out /tmp/never.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("has steps 1 to 2"), std::string::npos) << r.output;
+  const std::string broken = writeTour("figure_broken.json", R"({"steps": [{"title": "x", "viewports": ["nope"]}]})");
+  r = run("figure --tour " + broken + " --step 1 --out /tmp/never.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("figure_broken.json: steps[0] (\"x\").viewports[0].technique"), std::string::npos)
+      << r.output;
+  r = run("figure --tour " + tour + " --out /tmp/never.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("--step N or --all"), std::string::npos) << r.output;
+}
+
+TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
+  test::GlHarness h;
+  ExplorerState state;
+  state.assetsDir = defaultAssetsDir();
+  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+  h.renderer.setScene(*state.scene);
+  const std::string tour = writeTour("player.json", R"({"steps": [
+    {"title": "a", "scene": "columns", "viewports": [{"technique": "pcf", "set": ["pcf.kernel=5"], "views": ["texels"]},
+                                                   "lispsm", "psm"]},
+    {"title": "b", "scene": "basic", "light": [90, 45], "camera": "top", "viewports": ["pixel-correct"]}]})");
+  TourPlayer player;
+  ImGui::CreateContext();                // the player sets the font scale for presenter mode
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the source tree
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
+  EXPECT_EQ(state.scene->name, "columns");
+  EXPECT_EQ(state.viewportCount, 4);  // three viewports use the 2x2 layout
+  EXPECT_EQ(state.slots[0].viewport->technique.presetId, "pcf");
+  EXPECT_EQ(state.slots[0].viewport->technique.params.i("pcf.kernel"), 5);
+  EXPECT_EQ(state.slots[2].viewport->technique.presetId, "psm");
+  EXPECT_EQ(state.selectedViews, std::set<std::string>{"texels"});
+  player.show(state, h.renderer, 1);
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_EQ(state.scene->name, "basic");
+  EXPECT_EQ(state.viewportCount, 1);
+  EXPECT_EQ(state.cameraName, "top");
+  EXPECT_TRUE(state.selectedViews.empty());
+  const glm::vec3 expected = directionFromLightAngles(90, 45);
+  EXPECT_LT(glm::length(state.scene->light.direction - expected), 1e-4f);
+  player.show(state, h.renderer, 5);  // past the end: stays on the last step
+  EXPECT_EQ(player.step(), 1u);
+  ImGui::DestroyContext();
+}
+
+// The keys a presenter uses, through ImGui's key state as the GLFW backend fills it.
+TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
+  test::GlHarness h;
+  ExplorerState state;
+  state.assetsDir = defaultAssetsDir();
+  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+  h.renderer.setScene(*state.scene);
+  const std::string tour = writeTour("keys.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
+    {"title": "b", "viewports": ["pcf"]}, {"title": "c", "viewports": ["vsm"]}]})");
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini in the source tree
+  io.DisplaySize = ImVec2(320, 240);
+  io.DeltaTime = 1.0f / 60.0f;
+  unsigned char* pixels = nullptr;
+  int w = 0, hgt = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &hgt);
+  TourPlayer player;
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
+  // One frame with the key down after one with it up: pressed once.
+  auto press = [&](int key) {
+    ImGui::NewFrame();
+    ImGui::EndFrame();
+    io.KeysDown[key] = true;
+    ImGui::NewFrame();
+    player.handleKeys(state, h.renderer);
+    ImGui::EndFrame();
+    io.KeysDown[key] = false;
+  };
+  press(267);  // GLFW_KEY_PAGE_DOWN
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_EQ(state.slots[0].viewport->technique.presetId, "pcf");
+  press(262);  // GLFW_KEY_RIGHT
+  EXPECT_EQ(player.step(), 2u);
+  press(262);  // already on the last step
+  EXPECT_EQ(player.step(), 2u);
+  press(266);  // GLFW_KEY_PAGE_UP
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_FALSE(player.presenter());
+  press(294);  // GLFW_KEY_F5
+  EXPECT_TRUE(player.presenter());
+  EXPECT_GT(io.FontGlobalScale, 1.5f);
+  press(294);
+  EXPECT_FALSE(player.presenter());
+  ImGui::DestroyContext();
+}
+
+}  // namespace
+}  // namespace sl
