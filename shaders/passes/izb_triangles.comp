@@ -1,13 +1,22 @@
-// Irregular z-buffer, pass 4: one invocation per caster triangle. It walks the grid cells of
-// its light-space bounds (widened by a hundredth of a cell against the rounding of the
-// projection: the test below is exact, the cells only have to hold every candidate) and tests
-// each listed sample against the triangle itself: the ray from the sample's start toward the
-// light hits the triangle between the height tolerance and the light (Moller-Trumbore, as a ray
-// tracer would), and an alpha-masked triangle only where its texture at the hit is opaque
-// (nearest texel, repeat: the reference's filter). A hit sets the sample's bit (atomicOr).
+// Irregular z-buffer, pass 4: caster triangles against the listed samples. A triangle covers
+// the grid cells of its light-space bounds that its edges (widened by a hundredth of a cell
+// against the rounding of the projection: the test below is exact, the cells only have to hold
+// every candidate) do not exclude. Each listed sample of those cells is tested against the
+// triangle itself: the ray from the sample's start toward the light hits it between the height
+// tolerance and the light (Moller-Trumbore, as a ray tracer would), and an alpha-masked triangle
+// only where its texture at the hit is opaque (nearest texel, repeat: the reference's filter).
+// A hit sets the sample's bit (atomicOr).
+// IZB_STEP 1: one invocation per triangle; bounds of more than kChunk cells are queued in
+// chunks of kChunk cells (a large triangle would otherwise keep one invocation busy for the
+// whole frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one
+// invocation per queued chunk.
 layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
 uniform int u_izbTriangles;
+uniform int u_izbQueueCapacity;
+layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, chunk
+layout(std430, binding = 14) buffer IzbDispatch { uint dispatchArgs[3]; };
+const uint kChunk = 64u;
 
 float alphaAt(Material m, Triangle t, float u, float v) {
   float alpha = m.alpha.y;
@@ -42,38 +51,111 @@ bool hits(Sample s, vec3 a, vec3 e1, vec3 e2, out float u, out float v) {
   return t > s.origin.w && t < s.direction.w;
 }
 
+// What one triangle needs while it walks its cells.
+struct Caster {
+  uint id;
+  Triangle t;
+  Material m;
+  bool masked;
+  ivec2 lo, hi;    // cell bounds
+  bool edges;      // the edge test below applies (projection known and not degenerate)
+  vec3 edge[3];    // inward edge lines in grid units: dot(xy, 1) >= -margin inside
+};
+
+bool setup(uint id, out Caster c) {
+  c.id = id;
+  c.t = triangles[id];
+  c.m = materials[floatBitsToUint(c.t.c.w)];
+  c.masked = c.m.texture.w != 0u;
+  c.lo = ivec2(0);
+  c.hi = ivec2(u_izbGrid - 1);
+  c.edges = false;
+  // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
+  if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
+  vec2 g[3];
+  // Behind a perspective light's plane the projection wraps around: walk the whole grid.
+  if (!(izbGridPos(c.t.a.xyz, g[0]) && izbGridPos(c.t.b.xyz, g[1]) && izbGridPos(c.t.c.xyz, g[2]))) return true;
+  c.lo = izbCell(min(g[0], min(g[1], g[2])) - 0.01);
+  c.hi = izbCell(max(g[0], max(g[1], g[2])) + 0.01);
+  vec2 e1 = g[1] - g[0], e2 = g[2] - g[0];
+  float area = e1.x * e2.y - e1.y * e2.x;
+  c.edges = area != 0.0 && !isinf(area);
+  float side = area > 0.0 ? 1.0 : -1.0;
+  for (int k = 0; k < 3; ++k) {
+    vec2 p = g[k], q = g[(k + 1) % 3];
+    vec2 n = side * vec2(p.y - q.y, q.x - p.x);  // inward normal (unnormalized)
+    // Inside (widened): dot(n, x - p) >= -0.01 * |n|.
+    c.edge[k] = vec3(n, -dot(n, p) + 0.01 * length(n));
+  }
+  return true;
+}
+
+// The cell [x, x+1] x [y, y+1] meets the widened triangle: for each edge, its most inward corner.
+bool cellTouches(Caster c, ivec2 cell) {
+  if (!c.edges) return true;
+  for (int k = 0; k < 3; ++k) {
+    vec3 e = c.edge[k];
+    vec2 corner = vec2(cell) + vec2(e.x > 0.0 ? 1.0 : 0.0, e.y > 0.0 ? 1.0 : 0.0);
+    if (dot(e.xy, corner) + e.z < 0.0) return false;
+  }
+  return true;
+}
+
+void testCell(Caster c, ivec2 cellPos) {
+  if (!cellTouches(c, cellPos)) return;
+  uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
+  uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
+  vec3 a = c.t.a.xyz, e1 = c.t.b.xyz - a, e2 = c.t.c.xyz - a;
+  for (uint k = begin; k < end; ++k) {
+    uint pixel = list[k];
+    uint bit = 1u << (pixel & 31u);
+    if ((shadowBits[pixel >> 5] & bit) != 0u) continue;  // already occluded
+    Sample s = samples[pixel];
+    if (s.triangle == c.id) continue;  // its own triangle never shadows it
+    float u, v;
+    if (!hits(s, a, e1, e2, u, v)) continue;
+    if (c.masked && alphaAt(c.m, c.t, u, v) < c.m.alpha.x) continue;
+    atomicOr(shadowBits[pixel >> 5], bit);
+  }
+}
+
+// Cells [first, last) of the caster's bounds, row by row.
+void testCells(Caster c, uint first, uint last) {
+  uint w = uint(c.hi.x - c.lo.x + 1);
+  for (uint i = first; i < last; ++i) testCell(c, c.lo + ivec2(int(i % w), int(i / w)));
+}
+
 void main() {
+#if IZB_STEP == 2
+  dispatchArgs[0] = (min(counters[2], uint(u_izbQueueCapacity)) + 63u) / 64u;
+  dispatchArgs[1] = 1u;
+  dispatchArgs[2] = 1u;
+#elif IZB_STEP == 3
+  uint item = gl_GlobalInvocationID.x;
+  if (item >= min(counters[2], uint(u_izbQueueCapacity))) return;
+  // Slots a triangle reserved past a full queue hold older entries: testing them again is
+  // harmless (the test is exact and only sets bits), reading past the triangles is not.
+  if (queue[item].x >= uint(u_izbTriangles)) return;
+  Caster c;
+  setup(queue[item].x, c);
+  uint cells = uint(c.hi.x - c.lo.x + 1) * uint(c.hi.y - c.lo.y + 1);
+  uint first = queue[item].y * kChunk;
+  testCells(c, first, min(first + kChunk, cells));
+#else
   uint id = gl_GlobalInvocationID.x;
   if (id >= uint(u_izbTriangles)) return;
-  Triangle t = triangles[id];
-  Material m = materials[floatBitsToUint(t.c.w)];
-  // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
-  bool masked = m.texture.w != 0u;
-  if (masked && m.texture.y == 0u && m.alpha.y < m.alpha.x) return;
-  vec2 g0, g1, g2;
-  ivec2 lo = ivec2(0), hi = ivec2(u_izbGrid - 1);
-  // Behind a perspective light's plane the projection wraps around: walk the whole grid.
-  if (izbGridPos(t.a.xyz, g0) && izbGridPos(t.b.xyz, g1) && izbGridPos(t.c.xyz, g2)) {
-    vec2 mn = min(g0, min(g1, g2)) - 0.01, mx = max(g0, max(g1, g2)) + 0.01;
-    lo = izbCell(mn);
-    hi = izbCell(mx);
-  }
-  vec3 a = t.a.xyz, e1 = t.b.xyz - a, e2 = t.c.xyz - a;
-  for (int y = lo.y; y <= hi.y; ++y) {
-    for (int x = lo.x; x <= hi.x; ++x) {
-      uint cell = uint(y * u_izbGrid + x);
-      uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
-      for (uint k = begin; k < end; ++k) {
-        uint pixel = list[k];
-        uint bit = 1u << (pixel & 31u);
-        if ((shadowBits[pixel >> 5] & bit) != 0u) continue;  // already occluded
-        Sample s = samples[pixel];
-        if (s.triangle == id) continue;  // its own triangle never shadows it
-        float u, v;
-        if (!hits(s, a, e1, e2, u, v)) continue;
-        if (masked && alphaAt(m, t, u, v) < m.alpha.x) continue;
-        atomicOr(shadowBits[pixel >> 5], bit);
-      }
+  Caster c;
+  if (!setup(id, c)) return;
+  uint cells = uint(c.hi.x - c.lo.x + 1) * uint(c.hi.y - c.lo.y + 1);
+  uint chunks = (cells + kChunk - 1u) / kChunk;
+  if (chunks > 1u) {
+    uint slot = atomicAdd(counters[2], chunks);
+    // A full queue is not an error: the triangle then walks its cells here, only slower.
+    if (slot + chunks <= uint(u_izbQueueCapacity)) {
+      for (uint k = 0u; k < chunks; ++k) queue[slot + k] = uvec2(id, k);
+      return;
     }
   }
+  testCells(c, 0u, cells);
+#endif
 }

@@ -25,8 +25,12 @@ enum : GLuint {
   kBindList,
   kBindBits,
   kBindFallback,
-  kBindCounters
+  kBindCounters,
+  kBindQueue,
+  kBindDispatch
 };
+
+constexpr long long kQueueCapacity = 1 << 20;  // chunks of 64 cells of large triangles
 
 constexpr long long kSampleBytes = 48;  // Sample in izb_common.glsl
 
@@ -49,7 +53,8 @@ GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1)
 IzbState::IzbState() : DepthMapState(false) {}
 
 IzbState::~IzbState() {
-  for (GLuint b : {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_})
+  for (GLuint b :
+       {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_, queue_, dispatch_})
     if (b) glDeleteBuffers(1, &b);
 }
 
@@ -69,6 +74,8 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
     if (!counters_) resize(counters_, 16, "izb counters");
+    if (!queue_) resize(queue_, kQueueCapacity * 8, "izb large-triangle queue");
+    if (!dispatch_) resize(dispatch_, 16, "izb queue dispatch");
   }
   if (capacity != capacity_) {
     capacity_ = capacity;
@@ -130,7 +137,9 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
                                  {kBindList, list_},
                                  {kBindBits, bits_},
                                  {kBindFallback, fallback_},
-                                 {kBindCounters, counters_}})
+                                 {kBindCounters, counters_},
+                                 {kBindQueue, queue_},
+                                 {kBindDispatch, dispatch_}})
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
 }
 
@@ -183,13 +192,25 @@ void IzbState::runLists(const PartContext& ctx) {
 // technique's module reads while shading.
 void IzbState::runTriangles(const PartContext& ctx) {
   if (error_.empty() && scene_.triangleCount > 0) {
-    ProgramSpec spec{"izb triangles", {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}}, ""};
-    Program& p = ctx.shaders->get(spec);
-    if (!p.valid()) return;
-    p.use();
-    setCommon(p, ctx);
-    p.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
-    glDispatchCompute(groups(scene_.triangleCount, 64), 1, 1);
+    for (int step = 1; step <= 3; ++step) {
+      ProgramSpec spec{"izb triangles " + std::to_string(step),
+                       {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}},
+                       "#define IZB_STEP " + std::to_string(step) + "\n"};
+      Program& p = ctx.shaders->get(spec);
+      if (!p.valid()) return;
+      p.use();
+      setCommon(p, ctx);
+      p.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
+      p.set("u_izbQueueCapacity", static_cast<int>(kQueueCapacity));
+      if (step == 1) glDispatchCompute(groups(scene_.triangleCount, 64), 1, 1);
+      if (step == 2) glDispatchCompute(1, 1, 1);
+      if (step == 3) {
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_);
+        glDispatchComputeIndirect(0);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+      }
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    }
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -243,7 +264,7 @@ long long IzbState::texels() const {
   const long long pixels = static_cast<long long>(width_) * height_;
   const long long cells = static_cast<long long>(grid_) * grid_;
   const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * (1 + kSampleBytes / 4) + capacity_ +
-                          2 * ((pixels + 31) / 32) + scene_.bytes / 4;
+                          2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
   return DepthMapState::texels() + words;
 }
 

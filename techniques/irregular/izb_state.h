@@ -49,9 +49,10 @@ class IzbState : public DepthMapState {
 
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], samples[pixels],
-  // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters[2]
+  // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters (overflowed,
+  // listed, queued chunks), the queue of large triangles' chunks and its indirect dispatch
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
-         counters_ = 0;
+         counters_ = 0, queue_ = 0, dispatch_ = 0;
   int width_ = 0, height_ = 0, grid_ = 0;
   long long capacity_ = 0;
   int gridParam_ = 512;
