@@ -1,22 +1,22 @@
 // Irregular z-buffer, pass 4: caster triangles against the listed samples. A triangle covers
 // the grid cells of its light-space bounds that its edges (widened by a hundredth of a cell
 // against the rounding of the projection: the test below is exact, the cells only have to hold
-// every candidate) do not exclude. Each listed sample of those cells is tested against the
+// every candidate) do not exclude, walked as one span per row. Each listed sample of those cells is tested against the
 // triangle itself: the ray from the sample's start toward the light hits it between the height
 // tolerance and the light (Moller-Trumbore, as a ray tracer would), and an alpha-masked triangle
 // only where its texture at the hit is opaque (nearest texel, repeat: the reference's filter).
 // A hit sets the sample's bit (atomicOr).
-// IZB_STEP 1: one invocation per triangle; bounds of more than kChunk cells are queued in
-// chunks of kChunk cells (a large triangle would otherwise keep one invocation busy for the
-// whole frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one
-// invocation per queued chunk.
+// IZB_STEP 1: one invocation per triangle; bounds of more than kLargeCells cells are queued,
+// one item per row (a large triangle would otherwise keep one invocation busy for the whole
+// frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one invocation
+// per queued row.
 layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
-layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, chunk
+layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
 layout(std430, binding = 14) buffer IzbDispatch { uint dispatchArgs[3]; };
-const uint kChunk = 64u;
+const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
 
 float alphaAt(Material m, Triangle t, float u, float v) {
   float alpha = m.alpha.y;
@@ -90,19 +90,28 @@ bool setup(uint id, out Caster c) {
   return true;
 }
 
-// The cell [x, x+1] x [y, y+1] meets the widened triangle: for each edge, its most inward corner.
-bool cellTouches(Caster c, ivec2 cell) {
+// Cells [x0, x1] of row y that meet the widened triangle: per edge, the cells whose most
+// inward corner is inside (the exact set the edge tests of each cell would keep, in O(1)).
+bool rowSpan(Caster c, int y, out int x0, out int x1) {
+  x0 = c.lo.x;
+  x1 = c.hi.x;
   if (!c.edges) return true;
+  float lo = float(c.lo.x), hi = float(c.hi.x);
   for (int k = 0; k < 3; ++k) {
     vec3 e = c.edge[k];
-    vec2 corner = vec2(cell) + vec2(e.x > 0.0 ? 1.0 : 0.0, e.y > 0.0 ? 1.0 : 0.0);
-    if (dot(e.xy, corner) + e.z < 0.0) return false;
+    float m = e.z + e.y * (float(y) + (e.y > 0.0 ? 1.0 : 0.0));  // the row's most inward y
+    // Cell x passes when e.x * (x + (e.x > 0 ? 1 : 0)) + m >= 0.
+    if (e.x > 0.0) lo = max(lo, ceil(-m / e.x - 1.0 - 1e-3));
+    else if (e.x < 0.0) hi = min(hi, floor(m / -e.x + 1e-3));
+    else if (m < 0.0) return false;
   }
+  if (!(lo <= hi)) return false;  // NaN-safe
+  x0 = int(lo);
+  x1 = int(hi);
   return true;
 }
 
 void testCell(Caster c, ivec2 cellPos) {
-  if (!cellTouches(c, cellPos)) return;
   uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
   uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
   vec3 a = c.t.a.xyz, e1 = c.t.b.xyz - a, e2 = c.t.c.xyz - a;
@@ -119,10 +128,13 @@ void testCell(Caster c, ivec2 cellPos) {
   }
 }
 
-// Cells [first, last) of the caster's bounds, row by row.
-void testCells(Caster c, uint first, uint last) {
-  uint w = uint(c.hi.x - c.lo.x + 1);
-  for (uint i = first; i < last; ++i) testCell(c, c.lo + ivec2(int(i % w), int(i / w)));
+void testRow(Caster c, int y) {
+  int x0, x1;
+  if (!rowSpan(c, y, x0, x1)) return;
+  // Cells are row-major: the span's samples are one range of the lists, empty more often than not.
+  uint row = uint(y * u_izbGrid);
+  if (offsets[row + uint(x1) + 1u] == offsets[row + uint(x0)]) return;
+  for (int x = x0; x <= x1; ++x) testCell(c, ivec2(x, y));
 }
 
 void main() {
@@ -138,24 +150,22 @@ void main() {
   if (queue[item].x >= uint(u_izbTriangles)) return;
   Caster c;
   setup(queue[item].x, c);
-  uint cells = uint(c.hi.x - c.lo.x + 1) * uint(c.hi.y - c.lo.y + 1);
-  uint first = queue[item].y * kChunk;
-  testCells(c, first, min(first + kChunk, cells));
+  int y = c.lo.y + int(queue[item].y);
+  if (y <= c.hi.y) testRow(c, y);
 #else
   uint id = gl_GlobalInvocationID.x;
   if (id >= uint(u_izbTriangles)) return;
   Caster c;
   if (!setup(id, c)) return;
-  uint cells = uint(c.hi.x - c.lo.x + 1) * uint(c.hi.y - c.lo.y + 1);
-  uint chunks = (cells + kChunk - 1u) / kChunk;
-  if (chunks > 1u) {
-    uint slot = atomicAdd(counters[2], chunks);
-    // A full queue is not an error: the triangle then walks its cells here, only slower.
-    if (slot + chunks <= uint(u_izbQueueCapacity)) {
-      for (uint k = 0u; k < chunks; ++k) queue[slot + k] = uvec2(id, k);
+  uint rows = uint(c.hi.y - c.lo.y + 1);
+  if (rows > 1u && rows * uint(c.hi.x - c.lo.x + 1) > kLargeCells) {
+    uint slot = atomicAdd(counters[2], rows);
+    // A full queue is not an error: the triangle then walks its rows here, only slower.
+    if (slot + rows <= uint(u_izbQueueCapacity)) {
+      for (uint k = 0u; k < rows; ++k) queue[slot + k] = uvec2(id, k);
       return;
     }
   }
-  testCells(c, 0u, cells);
+  for (int y = c.lo.y; y <= c.hi.y; ++y) testRow(c, y);
 #endif
 }

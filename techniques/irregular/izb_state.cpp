@@ -30,7 +30,7 @@ enum : GLuint {
   kBindDispatch
 };
 
-constexpr long long kQueueCapacity = 1 << 20;  // chunks of 64 cells of large triangles
+constexpr long long kQueueCapacity = 1 << 20;  // rows of large triangles
 
 constexpr long long kSampleBytes = 48;  // Sample in izb_common.glsl
 
@@ -236,23 +236,18 @@ void IzbState::bind(const Program& p, TextureUnits& units) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindFallback, fallback_);
 }
 
-uint32_t IzbState::overflowCount() const {
-  uint32_t c[2] = {0, 0};
+uint32_t IzbState::counter(int index) const {
+  uint32_t c[3] = {0, 0, 0};
   if (counters_) glGetNamedBufferSubData(counters_, 0, sizeof c, c);
-  return c[0];
-}
-
-uint32_t IzbState::listedCount() const {
-  uint32_t c[2] = {0, 0};
-  if (counters_) glGetNamedBufferSubData(counters_, 0, sizeof c, c);
-  return c[1];
+  return c[index];
 }
 
 std::string IzbState::status() const {
   if (!error_.empty()) return error_;
   if (!counters_) return "";
   const uint32_t overflow = overflowCount();
-  std::string s = std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells";
+  std::string s = std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells, " +
+                  std::to_string(counter(2)) + " rows of large triangles queued";
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +
          " samples use the shadow-map test (raise izb.capacity)";

@@ -37,8 +37,8 @@ class IzbState : public DepthMapState {
   std::string status() const override;
   long long texels() const override;
   // Samples of the last frame that did not fit in the lists (read back from the GPU).
-  uint32_t overflowCount() const;
-  uint32_t listedCount() const;  // samples binned into the grid (fitting or not)
+  uint32_t overflowCount() const { return counter(0); }
+  uint32_t listedCount() const { return counter(1); }  // samples binned into the grid (fitting or not)
 
  private:
   void ensureBuffers(int width, int height, int grid);
@@ -46,6 +46,7 @@ class IzbState : public DepthMapState {
   void runTriangles(const PartContext& ctx);
   void drawListView(const PartContext& ctx, Texture2D* target);
   void setCommon(const Program& p, const PartContext& ctx) const;
+  uint32_t counter(int index) const;  // 0 overflowed, 1 listed, 2 queued chunks (a readback)
 
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], samples[pixels],
