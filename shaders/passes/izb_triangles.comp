@@ -18,14 +18,18 @@ layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, r
 layout(std430, binding = 14) buffer IzbDispatch { uint dispatchArgs[3]; };
 const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
 
+// floor(t * size) modulo size, in [0, size): GLSL's % is undefined for negative operands.
+int wrapTexel(float t, int size) {
+  int i = int(floor(t * float(size)));
+  return i >= 0 ? i % size : size - 1 - (-(i + 1)) % size;
+}
+
 float alphaAt(Material m, Triangle t, float u, float v) {
   float alpha = m.alpha.y;
   int w = int(m.texture.y), h = int(m.texture.z);
   if (w <= 0 || h <= 0) return alpha;
   vec2 uv = (1.0 - u - v) * t.uv01.xy + u * t.uv01.zw + v * t.uv2.xy;
-  int x = int(floor(uv.x * float(w))) % w, y = int(floor(uv.y * float(h))) % h;
-  x += x < 0 ? w : 0;
-  y += y < 0 ? h : 0;
+  int x = wrapTexel(uv.x, w), y = wrapTexel(uv.y, h);
   uint byteIndex = m.texture.x + uint(y * w + x);
   uint word = alphaBytes[byteIndex >> 2];
   return alpha * float((word >> (8u * (byteIndex & 3u))) & 255u) / 255.0;
