@@ -21,9 +21,11 @@ struct Result {
   long long wrong = 0, covered = 0, shadowed = 0, nonfinite = 0;
 };
 
-Result compareWithReference(const Scene& scene, const test::Frame& f) {
-  ReferenceTracer tracer(scene, 0.0);
-  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
+Result compareWithReference(const Scene& scene, const test::Frame& f, double time = 0.0) {
+  ReferenceTracer tracer(scene, time);
+  ReferenceOptions options;
+  options.time = time;
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), options);
   const size_t n = static_cast<size_t>(f.width) * f.height;
   std::vector<float> vis(n);
   std::vector<uint8_t> valid(n);
@@ -41,10 +43,12 @@ Result compareWithReference(const Scene& scene, const test::Frame& f) {
 }
 
 // One frame of `preset` on `scene` from `cam`, with the viewport kept for its state.
-test::Frame renderWith(test::GlHarness& h, const Scene& scene, Viewport& vp, const Camera& cam, int frames = 1) {
+test::Frame renderWith(test::GlHarness& h, const Scene& scene, Viewport& vp, const Camera& cam, int frames = 1,
+                       double time = 0.0) {
   h.renderer.setScene(scene);
   FrameInput in;
   in.camera = cam;
+  in.time = time;
   in.width = kW;
   in.height = kH;
   for (int i = 0; i < frames; ++i) h.renderer.render(in, {&vp});
@@ -73,6 +77,28 @@ TEST(Irregular, MatchesTheReferenceOnBuiltinScenes) {
     EXPECT_GT(state->listedCount(), 0u) << id;
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Moving casters: the triangles follow the frame's time (rebuilt when it changes).
+TEST(Irregular, MovingCastersAreTestedWhereTheyAreAtTheFrameTime) {
+  test::GlHarness h;
+  const Scene scene = loadScene("moving", defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free"));
+  std::vector<float> first;
+  for (double time : {0.0, 1.3, 2.9}) {
+    const test::Frame f = renderWith(h, scene, vp, scene.cameras.front(), 1, time);
+    const Result r = compareWithReference(scene, f, time);
+    EXPECT_LE(r.wrong, 3) << "time " << time;
+    EXPECT_GT(r.shadowed, 5) << "time " << time;
+    if (first.empty()) {
+      first = f.visibility;
+      continue;
+    }
+    // The shadows moved with their casters (a stale triangle buffer would keep time 0's).
+    long long changed = 0;
+    for (size_t i = 0; i < first.size(); i += 2) changed += std::abs(first[i] - f.visibility[i]) > 0.5f;
+    EXPECT_GT(changed, 5) << "time " << time;
+  }
 }
 
 // The same frames with the standard map are far from exact: the comparison can fail.
