@@ -7,7 +7,7 @@
 // only where its texture at the hit is opaque (nearest texel, repeat: the reference's filter).
 // A hit sets the sample's bit (atomicOr).
 // IZB_STEP 1: one invocation per triangle; bounds of more than kLargeCells cells are queued,
-// one item per row (a large triangle would otherwise keep one invocation busy for the whole
+// one item per row that lists samples (a large triangle would otherwise keep one invocation busy for the whole
 // frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one invocation
 // per queued row.
 layout(local_size_x = 64) in;
@@ -132,10 +132,17 @@ void testCell(Caster c, ivec2 cellPos) {
   }
 }
 
+// Cells are row-major: a span's samples are one range of the lists, empty more often than not.
+bool rowHasSamples(Caster c, int y) {
+  int x0, x1;
+  if (!rowSpan(c, y, x0, x1)) return false;
+  uint row = uint(y * u_izbGrid);
+  return offsets[row + uint(x1) + 1u] != offsets[row + uint(x0)];
+}
+
 void testRow(Caster c, int y) {
   int x0, x1;
   if (!rowSpan(c, y, x0, x1)) return;
-  // Cells are row-major: the span's samples are one range of the lists, empty more often than not.
   uint row = uint(y * u_izbGrid);
   if (offsets[row + uint(x1) + 1u] == offsets[row + uint(x0)]) return;
   for (int x = x0; x <= x1; ++x) testCell(c, ivec2(x, y));
@@ -163,10 +170,15 @@ void main() {
   if (!setup(id, c)) return;
   uint rows = uint(c.hi.y - c.lo.y + 1);
   if (rows > 1u && rows * uint(c.hi.x - c.lo.x + 1) > kLargeCells) {
-    uint slot = atomicAdd(counters[2], rows);
+    // Only rows whose span lists samples are queued (two loads per row to know).
+    uint busy = 0u;
+    for (int y = c.lo.y; y <= c.hi.y; ++y) busy += rowHasSamples(c, y) ? 1u : 0u;
+    if (busy == 0u) return;
+    uint slot = atomicAdd(counters[2], busy);
     // A full queue is not an error: the triangle then walks its rows here, only slower.
-    if (slot + rows <= uint(u_izbQueueCapacity)) {
-      for (uint k = 0u; k < rows; ++k) queue[slot + k] = uvec2(id, k);
+    if (slot + busy <= uint(u_izbQueueCapacity)) {
+      for (int y = c.lo.y; y <= c.hi.y; ++y)
+        if (rowHasSamples(c, y)) queue[slot++] = uvec2(id, uint(y - c.lo.y));
       return;
     }
   }
