@@ -13,7 +13,10 @@ class IrregularRepresentation : public Representation {
   std::string id() const override { return "irregular"; }
   std::string help() const override {
     return "irregular z-buffer (Johnson et al. 2004, Aila & Laine 2004; GPU lists as Sintorn et al. 2008): every "
-           "visible eye sample binned in a light-space grid and tested exactly against each caster triangle";
+           "visible eye sample binned in a light-space grid and tested exactly against each caster triangle. Debug "
+           "view "
+           "izb-lists: the grid, each cell by its list length (log scale: black empty, blue 1 sample, green 8, yellow "
+           "~24, red >= 64; white = lost samples to the capacity)";
   }
   std::string glslModule() const override { return "representations/irregular.glsl"; }
   std::vector<ParamDecl> params() const override {
