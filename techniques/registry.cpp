@@ -2,6 +2,7 @@
 #include "technique.h"
 
 #include "depth/depth_representations.h"
+#include "irregular/irregular.h"
 #include "layouts/cascaded.h"
 #include "layouts/face_partitioned.h"
 #include "layouts/layouts.h"
@@ -87,6 +88,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
     registerPrefilteredRepresentations(v);
+    registerIrregularRepresentations(v);
     return v;
   }();
   return list;
@@ -184,6 +186,7 @@ const std::vector<Preset>& allPresets() {
          {"fit.sdsm=on"}},
     };
     addPrefilteredPresets(v);
+    addIrregularPresets(v);
     return v;
   }();
   return presets;

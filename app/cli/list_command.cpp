@@ -37,6 +37,12 @@ int runListCommand(int, char**) {
   for (const auto& r : allRepresentations()) {
     std::cout << "  " << std::setw(16) << r->id() << " " << r->help() << "\n";
     printParams(r->params());
+    auto views = r->createState()->views();  // states make their GL objects on first use
+    if (!views.empty()) {
+      std::cout << "    debug views:";
+      for (const auto& v : views) std::cout << " " << v;
+      std::cout << "\n";
+    }
   }
   std::cout << "\naccumulations (screen space over time):\n";
   for (const auto& a : allAccumulations()) {
@@ -49,7 +55,8 @@ int runListCommand(int, char**) {
       std::cout << "\n";
     }
   }
-  std::cout << "\ndebug views of every technique (--view NAME; accumulations add theirs, above; the explorer adds "
+  std::cout << "\ndebug views of every technique (--view NAME; representations and accumulations add theirs, above; "
+               "the explorer adds "
                "`error`):";
   for (const auto& v : commonViewNames()) std::cout << " " << v;
   std::cout << "\n\nscenes (--scene ID or a path to .json/.gltf/.glb):\n";

@@ -106,6 +106,12 @@ int runRenderCommand(int argc, char** argv) {
       j["timer"] = renderer.stats().timer;
       j["renderer"] = glRendererName();
       j["nonfinite_pixels"] = nonfinite;
+      // What each part says about the last frame (e.g. the irregular z-buffer's list overflow).
+      j["status"] = {{"layout", viewport.layout->status()},
+                     {"representation", viewport.representation->status()},
+                     {"accumulation", viewport.accumulation->status()}};
+      j["shadow_texels"] =
+          viewport.layout->texels() + viewport.representation->texels() + viewport.accumulation->texels();
       j["shader_errors"] = errors;
       j["gl_errors"] = glDebugErrorCount();
       std::ofstream f(args.get("--stats"));

@@ -31,8 +31,10 @@ void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSl
   const Viewport& vp = *slot.viewport;
   std::string text = std::to_string(index + 1) + "  " + vp.technique.label();
   if (!slot.enlargedView.empty()) text += "   [" + slot.enlargedView + "]";
-  if (vp.accumulation) {
-    std::string status = vp.accumulation->status();
+  // Representations report too (the irregular z-buffer's overflow, a layout it cannot use).
+  for (const PartState* part :
+       {static_cast<const PartState*>(vp.representation.get()), static_cast<const PartState*>(vp.accumulation.get())}) {
+    const std::string status = part ? part->status() : "";
     if (!status.empty()) text += "   " + status;
   }
   const float textY = tile.headerMin.y + (tile.headerSize.y - ImGui::GetTextLineHeight()) * 0.5f;

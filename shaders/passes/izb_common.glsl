@@ -1,0 +1,53 @@
+// Buffers and helpers shared by the irregular z-buffer passes (techniques/irregular/). Binding
+// numbers are fixed here and in izb_state.cpp (kBind*): storage buffers have no allocator.
+// Only the blocks a pass uses are active in its program.
+
+struct Triangle {  // world space; w: instance + 1, triangle in its mesh, material (as bits)
+  vec4 a, b, c;
+  vec4 uv01;
+  vec4 uv2;
+};
+struct Material {
+  uvec4 texture;  // alpha byte offset, width, height, masked
+  vec4 alpha;     // cutoff, base colour alpha
+};
+struct Sample {
+  vec4 origin;     // ray start on the sample's own triangle plane; w: tnear (height tolerance)
+  vec4 direction;  // toward the light's centre; w: tfar
+  uint triangle;   // its own triangle (global index), never its occluder
+  uint pad0, pad1, pad2;
+};
+
+layout(std430, binding = 0) readonly buffer IzbTriangles { Triangle triangles[]; };
+layout(std430, binding = 1) readonly buffer IzbInstanceBase { uint instanceBase[]; };
+layout(std430, binding = 2) readonly buffer IzbMaterials { Material materials[]; };
+layout(std430, binding = 3) readonly buffer IzbAlpha { uint alphaBytes[]; };
+layout(std430, binding = 4) buffer IzbCounts { uint counts[]; };       // samples per cell
+layout(std430, binding = 5) buffer IzbOffsets { uint offsets[]; };     // exclusive prefix sum, cells + 1
+layout(std430, binding = 6) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
+layout(std430, binding = 7) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
+layout(std430, binding = 8) buffer IzbSamples { Sample samples[]; };   // by pixel
+layout(std430, binding = 9) buffer IzbList { uint list[]; };           // pixel indices, by cell
+layout(std430, binding = 10) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
+layout(std430, binding = 11) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
+layout(std430, binding = 12) buffer IzbCounters { uint counters[]; };  // 0: overflowed, 1: listed
+
+uniform int u_izbGrid;      // cells per side
+uniform vec2 u_izbSize;     // eye samples: the viewport's pixels (whole numbers)
+uniform int u_izbCapacity;  // entries of the list buffer
+uniform mat4 u_izbViewProj; // the layout's light view: where cells are
+
+const uint kNoCell = 0xffffffffu;
+
+// Grid coordinates (cells, fractional) of a world point; false behind a perspective light.
+bool izbGridPos(vec3 p, out vec2 g) {
+  vec4 c = u_izbViewProj * vec4(p, 1.0);
+  g = vec2(0.0);
+  if (!(c.w > 1e-6)) return false;
+  g = (c.xy / c.w * 0.5 + 0.5) * float(u_izbGrid);
+  return !any(isnan(g));
+}
+
+// Clamped to the grid: a point outside it is listed under the border cell, where every
+// triangle covering it also lands (the clamp of a triangle's bounds holds the clamped point).
+ivec2 izbCell(vec2 g) { return ivec2(clamp(floor(g), vec2(0.0), vec2(float(u_izbGrid - 1)))); }

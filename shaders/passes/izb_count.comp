@@ -1,0 +1,85 @@
+// Irregular z-buffer, pass 1: every covered pixel is an eye sample. Its ray start (on its own
+// triangle's plane, with the reference's height tolerance: docs/reference.md), its direction to
+// the light and its grid cell are stored, and the cell's count is incremented. Samples the
+// reference calls unlit without tracing (facing away, terminator, outside the cone) get their
+// shadow bit here and are not listed.
+#extension GL_ARB_gpu_shader_fp64 : enable
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "passes/izb_common.glsl"
+uniform sampler2D u_gPosition;
+uniform sampler2D u_gNormal;
+uniform usampler2D u_gSurface;
+uniform vec3 u_lightDirection;
+uniform vec3 u_lightPosition;
+uniform float u_spotCosHalfAngle;
+uniform int u_izbSpot;
+uniform int u_izbInstances;
+uniform int u_izbTriangles;
+
+double maxAbs(dvec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
+
+void setBit(uint pixel) { atomicOr(shadowBits[pixel >> 5], 1u << (pixel & 31u)); }
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(px, ivec2(u_izbSize)))) return;
+  uint pixel = uint(px.y * int(u_izbSize.x) + px.x);
+  pixelCell[pixel] = kNoCell;
+  vec4 P = texelFetch(u_gPosition, px, 0);
+  if (!(P.w > 0.5)) return;
+  if (any(isnan(P.xyz)) || any(isinf(P.xyz))) { setBit(pixel); return; }
+  vec3 n = texelFetch(u_gNormal, px, 0).xyz;
+  uvec4 s = texelFetch(u_gSurface, px, 0);
+  // Direction and distance to the light's centre, as the reference computes them (float).
+  vec3 toLight = -u_lightDirection;
+  float tfar = 1.0 / 0.0;
+  if (u_izbSpot != 0) {
+    vec3 d = u_lightPosition - P.xyz;
+    float dist = length(d);
+    if (!(dist > 0.0)) { setBit(pixel); return; }
+    toLight = d / dist;
+    if (!(dot(-toLight, u_lightDirection) >= u_spotCosHalfAngle)) { setBit(pixel); return; }
+    tfar = dist * (1.0 - 1e-4);
+  }
+  float nl = length(n);
+  bool hasNormal = nl > 1e-12 && !isinf(nl);
+  n = hasNormal ? n / nl : vec3(0.0);
+  if (hasNormal && dot(n, toLight) <= 0.0) { setBit(pixel); return; }
+  // The ray start on the exact plane of its triangle (in double, as the reference).
+  dvec3 origin = dvec3(P.xyz);
+  dvec3 plane = dvec3(n);
+  bool hasPlane = hasNormal;
+  double scale = maxAbs(origin);
+  uint own = kNoCell;
+  if (s.x > 0u && s.x <= uint(u_izbInstances)) own = instanceBase[s.x - 1u] + s.y;
+  if (own < uint(u_izbTriangles)) {
+    Triangle t = triangles[own];
+    dvec3 a = dvec3(t.a.xyz), b = dvec3(t.b.xyz), c = dvec3(t.c.xyz);
+    dvec3 f = cross(b - a, c - a);
+    double len = length(f);
+    if (len > 0.0 && floatBitsToUint(t.a.w) == s.x && floatBitsToUint(t.b.w) == s.y) {
+      f /= len;
+      if (hasPlane && dot(f, dvec3(n)) < 0.0) f = -f;
+      origin = origin - f * dot(f, origin - a);
+      plane = f;
+      hasPlane = true;
+      scale = max(max(maxAbs(origin), maxAbs(a)), max(maxAbs(b), maxAbs(c)));
+    }
+  }
+  if (hasPlane && dot(plane, dvec3(toLight)) <= 0.0) { setBit(pixel); return; }  // terminator
+  double tolerance = max(scale / 1048576.0, 1e-9);
+  double tnear = hasPlane ? tolerance / dot(plane, dvec3(toLight)) : tolerance;
+  if (!(float(tnear) < tfar)) return;  // nothing can lie between: lit
+  samples[pixel] = Sample(vec4(vec3(origin), float(tnear)), vec4(toLight, tfar), own, 0u, 0u, 0u);
+  vec2 g;
+  // Behind a perspective light: the reference would trace it, the grid cannot list it.
+  if (!izbGridPos(P.xyz, g)) {
+    atomicOr(fallbackBits[pixel >> 5], 1u << (pixel & 31u));
+    return;
+  }
+  ivec2 cell = izbCell(g);
+  uint index = uint(cell.y * u_izbGrid + cell.x);
+  pixelCell[pixel] = index;
+  atomicAdd(counts[index], 1u);
+  atomicAdd(counters[1], 1u);
+}

@@ -1,0 +1,187 @@
+// Irregular z-buffer, pass 4: caster triangles against the listed samples. A triangle covers
+// the grid cells of its light-space bounds that its edges (widened by a hundredth of a cell
+// against the rounding of the projection: the test below is exact, the cells only have to hold
+// every candidate) do not exclude, walked as one span per row. Each listed sample of those cells is tested against the
+// triangle itself: the ray from the sample's start toward the light hits it between the height
+// tolerance and the light (Moller-Trumbore, as a ray tracer would), and an alpha-masked triangle
+// only where its texture at the hit is opaque (nearest texel, repeat: the reference's filter).
+// A hit sets the sample's bit (atomicOr).
+// IZB_STEP 1: one invocation per triangle; bounds of more than kLargeCells cells are queued,
+// one item per row that lists samples (a large triangle would otherwise keep one invocation busy for the whole
+// frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one invocation
+// per queued row.
+layout(local_size_x = 64) in;
+#include "passes/izb_common.glsl"
+uniform int u_izbTriangles;
+uniform int u_izbQueueCapacity;
+layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
+layout(std430, binding = 14) buffer IzbDispatch { uint dispatchArgs[3]; };
+const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
+
+// floor(t * size) modulo size, in [0, size): GLSL's % is undefined for negative operands.
+int wrapTexel(float t, int size) {
+  int i = int(floor(t * float(size)));
+  return i >= 0 ? i % size : size - 1 - (-(i + 1)) % size;
+}
+
+float alphaAt(Material m, Triangle t, float u, float v) {
+  float alpha = m.alpha.y;
+  int w = int(m.texture.y), h = int(m.texture.z);
+  if (w <= 0 || h <= 0) return alpha;
+  vec2 uv = (1.0 - u - v) * t.uv01.xy + u * t.uv01.zw + v * t.uv2.xy;
+  int x = wrapTexel(uv.x, w), y = wrapTexel(uv.y, h);
+  uint byteIndex = m.texture.x + uint(y * w + x);
+  uint word = alphaBytes[byteIndex >> 2];
+  return alpha * float((word >> (8u * (byteIndex & 3u))) & 255u) / 255.0;
+}
+
+// Ray from the sample toward the light against the triangle: hit strictly between tnear and
+// tfar, barycentrics u (of b) and v (of c) for the alpha lookup.
+bool hits(Sample s, vec3 a, vec3 e1, vec3 e2, out float u, out float v) {
+  vec3 d = s.direction.xyz;
+  vec3 p = cross(d, e2);
+  float det = dot(e1, p);
+  u = 0.0;
+  v = 0.0;
+  if (det == 0.0) return false;  // edge-on to the ray: no area to hit
+  float inv = 1.0 / det;
+  vec3 o = s.origin.xyz - a;
+  u = dot(o, p) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  vec3 q = cross(o, e1);
+  v = dot(d, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  float t = dot(e2, q) * inv;
+  return t > s.origin.w && t < s.direction.w;
+}
+
+// What one triangle needs while it walks its cells.
+struct Caster {
+  uint id;
+  Triangle t;
+  Material m;
+  bool masked;
+  ivec2 lo, hi;    // cell bounds
+  bool edges;      // the edge test below applies (projection known and not degenerate)
+  vec3 edge[3];    // inward edge lines in grid units: dot(xy, 1) >= -margin inside
+};
+
+bool setup(uint id, out Caster c) {
+  c.id = id;
+  c.t = triangles[id];
+  c.m = materials[floatBitsToUint(c.t.c.w)];
+  c.masked = c.m.texture.w != 0u;
+  c.lo = ivec2(0);
+  c.hi = ivec2(u_izbGrid - 1);
+  c.edges = false;
+  // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
+  if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
+  vec2 g[3];
+  // Behind a perspective light's plane the projection wraps around: walk the whole grid.
+  if (!(izbGridPos(c.t.a.xyz, g[0]) && izbGridPos(c.t.b.xyz, g[1]) && izbGridPos(c.t.c.xyz, g[2]))) return true;
+  c.lo = izbCell(min(g[0], min(g[1], g[2])) - 0.01);
+  c.hi = izbCell(max(g[0], max(g[1], g[2])) + 0.01);
+  vec2 e1 = g[1] - g[0], e2 = g[2] - g[0];
+  float area = e1.x * e2.y - e1.y * e2.x;
+  c.edges = area != 0.0 && !isinf(area);
+  float side = area > 0.0 ? 1.0 : -1.0;
+  for (int k = 0; k < 3; ++k) {
+    vec2 p = g[k], q = g[(k + 1) % 3];
+    vec2 n = side * vec2(p.y - q.y, q.x - p.x);  // inward normal (unnormalized)
+    // Inside (widened): dot(n, x - p) >= -0.01 * |n|.
+    c.edge[k] = vec3(n, -dot(n, p) + 0.01 * length(n));
+  }
+  return true;
+}
+
+// Cells [x0, x1] of row y that meet the widened triangle: per edge, the cells whose most
+// inward corner is inside (the exact set the edge tests of each cell would keep, in O(1)).
+bool rowSpan(Caster c, int y, out int x0, out int x1) {
+  x0 = c.lo.x;
+  x1 = c.hi.x;
+  if (!c.edges) return true;
+  float lo = float(c.lo.x), hi = float(c.hi.x);
+  for (int k = 0; k < 3; ++k) {
+    vec3 e = c.edge[k];
+    float m = e.z + e.y * (float(y) + (e.y > 0.0 ? 1.0 : 0.0));  // the row's most inward y
+    // Cell x passes when e.x * (x + (e.x > 0 ? 1 : 0)) + m >= 0.
+    if (e.x > 0.0) lo = max(lo, ceil(-m / e.x - 1.0 - 1e-3));
+    else if (e.x < 0.0) hi = min(hi, floor(m / -e.x + 1e-3));
+    else if (m < 0.0) return false;
+  }
+  if (!(lo <= hi)) return false;  // NaN-safe
+  x0 = int(lo);
+  x1 = int(hi);
+  return true;
+}
+
+void testCell(Caster c, ivec2 cellPos) {
+  uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
+  uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
+  vec3 a = c.t.a.xyz, e1 = c.t.b.xyz - a, e2 = c.t.c.xyz - a;
+  for (uint k = begin; k < end; ++k) {
+    uint pixel = list[k];
+    uint bit = 1u << (pixel & 31u);
+    if ((shadowBits[pixel >> 5] & bit) != 0u) continue;  // already occluded
+    Sample s = samples[pixel];
+    if (s.triangle == c.id) continue;  // its own triangle never shadows it
+    float u, v;
+    if (!hits(s, a, e1, e2, u, v)) continue;
+    if (c.masked && alphaAt(c.m, c.t, u, v) < c.m.alpha.x) continue;
+    atomicOr(shadowBits[pixel >> 5], bit);
+  }
+}
+
+// Cells are row-major: a span's samples are one range of the lists, empty more often than not.
+bool rowHasSamples(Caster c, int y) {
+  int x0, x1;
+  if (!rowSpan(c, y, x0, x1)) return false;
+  uint row = uint(y * u_izbGrid);
+  return offsets[row + uint(x1) + 1u] != offsets[row + uint(x0)];
+}
+
+void testRow(Caster c, int y) {
+  int x0, x1;
+  if (!rowSpan(c, y, x0, x1)) return;
+  uint row = uint(y * u_izbGrid);
+  if (offsets[row + uint(x1) + 1u] == offsets[row + uint(x0)]) return;
+  for (int x = x0; x <= x1; ++x) testCell(c, ivec2(x, y));
+}
+
+void main() {
+#if IZB_STEP == 2
+  dispatchArgs[0] = (min(counters[2], uint(u_izbQueueCapacity)) + 63u) / 64u;
+  dispatchArgs[1] = 1u;
+  dispatchArgs[2] = 1u;
+#elif IZB_STEP == 3
+  uint item = gl_GlobalInvocationID.x;
+  if (item >= min(counters[2], uint(u_izbQueueCapacity))) return;
+  // Slots a triangle reserved past a full queue hold older entries: testing them again is
+  // harmless (the test is exact and only sets bits), reading past the triangles is not.
+  if (queue[item].x >= uint(u_izbTriangles)) return;
+  Caster c;
+  setup(queue[item].x, c);
+  int y = c.lo.y + int(queue[item].y);
+  if (y <= c.hi.y) testRow(c, y);
+#else
+  uint id = gl_GlobalInvocationID.x;
+  if (id >= uint(u_izbTriangles)) return;
+  Caster c;
+  if (!setup(id, c)) return;
+  uint rows = uint(c.hi.y - c.lo.y + 1);
+  if (rows > 1u && rows * uint(c.hi.x - c.lo.x + 1) > kLargeCells) {
+    // Only rows whose span lists samples are queued (two loads per row to know).
+    uint busy = 0u;
+    for (int y = c.lo.y; y <= c.hi.y; ++y) busy += rowHasSamples(c, y) ? 1u : 0u;
+    if (busy == 0u) return;
+    uint slot = atomicAdd(counters[2], busy);
+    // A full queue is not an error: the triangle then walks its rows here, only slower.
+    if (slot + busy <= uint(u_izbQueueCapacity)) {
+      for (int y = c.lo.y; y <= c.hi.y; ++y)
+        if (rowHasSamples(c, y)) queue[slot++] = uvec2(id, uint(y - c.lo.y));
+      return;
+    }
+  }
+  for (int y = c.lo.y; y <= c.hi.y; ++y) testRow(c, y);
+#endif
+}

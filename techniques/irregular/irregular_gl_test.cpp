@@ -1,0 +1,246 @@
+// The irregular z-buffer against the ray-traced reference (llvmpipe, 160x90): exact up to a
+// handful of tie pixels on the builtin scenes, Sponza's alpha-masked casters and a masked quad;
+// the overflow path on purpose; composition with pixel-correct; layouts it cannot use.
+#include "irregular/izb_state.h"
+#include "metrics/metrics.h"
+#include "scene/shapes.h"
+#include "tests/gl_test_util.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace sl {
+namespace {
+
+constexpr int kW = 160, kH = 90;
+
+struct Result {
+  ErrorMetrics error;
+  long long wrong = 0, covered = 0, shadowed = 0, nonfinite = 0;
+};
+
+Result compareWithReference(const Scene& scene, const test::Frame& f, double time = 0.0) {
+  ReferenceTracer tracer(scene, time);
+  ReferenceOptions options;
+  options.time = time;
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), options);
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<float> vis(n);
+  std::vector<uint8_t> valid(n);
+  Result r;
+  for (size_t i = 0; i < n; ++i) {
+    vis[i] = f.visibility[2 * i];
+    valid[i] = f.position[4 * i + 3] > 0.5f;
+    r.covered += valid[i];
+    r.shadowed += valid[i] && ref[i] < 0.5f;
+    r.wrong += valid[i] && !(std::abs(vis[i] - ref[i]) <= kWrongThreshold);
+  }
+  r.error = compareVisibility(vis.data(), ref.data(), valid.data(), n);
+  r.nonfinite = f.nonfinite();
+  return r;
+}
+
+// One frame of `preset` on `scene` from `cam`, with the viewport kept for its state.
+test::Frame renderWith(test::GlHarness& h, const Scene& scene, Viewport& vp, const Camera& cam, int frames = 1,
+                       double time = 0.0) {
+  h.renderer.setScene(scene);
+  FrameInput in;
+  in.camera = cam;
+  in.time = time;
+  in.width = kW;
+  in.height = kH;
+  for (int i = 0; i < frames; ++i) h.renderer.render(in, {&vp});
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return test::readFrame(h.renderer, vp, kW, kH);
+}
+
+std::string sharedDir() {
+  const char* env = std::getenv("SHADOWLAB_SHARED");
+  return env && *env ? env : std::string(SHADOWLAB_SOURCE_DIR) + "/../shared";
+}
+
+TEST(Irregular, MatchesTheReferenceOnBuiltinScenes) {
+  test::GlHarness h;
+  for (const char* id : {"basic", "columns", "thin-casters", "terrain", "spotlight"}) {
+    const Scene scene = loadScene(id, defaultAssetsDir());
+    Viewport vp(makeTechnique("alias-free"));
+    const Result r = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front()));
+    std::printf("%-14s alias-free: %lld wrong of %lld covered (%lld shadowed)\n", id, r.wrong, r.covered, r.shadowed);
+    EXPECT_EQ(r.nonfinite, 0) << id;
+    EXPECT_GT(r.shadowed, 50) << id << ": a scene without shadows would pass anything";
+    EXPECT_LE(r.wrong, 3) << id;  // numerical ties only
+    auto* state = dynamic_cast<IzbState*>(vp.representation.get());
+    ASSERT_NE(state, nullptr);
+    EXPECT_EQ(state->overflowCount(), 0u) << id;
+    EXPECT_GT(state->listedCount(), 0u) << id;
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Moving casters: the triangles follow the frame's time (rebuilt when it changes).
+TEST(Irregular, MovingCastersAreTestedWhereTheyAreAtTheFrameTime) {
+  test::GlHarness h;
+  const Scene scene = loadScene("moving", defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free"));
+  std::vector<float> first;
+  for (double time : {0.0, 1.3, 2.9}) {
+    const test::Frame f = renderWith(h, scene, vp, scene.cameras.front(), 1, time);
+    const Result r = compareWithReference(scene, f, time);
+    EXPECT_LE(r.wrong, 3) << "time " << time;
+    EXPECT_GT(r.shadowed, 5) << "time " << time;
+    if (first.empty()) {
+      first = f.visibility;
+      continue;
+    }
+    // The shadows moved with their casters (a stale triangle buffer would keep time 0's).
+    long long changed = 0;
+    for (size_t i = 0; i < first.size(); i += 2) changed += std::abs(first[i] - f.visibility[i]) > 0.5f;
+    EXPECT_GT(changed, 5) << "time " << time;
+  }
+}
+
+// The same frames with the standard map are far from exact: the comparison can fail.
+TEST(Irregular, StandardMapIsNotExactOnThinCasters) {
+  test::GlHarness h;
+  const Scene scene = loadScene("thin-casters", defaultAssetsDir());
+  Viewport vp(makeTechnique("standard", {"shadowmap.size=256"}));
+  const Result r = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front()));
+  EXPECT_GT(r.wrong, 10);
+}
+
+// A checkerboard of holes (alpha 0 / 255) in a quad over a ground: light passes the holes.
+Scene maskedQuadScene() {
+  Scene scene;
+  scene.name = "masked-quad";
+  Material ground;
+  scene.materials.push_back(ground);
+  Material mask;
+  mask.baseColorTexture = 0;
+  mask.alphaMask = true;
+  mask.doubleSided = true;
+  scene.materials.push_back(mask);
+  Texture tex;
+  tex.name = "checker";
+  tex.width = tex.height = 8;
+  tex.rgba.assign(8 * 8 * 4, 255);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      if ((x + y) % 2) tex.rgba[4 * (y * 8 + x) + 3] = 0;
+  scene.textures.push_back(tex);
+  scene.meshes.push_back(makePlane(8.0f, 8.0f, 8));
+  scene.meshes.push_back(makePlane(2.0f, 2.0f, 1));
+  scene.meshes[1].material = 1;
+  scene.instances.push_back({"ground", 0, glm::mat4(1.0f), {}});
+  scene.instances.push_back({"mask", 1, glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 0)), {}});
+  scene.light.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+  Camera cam;
+  cam.position = {0.5f, 5.0f, 3.0f};
+  cam.target = {0.0f, 0.0f, 0.0f};
+  scene.cameras.push_back(cam);
+  return scene;
+}
+
+TEST(Irregular, AlphaMaskedCastersLetLightThroughTheirHoles) {
+  test::GlHarness h;
+  const Scene scene = maskedQuadScene();
+  Viewport vp(makeTechnique("alias-free"));
+  const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
+  const Result r = compareWithReference(scene, f);
+  EXPECT_LE(r.wrong, 3);
+  EXPECT_GT(r.shadowed, 200);
+  // Not all opaque: the quad's shadow on the ground has lit holes (about half of its area).
+  long long lit = 0;
+  for (size_t i = 0; i < f.visibility.size() / 2; ++i)
+    lit += f.position[4 * i + 3] > 0.5f && f.visibility[2 * i] > 0.5f;
+  EXPECT_GT(lit, r.covered - r.shadowed - 10);
+}
+
+TEST(Irregular, SponzaWithAlphaMaskedCastersMatchesTheReference) {
+  if (!std::ifstream(sharedDir() + "/scenes-real/sponza/Sponza.gltf"))
+    GTEST_SKIP() << "shared/scenes-real not found under " << sharedDir() << ": Sponza is not compared";
+  test::GlHarness h;
+  Scene scene = loadScene("sponza", defaultAssetsDir());
+  // Sun on the floor under the plants and chains (the default camera's floor is in shadow).
+  scene.light.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.15f));
+  Camera cam = scene.cameras.front();
+  cam.position = {-9.0f, 7.0f, 0.3f};
+  cam.target = {4.0f, 0.5f, 2.5f};
+  Viewport vp(makeTechnique("alias-free"));
+  const Result r = compareWithReference(scene, renderWith(h, scene, vp, cam));
+  std::printf("sponza alias-free: %lld wrong of %lld covered (%lld shadowed)\n", r.wrong, r.covered, r.shadowed);
+  EXPECT_LE(r.wrong, 3);
+  EXPECT_GT(r.covered - r.shadowed, 500);  // the lit floor
+  EXPECT_GT(r.shadowed, 500);
+}
+
+// A list buffer of one entry: every other sample overflows, is counted, and takes the map test.
+TEST(Irregular, OverflowIsCountedAndFallsBackToTheMap) {
+  test::GlHarness h;
+  const Scene scene = loadScene("basic", defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free", {"izb.capacity=0.01", "shadowmap.size=2048"}));
+  const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
+  auto* state = dynamic_cast<IzbState*>(vp.representation.get());
+  ASSERT_NE(state, nullptr);
+  const uint32_t listed = state->listedCount();
+  EXPECT_GT(listed, 1000u);
+  EXPECT_EQ(state->overflowCount(), listed - 1);  // capacity max(1, 14400 * 0.01 %) = 1
+  EXPECT_NE(state->status().find("overflowed"), std::string::npos) << state->status();
+  const Result r = compareWithReference(scene, f);
+  EXPECT_EQ(r.nonfinite, 0);
+  // The fallback is the shadow-map test: close to the truth, not garbage.
+  EXPECT_LT(r.error.wrongPixelPct, 2.0);
+  // Raising the capacity again recovers the exact result.
+  vp.technique.params.setAssignment("izb.capacity=100");
+  const Result exact = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front()));
+  EXPECT_EQ(state->overflowCount(), 0u);
+  EXPECT_LE(exact.wrong, 3);
+}
+
+TEST(Irregular, ComposesWithPixelCorrectAccumulation) {
+  test::GlHarness h;
+  const Scene scene = loadScene("columns", defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free-pixel-correct"));
+  const Result r = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front(), 3));
+  EXPECT_EQ(r.nonfinite, 0);
+  EXPECT_LE(r.wrong, 3);
+  EXPECT_GT(r.shadowed, 50);
+}
+
+// A layout with several views has no single grid: a clear status, the map test everywhere.
+TEST(Irregular, CascadesGiveAStatusAndTheMapTest) {
+  test::GlHarness h;
+  const Scene scene = loadScene("basic", defaultAssetsDir());
+  Technique t = makeTechnique("alias-free");
+  t.layout = findLayout("cascaded");
+  std::vector<ParamDecl> decls = commonParams();
+  for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
+    decls.insert(decls.end(), part.begin(), part.end());
+  t.params = ParamSet(std::move(decls));
+  Viewport vp(t);
+  const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
+  EXPECT_NE(vp.representation->status().find("one orthographic light view"), std::string::npos)
+      << vp.representation->status();
+  const Result r = compareWithReference(scene, f);
+  EXPECT_EQ(r.nonfinite, 0);
+  EXPECT_LT(r.error.wrongPixelPct, 5.0);  // a cascaded map's test, not garbage
+}
+
+TEST(Irregular, ListViewShowsTheGrid) {
+  test::GlHarness h;
+  const Scene scene = loadScene("basic", defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free", {"izb.grid=64"}));
+  vp.shownViews = {"izb-lists"};
+  renderWith(h, scene, vp, scene.cameras.front());
+  const Texture2D* view = vp.viewTexture("izb-lists");
+  ASSERT_NE(view, nullptr);
+  const std::vector<float> rgba = view->readFloats(4);
+  long long empty = 0, listed = 0;
+  for (size_t i = 0; i < rgba.size(); i += 4) (rgba[i] + rgba[i + 1] + rgba[i + 2] == 0.0f ? empty : listed)++;
+  EXPECT_GT(empty, 0);   // cells no visible sample falls in
+  EXPECT_GT(listed, 0);  // and cells with lists
+}
+
+}  // namespace
+}  // namespace sl

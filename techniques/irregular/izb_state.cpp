@@ -1,0 +1,266 @@
+#include "irregular/izb_state.h"
+
+#include "gl/texture_units.h"
+#include "render/frame_graph.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+// Storage-buffer bindings of shaders/passes/izb_common.glsl.
+enum : GLuint {
+  kBindTriangles = 0,
+  kBindInstanceBase,
+  kBindMaterials,
+  kBindAlpha,
+  kBindCounts,
+  kBindOffsets,
+  kBindBlockSums,
+  kBindPixelCell,
+  kBindSamples,
+  kBindList,
+  kBindBits,
+  kBindFallback,
+  kBindCounters,
+  kBindQueue,
+  kBindDispatch
+};
+
+constexpr long long kQueueCapacity = 1 << 20;  // rows of large triangles
+
+constexpr long long kSampleBytes = 48;  // Sample in izb_common.glsl
+
+void resize(GLuint& buffer, long long bytes, const char* name) {
+  if (buffer) glDeleteBuffers(1, &buffer);
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, static_cast<GLsizeiptr>(std::max(bytes, 16LL)), nullptr, GL_DYNAMIC_DRAW);
+  label(GL_BUFFER, buffer, name);
+}
+
+void clearBuffer(GLuint buffer) {
+  const uint32_t zero = 0;
+  glClearNamedBufferData(buffer, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1) / size); }
+
+}  // namespace
+
+IzbState::IzbState() : DepthMapState(false) {}
+
+IzbState::~IzbState() {
+  for (GLuint b :
+       {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_, queue_, dispatch_})
+    if (b) glDeleteBuffers(1, &b);
+}
+
+void IzbState::configure(const ParamSet& params) {
+  gridParam_ = params.i("izb.grid");
+  capacityPct_ = params.get("izb.capacity");
+}
+
+void IzbState::ensureBuffers(int width, int height, int grid) {
+  const long long pixels = static_cast<long long>(width) * height;
+  const long long capacity = std::max(1LL, static_cast<long long>(std::floor(pixels * capacityPct_ / 100.0)));
+  if (width != width_ || height != height_) {
+    width_ = width;
+    height_ = height;
+    resize(pixelCell_, pixels * 4, "izb pixel cell");
+    resize(samples_, pixels * kSampleBytes, "izb samples");
+    resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
+    resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
+    if (!counters_) resize(counters_, 16, "izb counters");
+    if (!queue_) resize(queue_, kQueueCapacity * 8, "izb large-triangle queue");
+    if (!dispatch_) resize(dispatch_, 16, "izb queue dispatch");
+  }
+  if (capacity != capacity_) {
+    capacity_ = capacity;
+    resize(list_, capacity * 4, "izb lists");
+  }
+  if (grid != grid_) {
+    grid_ = grid;
+    const long long cells = static_cast<long long>(grid) * grid;
+    resize(counts_, cells * 4, "izb cell counts");
+    resize(offsets_, (cells + 1) * 4, "izb cell offsets");
+    resize(blockSums_, groups(cells, 1024) * 4, "izb block sums");
+  }
+}
+
+std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
+  error_.clear();
+  const LightSpace& ls = *ctx.lightSpace;
+  // The lists need one grid: one light view. A warped single view (PSM, LiSPSM, TSM under a sun)
+  // would bin correctly too, but its matrix can put receivers behind its centre of projection.
+  const bool spot = ctx.scene->light.type == Light::Type::Spot;
+  if (ls.views.size() != 1 || (ls.primary().perspective && !spot)) {
+    error_ =
+        "irregular z-buffer needs one orthographic light view (uniform or focused layout), or a spot light's; "
+        "this layout gives " +
+        std::to_string(ls.views.size()) + (ls.primary().perspective ? " warped" : "") +
+        " view(s): every pixel uses the shadow-map test";
+  }
+  ensureBuffers(ctx.width, ctx.height, gridParam_);
+  gridViewProj_ = ls.primary().viewProj;
+  scene_.update(*ctx.scene, ctx.time);
+  const std::string lists = "izb.lists" + ctx.viewportTag, out = "izb" + ctx.viewportTag;
+  graph.add({lists, {"gbuffer"}, {lists}, [this, ctx] { runLists(ctx); }});
+  // The shadow map stays an input: overflowed samples fall back to it.
+  graph.add({"izb.triangles" + ctx.viewportTag, {lists, ctx.shadowMap}, {out}, [this, ctx] { runTriangles(ctx); }});
+  auto it = ctx.viewTargets.find("izb-lists");
+  if (it != ctx.viewTargets.end() && it->second) {
+    const std::string view = "view.izb-lists" + ctx.viewportTag;
+    Texture2D* target = it->second;
+    graph.add({view, {lists}, {view}, [this, ctx, target] { drawListView(ctx, target); }});
+    graph.requestSink(view);
+  }
+  return out;
+}
+
+void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
+  p.set("u_izbGrid", grid_);
+  p.set("u_izbCapacity", static_cast<int>(std::min<long long>(capacity_, 0x7fffffff)));
+  p.set("u_izbViewProj", gridViewProj_);
+  p.set("u_izbSize", glm::vec2(ctx.width, ctx.height));
+  for (auto [binding, buffer] : {std::pair{kBindTriangles, scene_.triangles},
+                                 {kBindInstanceBase, scene_.instanceBase},
+                                 {kBindMaterials, scene_.materials},
+                                 {kBindAlpha, scene_.alpha},
+                                 {kBindCounts, counts_},
+                                 {kBindOffsets, offsets_},
+                                 {kBindBlockSums, blockSums_},
+                                 {kBindPixelCell, pixelCell_},
+                                 {kBindSamples, samples_},
+                                 {kBindList, list_},
+                                 {kBindBits, bits_},
+                                 {kBindFallback, fallback_},
+                                 {kBindCounters, counters_},
+                                 {kBindQueue, queue_},
+                                 {kBindDispatch, dispatch_}})
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+}
+
+// Count, prefix sum and scatter: the samples of each light-space cell, contiguous in one buffer.
+void IzbState::runLists(const PartContext& ctx) {
+  for (GLuint b : {counts_, bits_, fallback_, counters_}) clearBuffer(b);
+  const long long cells = static_cast<long long>(grid_) * grid_;
+  if (!error_.empty()) {
+    // No lists: every sample takes the shadow-map test (all fallback bits set), no offsets.
+    const uint32_t ones = ~0u;
+    glClearNamedBufferData(fallback_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+    clearBuffer(offsets_);
+    return;
+  }
+  ProgramSpec count{"izb count", {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}}, ""};
+  Program& pc = ctx.shaders->get(count);
+  if (!pc.valid()) return;
+  pc.use();
+  TextureUnits units;
+  ctx.bindGBuffer(pc, units);
+  setLightUniforms(pc, ctx.scene->light);
+  setCommon(pc, ctx);
+  pc.set("u_izbSpot", ctx.scene->light.type == Light::Type::Spot ? 1 : 0);
+  pc.set("u_izbInstances", static_cast<int>(ctx.scene->instances.size()));
+  pc.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
+  glDispatchCompute(groups(ctx.width, 8), groups(ctx.height, 8), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  for (int step = 1; step <= 3; ++step) {
+    ProgramSpec scan{"izb scan " + std::to_string(step),
+                     {{GL_COMPUTE_SHADER, "passes/izb_scan.comp"}},
+                     "#define IZB_STEP " + std::to_string(step) + "\n"};
+    Program& ps = ctx.shaders->get(scan);
+    if (!ps.valid()) return;
+    ps.use();
+    setCommon(ps, ctx);
+    ps.set("u_izbCells", static_cast<int>(cells));
+    glDispatchCompute(step == 1 ? groups(cells, 1024) : step == 2 ? 1 : groups(cells, 256), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  ProgramSpec scatter{"izb scatter", {{GL_COMPUTE_SHADER, "passes/izb_scatter.comp"}}, ""};
+  Program& ps = ctx.shaders->get(scatter);
+  if (!ps.valid()) return;
+  ps.use();
+  setCommon(ps, ctx);
+  glDispatchCompute(groups(ctx.width, 8), groups(ctx.height, 8), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// Every caster triangle against the samples listed under it; then the bits are what the
+// technique's module reads while shading.
+void IzbState::runTriangles(const PartContext& ctx) {
+  if (error_.empty() && scene_.triangleCount > 0) {
+    for (int step = 1; step <= 3; ++step) {
+      ProgramSpec spec{"izb triangles " + std::to_string(step),
+                       {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}},
+                       "#define IZB_STEP " + std::to_string(step) + "\n"};
+      Program& p = ctx.shaders->get(spec);
+      if (!p.valid()) return;
+      p.use();
+      setCommon(p, ctx);
+      p.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
+      p.set("u_izbQueueCapacity", static_cast<int>(kQueueCapacity));
+      if (step == 1) glDispatchCompute(groups(scene_.triangleCount, 64), 1, 1);
+      if (step == 2) glDispatchCompute(1, 1, 1);
+      if (step == 3) {
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_);
+        glDispatchComputeIndirect(0);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+      }
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    }
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void IzbState::drawListView(const PartContext& ctx, Texture2D* target) {
+  ProgramSpec spec{"view izb lists",
+                   {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/izb_lists.frag"}},
+                   ""};
+  Program& p = ctx.shaders->get(spec);
+  if (!p.valid()) return;
+  Framebuffer fbo("izb lists view");
+  fbo.attach({target}, nullptr);
+  fbo.bind();
+  p.use();
+  setCommon(p, ctx);
+  ctx.drawFullscreen();
+}
+
+void IzbState::bind(const Program& p, TextureUnits& units) const {
+  DepthMapState::bind(p, units);
+  p.set("u_izbWidth", width_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindBits, bits_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindFallback, fallback_);
+}
+
+uint32_t IzbState::counter(int index) const {
+  uint32_t c[3] = {0, 0, 0};
+  if (counters_) glGetNamedBufferSubData(counters_, 0, sizeof c, c);
+  return c[index];
+}
+
+std::string IzbState::status() const {
+  if (!error_.empty()) return error_;
+  if (!counters_) return "";
+  const uint32_t overflow = overflowCount();
+  std::string s = std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells, " +
+                  std::to_string(counter(2)) + " rows of large triangles queued";
+  if (overflow > 0)
+    s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +
+         " samples use the shadow-map test (raise izb.capacity)";
+  return s;
+}
+
+// Texel equivalents: the depth map plus every buffer, one 32-bit word per texel.
+long long IzbState::texels() const {
+  const long long pixels = static_cast<long long>(width_) * height_;
+  const long long cells = static_cast<long long>(grid_) * grid_;
+  const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * (1 + kSampleBytes / 4) + capacity_ +
+                          2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
+  return DepthMapState::texels() + words;
+}
+
+}  // namespace sl

@@ -1,0 +1,65 @@
+// Per-viewport state of the irregular z-buffer: the eye samples of the G-buffer binned into a
+// light-space grid (count, prefix sum, scatter: one index buffer), every caster triangle tested
+// exactly against the samples listed under the cells it covers, one shadow bit per sample.
+// It keeps the depth map of DepthMapState as the fallback for samples that did not fit.
+#pragma once
+
+#include "depth/depth_map_state.h"
+
+#include <cstdint>
+#include <string>
+
+namespace sl {
+
+// The scene's triangles in world space for the tests (positions, own id, material, uvs) and
+// the alpha of masked materials' textures, rebuilt when the scene or its time changes.
+struct IzbSceneBuffers {
+  ~IzbSceneBuffers();
+  void update(const Scene& scene, double time);
+  GLuint triangles = 0, instanceBase = 0, materials = 0, alpha = 0;
+  uint32_t triangleCount = 0;
+  long long bytes = 0;
+
+ private:
+  const Scene* scene_ = nullptr;
+  double time_ = -1.0;
+  size_t signature_ = 0;
+};
+
+class IzbState : public DepthMapState {
+ public:
+  IzbState();
+  ~IzbState() override;
+  void configure(const ParamSet& params) override;
+  std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
+  void bind(const Program& p, TextureUnits& units) const override;
+  std::vector<std::string> views() const override { return {"izb-lists"}; }
+  std::string status() const override;
+  long long texels() const override;
+  // Samples of the last frame that did not fit in the lists (read back from the GPU).
+  uint32_t overflowCount() const { return counter(0); }
+  uint32_t listedCount() const { return counter(1); }  // samples binned into the grid (fitting or not)
+
+ private:
+  void ensureBuffers(int width, int height, int grid);
+  void runLists(const PartContext& ctx);
+  void runTriangles(const PartContext& ctx);
+  void drawListView(const PartContext& ctx, Texture2D* target);
+  void setCommon(const Program& p, const PartContext& ctx) const;
+  uint32_t counter(int index) const;  // 0 overflowed, 1 listed, 2 queued chunks (a readback)
+
+  IzbSceneBuffers scene_;
+  // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], samples[pixels],
+  // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters (overflowed,
+  // listed, queued chunks), the queue of large triangles' chunks and its indirect dispatch
+  GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
+         counters_ = 0, queue_ = 0, dispatch_ = 0;
+  int width_ = 0, height_ = 0, grid_ = 0;
+  long long capacity_ = 0;
+  int gridParam_ = 512;
+  double capacityPct_ = 100.0;
+  std::string error_;  // why the lists are not built (layout with several views), shown as status
+  glm::mat4 gridViewProj_{1.0f};
+};
+
+}  // namespace sl
