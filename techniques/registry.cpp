@@ -9,6 +9,7 @@
 #include "prefiltered/prefiltered_representations.h"
 #include "layouts/psm.h"
 #include "layouts/tsm.h"
+#include "reconstruction/reconstruction.h"
 
 namespace sl {
 
@@ -87,6 +88,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
     registerPrefilteredRepresentations(v);
+    registerReconstructionRepresentations(v);
     return v;
   }();
   return list;
@@ -96,6 +98,7 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
   static const auto list = [] {
     std::vector<std::unique_ptr<Accumulation>> v;
     registerAccumulations(v);
+    registerForwardAccumulation(v);
     return v;
   }();
   return list;
@@ -184,6 +187,7 @@ const std::vector<Preset>& allPresets() {
          {"fit.sdsm=on"}},
     };
     addPrefilteredPresets(v);
+    addReconstructionPresets(v);
     return v;
   }();
   return presets;
