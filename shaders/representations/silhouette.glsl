@@ -52,5 +52,6 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   return t10;
 }
 
-// How far from the receiver (in texels) the reconstruction reads: its four corner samples.
-float representationFilterRadius() { return 0.5; }
+// How far from the receiver (in texels) the filter reads: scales the slope bias. As the nearest
+// test: the corner a receiver takes is its nearest one except beside an edge.
+float representationFilterRadius() { return 0.0; }

@@ -116,7 +116,7 @@ class ForwardAccumulation : public Accumulation {
              .type = ParamType::Float,
              .min = 1,
              .max = 16,
-             .defaultValue = 2,
+             .defaultValue = 4,
              .unit = "pixels",
              .help = "side of the square each light sample lights in the eye view (Zhang's splat); smaller: more "
                      "holes"},
