@@ -14,7 +14,7 @@ SilhouetteMapState::~SilhouetteMapState() {
 void SilhouetteMapState::prepare(int size, int layers) {
   depth_.prepare(size, layers);
   if (points_ && points_.width() == size && points_.layers() == layers) return;
-  points_ = Texture2D::array(GL_RG32F, size, size, layers, 1, "silhouette map");
+  points_ = Texture2D::array(GL_RG16F, size, size, layers, 1, "silhouette map");
   fbos_.clear();
   for (int l = 0; l < layers; ++l) {
     fbos_.emplace_back("silhouette map layer " + std::to_string(l));

@@ -1,10 +1,11 @@
 // Shadow silhouette maps (Sen, Cammarano and Hanrahan 2003): beside the depth map (a layer per
 // light view) a silhouette map of the same size, offset by half a texel so that its texel
 // corners are the depth samples, that keeps one point of a silhouette edge per texel in
-// texel-local coordinates (RG32F, -1 where no edge passes). After the shadow pass the light's
-// silhouette edges (CPU, from mesh adjacency) are drawn into it: a geometry shader widens each
-// edge to a quad of one texel on every side (conservative), the fragment shader clips the edge
-// to its texel and stores the clipped part's midpoint.
+// texel-local coordinates (RG16F: 1/2048 of a texel is finer than any edge needs; half the
+// bytes of RG32F to clear and read on a software rasterizer; -1 where no edge passes). After the shadow pass the
+// light's silhouette edges (CPU, from mesh adjacency) are drawn into it: a geometry shader widens each edge to a quad
+// of one texel on every side (conservative), the fragment shader clips the edge to its texel and stores the clipped
+// part's midpoint.
 #pragma once
 
 #include "depth/depth_map_state.h"
