@@ -93,9 +93,10 @@ const std::vector<glm::vec3>& SilhouetteEdges::update(const Scene& scene, double
   // A scene edited in place (tests drop instances, move the light) at the same address is
   // caught by its counts and its light.
   const size_t shape = scene.triangleCount() * 31 + scene.meshes.size() * 7 + scene.instances.size();
-  if (&scene != scene_ || shape != triangles_) {
+  if (&scene != scene_ || shape != triangles_ || scene.sourcePath != source_) {
     scene_ = &scene;
     triangles_ = shape;
+    source_ = scene.sourcePath;
     meshes_.clear();
     for (const Mesh& mesh : scene.meshes) meshes_.push_back(buildMeshEdges(mesh));
     time_ = -1e30;

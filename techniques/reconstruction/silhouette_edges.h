@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sl {
@@ -37,6 +38,7 @@ class SilhouetteEdges {
  private:
   const Scene* scene_ = nullptr;
   size_t triangles_ = 0;
+  std::string source_;
   std::vector<MeshEdges> meshes_;
   std::vector<glm::vec3> segments_;
   double time_ = -1e30;
