@@ -10,6 +10,7 @@
 #include "prefiltered/prefiltered_representations.h"
 #include "layouts/psm.h"
 #include "layouts/tsm.h"
+#include "reconstruction/reconstruction.h"
 
 namespace sl {
 
@@ -89,6 +90,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     registerDepthRepresentations(v);
     registerPrefilteredRepresentations(v);
     registerIrregularRepresentations(v);
+    registerReconstructionRepresentations(v);
     return v;
   }();
   return list;
@@ -98,6 +100,7 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
   static const auto list = [] {
     std::vector<std::unique_ptr<Accumulation>> v;
     registerAccumulations(v);
+    registerForwardAccumulation(v);
     return v;
   }();
   return list;
@@ -187,6 +190,7 @@ const std::vector<Preset>& allPresets() {
     };
     addPrefilteredPresets(v);
     addIrregularPresets(v);
+    addReconstructionPresets(v);
     return v;
   }();
   return presets;

@@ -1,0 +1,141 @@
+// Forward shadow mapping (Zhang 1998): instead of looking the map up from every eye pixel
+// (backward), every light-view sample is sent forward into the eye view and lights the eye
+// pixels it covers that show the same surface. Pixels no sample reaches stay dark: the holes of
+// forward mapping where one light texel spans more than a splat of eye pixels.
+//
+// As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
+// is the eye view's depth buffer; one pass draws a point per light texel (its world position
+// rebuilt from the depth it stores), sized forward.splat pixels, into the visibility target.
+// The renderer's own visibility pass (the backward nearest test) runs only for the
+// `forward-holes` view, which compares the two.
+#include "reconstruction/reconstruction.h"
+
+#include "gl/gl_util.h"
+#include "gl/shader_library.h"
+#include "gl/texture_units.h"
+#include "render/frame_graph.h"
+#include "render/renderer.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace sl {
+
+namespace {
+
+class ForwardState : public AccumulationState {
+ public:
+  ~ForwardState() override {
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+  }
+  std::vector<std::string> views() const override { return {"forward-holes"}; }
+  bool addPasses(FrameGraph& graph, AccumulationContext& ctx) override;
+  std::string status() const override { return std::to_string(points_) + " light samples splatted"; }
+
+ private:
+  void splat(const AccumulationContext& c);
+  GLuint vao_ = 0;
+  long long points_ = 0;
+};
+
+void ForwardState::splat(const AccumulationContext& c) {
+  ProgramSpec spec{
+      "forward splat",
+      {{GL_VERTEX_SHADER, "accumulation/forward_splat.vert"}, {GL_FRAGMENT_SHADER, "accumulation/forward_splat.frag"}},
+      "#define SL_DEFERRED\n" + c.techniquePrelude};
+  Program& p = c.shaders->get(spec);
+  Framebuffer fbo("forward splats");
+  fbo.attach({c.finalVisibilityTex}, nullptr);
+  fbo.bind();
+  glViewport(0, 0, c.width, c.height);
+  const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};  // no sample reached it: unlit
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, dark);
+  if (!p.valid()) return;
+  p.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(p, units);  // depth map, light views, G-buffer, parameters
+  const int size = static_cast<int>(c.params->i("shadowmap.size"));
+  p.set("u_eyeViewProj", c.proj * c.view);
+  p.set("u_mapSize", size);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindVertexArray(vao_);
+  points_ = static_cast<long long>(size) * size;
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_));
+  glBindVertexArray(0);
+  glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+bool ForwardState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
+  if (!vao_) {
+    glCreateVertexArrays(1, &vao_);  // attribute-less: the vertex shader reads the map by gl_VertexID
+    label(GL_VERTEX_ARRAY, vao_, "forward splats");
+  }
+  const AccumulationContext c = ctx;
+  graph.add(
+      {"forward-splat" + ctx.viewportTag, {"gbuffer", ctx.shadowMap}, {ctx.finalVisibility}, [this, c] { splat(c); }});
+  auto it = ctx.viewTargets.find("forward-holes");
+  if (it != ctx.viewTargets.end() && it->second) {
+    Texture2D* target = it->second;
+    const std::string res = "view.forward-holes" + ctx.viewportTag;
+    graph.add({res, {"gbuffer", ctx.finalVisibility, ctx.rawVisibility}, {res}, [this, c, target] {
+                 ProgramSpec spec{"view forward holes",
+                                  {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
+                                   {GL_FRAGMENT_SHADER, "accumulation/views_forward_holes.frag"}},
+                                  ""};
+                 Program& p = c.shaders->get(spec);
+                 if (!p.valid()) return;
+                 Framebuffer fb("view target");
+                 fb.attach({target}, nullptr);
+                 fb.bind();
+                 glViewport(0, 0, target->width(), target->height());
+                 p.use();
+                 TextureUnits units;
+                 units.bind(p, "u_forward", c.finalVisibilityTex->id());
+                 units.bind(p, "u_backward", c.rawVisibilityTex->id());
+                 units.bind(p, "u_gPosition", c.gPosition->id());
+                 // The context has no fullscreen helper: one triangle from the attribute-less VAO.
+                 glBindVertexArray(vao_);
+                 glDrawArrays(GL_TRIANGLES, 0, 3);
+                 glBindVertexArray(0);
+               }});
+    graph.requestSink(res);
+  }
+  return true;
+}
+
+class ForwardAccumulation : public Accumulation {
+ public:
+  std::string id() const override { return "forward"; }
+  std::string help() const override {
+    return "forward shadow mapping (Zhang 1998): light-view samples splatted into the eye view (holes where they "
+           "do not cover)";
+  }
+  std::vector<ParamDecl> params() const override {
+    return {{.key = "forward.splat",
+             .type = ParamType::Float,
+             .min = 1,
+             .max = 16,
+             .defaultValue = 4,
+             .unit = "pixels",
+             .help = "side of the square each light sample lights in the eye view (Zhang's splat); smaller: more "
+                     "holes"},
+            {.key = "forward.footprint",
+             .type = ParamType::Float,
+             .min = 1,
+             .max = 4,
+             .defaultValue = 1,
+             .unit = "texels",
+             .help = "a sample lights only eye pixels whose surface falls within this many light texels of it "
+                     "(1: its own texel), so a splat does not spread light across a shadow edge"}};
+  }
+  std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<ForwardState>(); }
+};
+
+}  // namespace
+
+void registerForwardAccumulation(std::vector<std::unique_ptr<Accumulation>>& out) {
+  out.push_back(std::make_unique<ForwardAccumulation>());
+}
+
+}  // namespace sl
