@@ -9,6 +9,7 @@
 #include "prefiltered/prefiltered_representations.h"
 #include "layouts/psm.h"
 #include "layouts/tsm.h"
+#include "soft/pcss.h"
 
 namespace sl {
 
@@ -87,6 +88,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
     registerPrefilteredRepresentations(v);
+    registerSoftRepresentations(v);
     return v;
   }();
   return list;
@@ -184,6 +186,7 @@ const std::vector<Preset>& allPresets() {
          {"fit.sdsm=on"}},
     };
     addPrefilteredPresets(v);
+    addSoftPresets(v);
     return v;
   }();
   return presets;

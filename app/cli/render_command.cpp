@@ -94,6 +94,10 @@ int runRenderCommand(int argc, char** argv) {
                           {"accumulation", technique.accumulation->id()}};
       for (const auto& d : technique.params.decls()) j["params"][d.key] = formatValue(d, technique.params.get(d.key));
       j["scene"] = scene.name;
+      // What each part says of itself (e.g. a hard test in an area-light scene ignores the radius).
+      j["status"] = {{"layout", viewport.layout->status()},
+                     {"representation", viewport.representation->status()},
+                     {"accumulation", viewport.accumulation->status()}};
       j["size"] = {width, height};
       j["frames"] = frames;
       j["passes"] = nlohmann::json::array();

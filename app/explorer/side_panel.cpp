@@ -180,8 +180,9 @@ void drawViewportPanels(ExplorerState& state) {
       ImGui::SameLine();
       if (ImGui::SmallButton("Reset")) setViewportPreset(state, i, technique.presetId);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the preset's values");
-      if (slot.viewport->accumulation) {
-        const std::string status = slot.viewport->accumulation->status();
+      for (const PartState* part : {static_cast<const PartState*>(slot.viewport->representation.get()),
+                                    static_cast<const PartState*>(slot.viewport->accumulation.get())}) {
+        const std::string status = part ? part->status() : "";
         if (!status.empty()) ImGui::TextDisabled("%s", status.c_str());
       }
       // setViewportPreset may have replaced the technique: read it again.
