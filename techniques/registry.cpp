@@ -11,6 +11,7 @@
 #include "layouts/psm.h"
 #include "layouts/tsm.h"
 #include "reconstruction/reconstruction.h"
+#include "soft/pcss.h"
 
 namespace sl {
 
@@ -91,6 +92,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     registerPrefilteredRepresentations(v);
     registerIrregularRepresentations(v);
     registerReconstructionRepresentations(v);
+    registerSoftRepresentations(v);
     return v;
   }();
   return list;
@@ -191,6 +193,7 @@ const std::vector<Preset>& allPresets() {
     addPrefilteredPresets(v);
     addIrregularPresets(v);
     addReconstructionPresets(v);
+    addSoftPresets(v);
     return v;
   }();
   return presets;

@@ -30,6 +30,10 @@ struct AccumulationContext;
 struct LayoutJitter {
   glm::vec2 offsetTexels{0.0f};
   float rotationRad = 0.0f;
+  // A point of the area light's disk, in the unit disk (0 = its centre): layouts build the light
+  // frame from the light moved there (layoutLight), so a history over frames integrates the
+  // disk (pixel-correct-soft). No effect when light.radius is 0.
+  glm::vec2 lightSample{0.0f};
 };
 
 // One light view: what one layer of the shadow map sees. Depth stored in the map is always the

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "render/gpu_scene.h"
+#include "scene/scene_effects.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -139,6 +140,8 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   const Technique& t = vp.technique;
   std::string defines = "#define SL_BIAS_MODE " + std::to_string(t.params.i("bias.mode")) + "\n";
   if (scene_->light.type == Light::Type::Spot) defines += "#define SL_SPOT_LIGHT\n";
+  // Soft techniques compile their area-light path only where the scene calls for it.
+  if (sceneEffects(*scene_).areaLight) defines += "#define SL_AREA_LIGHT\n";
   if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";
   defines += "#define SL_LIGHT_VIEWS " + std::to_string(vp.lightSpace.views.size()) + "\n";
   defines += vp.layout->defines() + vp.representation->defines() + vp.accumulation->defines();
@@ -219,6 +222,7 @@ void setLightUniforms(const Program& p, const Light& light) {
   p.set("u_lightDirection", glm::normalize(light.direction));
   p.set("u_lightPosition", light.position);
   p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
+  p.set("u_lightRadius", light.radius);
 }
 
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {

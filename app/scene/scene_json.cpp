@@ -196,7 +196,8 @@ Light parseLight(const JsonReader& r, const json& j) {
   }
   if (const json* rad = JsonReader::find(j, "radius")) {
     l.radius = float(r.number(*rad, where + ".radius"));
-    if (l.radius < 0.0f) r.expected(where + ".radius", "a radius >= 0", *rad);
+    // A double beyond float range becomes Inf here: the soft-shadow filters would turn it into NaN.
+    if (!(l.radius >= 0.0f) || !std::isfinite(l.radius)) r.expected(where + ".radius", "a finite radius >= 0", *rad);
   }
   if (const json* c = JsonReader::find(j, "color")) {
     l.color = r.vec3(*c, where + ".color");

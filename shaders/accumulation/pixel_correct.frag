@@ -7,7 +7,9 @@
 //   a    = w (the paper), or with pc.warmup a = w / (W + w), W = accumulated weight
 //          (min(sum of w, 1), shrunk when the history was interpolated between texels): a
 //          confidence-weighted mean whose memory is capped and fades under reprojection blur;
-//          or with pc.keep_best a = 1 when w beats the best weight W so far, else 0.
+//          or with pc.keep_best a = 1 when w beats the best weight W so far, else 0;
+//          or with pc.area_light (each frame a different point of the light) a = 1 / (frames + 1),
+//          the plain mean over at most pc.area_frames frames (W = frames / pc.area_frames).
 // Needs the technique prelude (layout + representation modules).
 #include "common/surface.glsl"
 #include "common/visibility_term.glsl"
@@ -15,6 +17,7 @@
 #include "accumulation/pixel_correct.glsl"
 
 uniform float u_m;
+uniform float u_pc_area_frames;
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_history;  // r: s(n) (also what is shown), g: linear view depth (0 = none), b: W
@@ -35,8 +38,17 @@ void main() {
   float w = pow(c, max(u_m, 1e-3));
   float s = f;
   float a = 1.0, W = w;
+#ifdef PC_AREA_LIGHT
+  // pc.area_light: every frame tests one point of the light's disk, so the area light's
+  // visibility is the plain mean of the tests; W holds the frames averaged over pc.area_frames.
+  W = 1.0 / u_pc_area_frames;
+#endif
   if (h.state == PC_VALID) {
-#ifdef PC_KEEP_BEST
+#if defined(PC_AREA_LIGHT)
+    float frames = h.W * u_pc_area_frames;
+    a = 1.0 / (frames + 1.0);
+    W = min(frames + 1.0, u_pc_area_frames) / u_pc_area_frames;
+#elif defined(PC_KEEP_BEST)
     // pc.keep_best, the m -> infinity limit of eq. 6: the most confident test so far wins
     // outright; W holds its weight (shrunk when the history is resampled between texels).
     a = w > h.W ? 1.0 : 0.0;

@@ -32,6 +32,15 @@ LayoutJitter pixelCorrectJitter(const ParamSet& params, int index) {
     j.offsetTexels = glm::vec2(halton(i, 2) - 0.5f, halton(i, 3) - 0.5f) * a;
   }
   if (params.b("pc.rotate")) j.rotationRad = (2.0f * halton(i, 5) - 1.0f) * glm::radians(params.f("pc.rotation_deg"));
+  if (params.b("pc.area_light")) {
+    // Halton(7, 11), independent of the texel jitter's bases, mapped to the disk by the
+    // concentric map (Shirley & Chiu 1997): uniform in area, strata stay compact.
+    const float a = 2.0f * halton(i, 7) - 1.0f, b = 2.0f * halton(i, 11) - 1.0f;
+    const float pi4 = glm::quarter_pi<float>();
+    if (a != 0.0f || b != 0.0f)
+      j.lightSample = std::abs(a) > std::abs(b) ? a * glm::vec2(std::cos(pi4 * b / a), std::sin(pi4 * b / a))
+                                                : b * glm::vec2(std::sin(pi4 * a / b), std::cos(pi4 * a / b));
+  }
   return j;
 }
 
@@ -164,6 +173,7 @@ bool PixelCorrectState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
   if (params.choice("pc.history_filter") == "catmull-rom") prelude += "#define PC_CATMULL_ROM\n";
   if (params.b("pc.reject_neighbours")) prelude += "#define PC_REJECT_NEIGHBOURS\n";
   if (keepBest_) prelude += "#define PC_KEEP_BEST\n";
+  if (params.b("pc.area_light")) prelude += "#define PC_AREA_LIGHT\n";
 
   // One scene pass, as in the paper: test, reprojection, update and shading with multiple
   // render targets; the previous-frame position comes from the vertex shader.
@@ -303,6 +313,20 @@ class PixelCorrectAccumulation : public Accumulation {
          .defaultValue = 10,
          .unit = "degrees",
          .help = "rotation range: angles in [-a, a]"},
+        {.key = "pc.area_light",
+         .type = ParamType::Bool,
+         .defaultValue = 0,
+         .help = "beyond the paper (its future work): each frame's map is seen from another point of the area light "
+                 "(Halton over the disk) and the history is the plain mean of the last pc.area_frames tests, which "
+                 "converges to the area light's visibility (no effect on the light when light.radius is 0)"},
+        {.key = "pc.area_frames",
+         .type = ParamType::Int,
+         .min = 2,
+         .max = 1024,
+         .defaultValue = 256,
+         .unit = "frames",
+         .help = "with pc.area_light: the mean's memory (the update weight never drops below 1/this)",
+         .logScale = true},
         {.key = "pc.pause_jitter",
          .type = ParamType::Bool,
          .defaultValue = 0,

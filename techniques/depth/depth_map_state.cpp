@@ -1,6 +1,7 @@
 #include "depth/depth_map_state.h"
 
 #include "gl/texture_units.h"
+#include "scene/scene_effects.h"
 
 namespace sl {
 
@@ -48,6 +49,11 @@ void DepthMapState::bind(const Program& p, TextureUnits& units) const {
 
 long long DepthMapState::texels() const {
   return static_cast<long long>(depth_.width()) * depth_.height() * std::max(depth_.layers(), 1);
+}
+
+std::string DepthMapState::addPasses(FrameGraph&, const PartContext& ctx) {
+  status_ = ctx.scene ? hardShadowNote(sceneEffects(*ctx.scene)) : "";
+  return ctx.shadowMap;
 }
 
 }  // namespace sl

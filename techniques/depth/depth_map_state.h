@@ -18,6 +18,9 @@ class DepthMapState : public RepresentationState {
   void bind(const Program& p, TextureUnits& units) const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;
+  // Remembers whether the scene has an area light, which a hard depth test ignores (status).
+  std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
+  std::string status() const override { return status_; }
 
  private:
   void createSampler();
@@ -25,6 +28,7 @@ class DepthMapState : public RepresentationState {
   GLuint sampler_ = 0;
   Texture2D depth_;
   std::vector<Framebuffer> layers_;
+  std::string status_;
 };
 
 }  // namespace sl

@@ -36,7 +36,7 @@ std::pair<float, float> splitRange(const CameraFrustum& cam, const Bounds& bound
 // warp of the split's receivers).
 LightView cascadeView(const LayoutInput& in, const CameraFrustum& cam, float a, float b,
                       const std::vector<glm::vec3>& casters) {
-  const Light& light = in.scene->light;
+  const Light light = layoutLight(in);
   const int size = in.params->i("shadowmap.size");
   const bool warp = in.params->choice("cascades.warp") == "lispsm";
   if (light.type != Light::Type::Spot && !warp)

@@ -81,7 +81,7 @@ class FacePartitionedLayout : public Layout {
       const glm::vec3 d = glm::normalize(dir);
       const glm::mat4 faceView = glm::lookAt(eye, eye + d, std::abs(glm::dot(d, up)) > 0.99f ? glm::vec3(inv[0]) : up);
       space.views.push_back(
-          lispsmView(in.scene->light, faceView, receivers, casters, lispsmN(*in.params), size, in.jitter));
+          lispsmView(layoutLight(in), faceView, receivers, casters, lispsmN(*in.params), size, in.jitter));
     }
     return space;
   }

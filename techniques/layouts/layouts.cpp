@@ -16,7 +16,7 @@ class UniformLayout : public Layout {
   }
   std::string glslModule() const override { return "layouts/single_matrix.glsl"; }
   LightSpace compute(const LayoutInput& in) const override {
-    const Light& light = in.scene->light;
+    const Light light = layoutLight(in);
     glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
     auto corners = boxCorners(in.scene->boundsAt(in.time));
     int size = in.params->i("shadowmap.size");
@@ -40,7 +40,7 @@ class FocusedLayout : public Layout {
   std::vector<ParamDecl> params() const override { return sdsmParams(); }
   std::unique_ptr<LayoutState> createState() const override { return std::make_unique<SdsmState>(*this); }
   LightSpace compute(const LayoutInput& in) const override {
-    const Light& light = in.scene->light;
+    const Light light = layoutLight(in);
     Bounds bounds = in.scene->boundsAt(in.time);
     glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
     auto casters = boxCorners(bounds);

@@ -16,6 +16,22 @@ glm::mat4 lightViewMatrix(const Light& light, float roll) {
   return view;
 }
 
+Light sampledLight(const Light& light, glm::vec2 diskPoint) {
+  if (!(light.radius > 0.0f) || diskPoint == glm::vec2(0.0f)) return light;
+  const glm::vec3 d = glm::normalize(light.direction);
+  const glm::vec3 t1 = glm::normalize(glm::cross(d, std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+  const glm::vec3 t2 = glm::cross(d, t1);
+  const glm::vec3 offset = light.radius * (diskPoint.x * t1 + diskPoint.y * t2);
+  Light out = light;
+  if (light.type == Light::Type::Spot)
+    out.position = light.position + offset;
+  else
+    out.direction = glm::normalize(d + offset);
+  return out;
+}
+
+Light layoutLight(const LayoutInput& in) { return sampledLight(in.scene->light, in.jitter.lightSample); }
+
 std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj) {
   glm::mat4 inv = glm::inverse(proj * view);
   std::vector<glm::vec3> out;
@@ -207,12 +223,12 @@ FocusBody focusBody(const LayoutInput& in) {
   b.casters = boxCorners(b.bounds);
   b.receivers = clipFrustumToBox(in.cameraView, in.cameraProj, b.bounds);
   if (b.receivers.empty()) b.receivers = b.casters;  // looking away from the scene: nothing to focus on
-  b.lightView = lightViewMatrix(in.scene->light, in.jitter.rotationRad);
+  b.lightView = lightViewMatrix(layoutLight(in), in.jitter.rotationRad);
   return b;
 }
 
 LightSpace focusedMap(const LayoutInput& in, const FocusBody& b) {
-  const Light& light = in.scene->light;
+  const Light light = layoutLight(in);
   if (light.type == Light::Type::Spot)
     return LightSpace::single(
         fitPerspective(light, b.lightView, b.receivers, b.casters, b.size, true, false, in.jitter), b.size);

@@ -13,6 +13,12 @@ namespace sl {
 // light's forward axis (pixel-correct jitter).
 glm::mat4 lightViewMatrix(const Light& light, float roll);
 
+// The light moved to `diskPoint` (unit disk) of its area: spot, the apex moved by radius in the
+// disk's plane; directional, the direction tilted by radius (tan of the angular radius).
+Light sampledLight(const Light& light, glm::vec2 diskPoint);
+// The light a layout builds its views from: the scene's, at the jitter's light sample.
+Light layoutLight(const LayoutInput& in);
+
 // The 8 world-space corners of the camera frustum.
 std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj);
 

@@ -205,7 +205,7 @@ class LispsmLayout : public Layout {
     auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
     if (receivers.empty()) receivers = casters;
     return LightSpace::single(
-        lispsmView(in.scene->light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter), size);
+        lispsmView(layoutLight(in), in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter), size);
   }
 };
 

@@ -153,7 +153,7 @@ class PerspectiveLayout : public Layout {
 };
 
 LightSpace PerspectiveLayout::compute(const LayoutInput& in) const {
-  const Light& light = in.scene->light;
+  const Light light = layoutLight(in);
   const FocusBody fb = focusBody(in);
   const Bounds& bounds = fb.bounds;
   const int size = fb.size;

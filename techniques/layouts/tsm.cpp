@@ -140,7 +140,7 @@ class TrapezoidalLayout : public Layout {
 };
 
 LightSpace TrapezoidalLayout::compute(const LayoutInput& in) const {
-  const Light& light = in.scene->light;
+  const Light light = layoutLight(in);
   const FocusBody fb = focusBody(in);
   const int size = fb.size;
   const auto& casters = fb.casters;

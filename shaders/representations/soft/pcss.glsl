@@ -1,0 +1,135 @@
+// Percentage-closer soft shadows (Fernando 2005) over any layout. The blocker search runs in its
+// own screen-space pass (representations/soft/blocker_search.frag) and leaves per pixel, in
+// u_pcssBlocker: x the receiver-to-blocker distance along the light, y the penumbra radius at the
+// receiver, both world units (the same in every cascade), z 1 where it found a blocker. The test
+// here converts the penumbra to texels of the view it reads and filters with a rotated Poisson
+// disk of that radius. SL_AREA_LIGHT (renderer prelude, light.radius > 0) selects that path;
+// without it the test is a minimum-kernel PCF (a point light has no penumbra).
+#include "common/receiver_plane.glsl"
+#include "representations/soft/poisson_disk.glsl"
+uniform sampler2DArray u_shadowMap;
+uniform float u_pcss_light_scale;
+uniform float u_pcss_blocker_samples;
+uniform float u_pcss_filter_samples;
+uniform float u_pcss_rotate;
+uniform float u_pcss_max_radius;
+uniform float u_lightRadius;  // the scene's light.radius (spot: world disk radius; sun: tan)
+
+const float kPcssMinRadius = 1.0;  // texels: the filter never gets sharper than ~3x3 PCF
+
+float pcssLightSize() { return u_lightRadius * u_pcss_light_scale; }
+
+// Light-view linear distance of a stored depth in `view`.
+float pcssLinear(float stored, int view) {
+  return lightViewRange[view].x + stored * (lightViewRange[view].y - lightViewRange[view].x);
+}
+
+// World size of one texel of `view` at light-view distance `dist` (perspective maps: the texel
+// at unit distance times the distance; orthographic: constant).
+float pcssTexelWorld(int view, float dist) {
+#ifdef SL_PERSPECTIVE_MAP
+  if (lightViewRange[view].w > 0.5) return lightViewRange[view].z * max(dist, 1e-6);
+#endif
+  return lightViewRange[view].z;
+}
+
+// Penumbra radius at a receiver at distance dR from blockers at dB (light-view distances), by
+// similar triangles: sun (angular radius tan = size) size * (dR - dB); spot disk of radius size
+// at the light's origin: size * (dR - dB) / dB.
+float pcssPenumbraWorld(float dR, float dB) {
+  float gap = max(dR - dB, 0.0);
+#ifdef SL_SPOT_LIGHT
+  return pcssLightSize() * gap / max(dB, 1e-4);
+#else
+  return pcssLightSize() * gap;
+#endif
+}
+
+// Radius in texels of `view` of the region that can hold blockers of a receiver at dR: the
+// cone from the receiver to the light disk, widest at the view's near plane, in texels there.
+float pcssSearchTexels(int view, float dR) {
+  float nearD = max(lightViewRange[view].x, 1e-4);
+#ifdef SL_SPOT_LIGHT
+  float world = pcssLightSize() * max(dR - nearD, 0.0) / max(dR, 1e-4);
+  float texels = world / pcssTexelWorld(view, nearD);
+#else
+  float texels = pcssLightSize() * max(dR - nearD, 0.0) / pcssTexelWorld(view, dR);
+#endif
+  return clamp(texels, kPcssMinRadius, u_pcss_max_radius);
+}
+
+mat2 pcssRotation() {
+  float angle = u_pcss_rotate > 0.5 ? 6.2831853 * softNoise(gl_FragCoord.xy) : 0.0;
+  return mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+}
+
+// Fraction of Poisson taps within `radius` texels that the receiver passes.
+float pcssFilter(vec3 uvLayer, float receiverDepth, float radius, int samples) {
+  vec2 mapSize = vec2(textureSize(u_shadowMap, 0).xy);
+  mat2 rot = pcssRotation();
+  float lit = 0.0;
+  int n = clamp(samples, 1, kSoftPoissonCount);
+  for (int i = 0; i < n; ++i) {
+    vec2 tap = uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize;
+    float depth = receiverDepthAt(receiverDepth, tap, mapSize);
+    lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
+  }
+  return lit / float(n);
+}
+
+// The blocker search: x receiver-to-blocker distance, y penumbra radius (world), z 1 = found,
+// w the search radius (texels of this view).
+vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
+  int view = int(uvLayer.z + 0.5);
+  vec2 mapSize = vec2(textureSize(u_shadowMap, 0).xy);
+  float dR = pcssLinear(receiverDepth, view);
+  float radius = pcssSearchTexels(view, dR);
+  mat2 rot = pcssRotation();
+  int n = clamp(int(u_pcss_blocker_samples + 0.5), 1, kSoftPoissonCount);
+  float sum = 0.0, count = 0.0;
+  for (int i = 0; i < n; ++i) {
+    vec2 tap = uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize;
+    float stored = texture(u_shadowMap, vec3(tap, uvLayer.z)).r;
+    if (stored < receiverDepthAt(receiverDepth, tap, mapSize)) {
+      sum += stored;
+      count += 1.0;
+    }
+  }
+  if (count < 0.5) return vec4(0.0, 0.0, 0.0, radius);
+  float dB = pcssLinear(sum / count, view);
+  return vec4(max(dR - dB, 0.0), pcssPenumbraWorld(dR, dB), 1.0, radius);
+}
+
+#if defined(SL_AREA_LIGHT) && !defined(SL_PCSS_SEARCH_PASS)
+uniform sampler2D u_pcssBlocker;
+
+vec4 pcssBlockerHere() { return texelFetch(u_pcssBlocker, ivec2(gl_FragCoord.xy), 0); }
+
+// Filter radius (texels of `view`) of the penumbra found at this pixel.
+float pcssRadiusTexels(vec4 b, int view, float receiverDepth) {
+  float dR = pcssLinear(receiverDepth, view);
+  float r = b.y / pcssTexelWorld(view, dR);
+  // NaN fails every comparison: max/min keep a finite radius whatever came in.
+  return isnan(r) ? kPcssMinRadius : clamp(r, kPcssMinRadius, u_pcss_max_radius);
+}
+
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  vec4 b = pcssBlockerHere();
+  // No blocker in the whole region the light can see the receiver through: fully lit.
+  if (b.z < 0.5) return 1.0;
+  int view = int(uvLayer.z + 0.5);
+  return pcssFilter(uvLayer, receiverDepth, pcssRadiusTexels(b, view, receiverDepth), int(u_pcss_filter_samples + 0.5));
+}
+
+// The slope bias scales with how far the filter reads (receiver-plane bias is the presets' mode).
+float representationFilterRadius() {
+  vec4 b = pcssBlockerHere();
+  return b.z < 0.5 ? kPcssMinRadius : clamp(b.y / lightViewRange[0].z, kPcssMinRadius, u_pcss_max_radius);
+}
+#else
+// Point light (or inside the search pass): a minimum-kernel PCF over the same disk.
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  return pcssFilter(uvLayer, receiverDepth, kPcssMinRadius, int(u_pcss_filter_samples + 0.5));
+}
+float representationFilterRadius() { return kPcssMinRadius; }
+#endif

@@ -1,0 +1,169 @@
+// PCSS on llvmpipe: the blocker search is a pass of its own only under an area light, the result
+// is finite and in [0,1] for lights from a point to a huge disk and on every layout, a search that
+// finds nothing leaves the receiver lit, and on `contact` it is at least twice as close to the
+// area-light reference as fixed-width PCF.
+#include "metrics/metrics.h"
+#include "reference/reference.h"
+#include "scene/scene_effects.h"
+#include "tests/gl_test_util.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace sl {
+namespace {
+
+using test::Frame;
+using test::GlHarness;
+
+std::vector<std::string> passNames(const Renderer& r) {
+  std::vector<std::string> n;
+  for (const auto& p : r.stats().passes) n.push_back(p.name);
+  return n;
+}
+
+Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = w;
+  in.height = hgt;
+  in.cut = true;
+  h.renderer.render(in, {&vp});
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return test::readFrame(h.renderer, vp, w, hgt);
+}
+
+ErrorMetrics compare(const Scene& scene, const Frame& f) {
+  ReferenceTracer tracer(scene, 0.0);
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<float> vis(n);
+  std::vector<uint8_t> valid(n);
+  for (size_t i = 0; i < n; ++i) {
+    vis[i] = f.visibility[2 * i];
+    valid[i] = f.position[4 * i + 3] > 0.5f;
+  }
+  return compareVisibility(vis.data(), ref.data(), valid.data(), n);
+}
+
+TEST(PcssGl, BlockerSearchPassOnlyUnderAnAreaLight) {
+  GlHarness h;
+  const Scene soft = loadScene("soft", defaultAssetsDir());
+  const Scene basic = loadScene("basic", defaultAssetsDir());
+  for (const char* preset : {"pcss", "pcss-cascaded"}) {
+    h.renderer.setScene(soft);
+    Viewport vp(makeTechnique(preset, {"shadowmap.size=256"}));
+    render(h, soft, vp, 64, 40);
+    EXPECT_EQ(passNames(h.renderer),
+              (std::vector<std::string>{"gbuffer", "shadowmap[0]", "blocker-search[0]", "shade[0]"}))
+        << preset;
+    EXPECT_NE(vp.representation->status().find("light radius 0.03"), std::string::npos) << vp.representation->status();
+
+    h.renderer.setScene(basic);
+    Viewport hard(makeTechnique(preset, {"shadowmap.size=256"}));
+    hard.shownViews = hard.availableViews();  // its own views must not bring the search back
+    render(h, basic, hard, 64, 40);
+    for (const auto& n : passNames(h.renderer)) EXPECT_EQ(n.rfind("blocker", 0), std::string::npos) << n;
+    EXPECT_NE(hard.representation->status().find("no blocker search"), std::string::npos);
+  }
+  // The views read the search: shown, they run after it.
+  h.renderer.setScene(soft);
+  Viewport vp(makeTechnique("pcss", {"shadowmap.size=256"}));
+  vp.shownViews = {"blocker-depth", "penumbra"};
+  render(h, soft, vp, 64, 40);
+  const auto names = passNames(h.renderer);
+  const auto search = std::find(names.begin(), names.end(), "blocker-search[0]");
+  ASSERT_NE(search, names.end());
+  EXPECT_LT(search, std::find(names.begin(), names.end(), "view.penumbra[0]"));
+  EXPECT_NE(std::find(names.begin(), names.end(), "view.blocker-depth[0]"), names.end());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(PcssGl, HardTechniquesSayTheyIgnoreTheRadius) {
+  GlHarness h;
+  const Scene soft = loadScene("soft", defaultAssetsDir());
+  h.renderer.setScene(soft);
+  Viewport vp(makeTechnique("pcf", {"shadowmap.size=256"}));
+  render(h, soft, vp, 32, 20);
+  EXPECT_EQ(vp.representation->status(), "hard: ignores light radius 0.03");
+  const Scene basic = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(basic);
+  render(h, basic, vp, 32, 20);
+  EXPECT_EQ(vp.representation->status(), "");
+}
+
+TEST(PcssGl, FiniteAndInRangeFromPointToHugeLights) {
+  GlHarness h;
+  struct Case {
+    const char* scene;
+    float radius;  // < 0: the scene's own
+  };
+  const Case cases[] = {{"basic", -1},      {"soft", -1},        {"contact", -1},     {"soft", 5.0f},
+                        {"contact", 1e-6f}, {"spotlight", 0.4f}, {"spotlight", 50.0f}};
+  for (const Case& c : cases) {
+    Scene scene = loadScene(c.scene, defaultAssetsDir());
+    if (c.radius >= 0) scene.light.radius = c.radius;
+    h.renderer.setScene(scene);
+    for (const char* preset : {"pcss", "pcss-cascaded"}) {
+      for (const char* rotate : {"pcss.rotate=on", "pcss.rotate=off"}) {
+        Viewport vp(makeTechnique(preset, {"shadowmap.size=256", rotate}));
+        vp.shownViews = vp.availableViews();
+        const Frame f = render(h, scene, vp, 64, 40);
+        EXPECT_EQ(f.nonfinite(), 0) << c.scene << " " << c.radius << " " << preset;
+        float lo = 1, hi = 0;
+        for (size_t i = 0; i < f.visibility.size(); i += 2) {
+          lo = std::min(lo, f.visibility[i]);
+          hi = std::max(hi, f.visibility[i]);
+        }
+        EXPECT_GE(lo, 0.0f) << c.scene << " " << preset;
+        EXPECT_LE(hi, 1.0f) << c.scene << " " << preset;
+        // Every scene here has a shadow in view and lit ground.
+        EXPECT_LT(lo, 0.5f) << c.scene << " " << c.radius << " " << preset;
+        EXPECT_GT(hi, 0.5f) << c.scene << " " << c.radius << " " << preset;
+      }
+    }
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(PcssGl, SearchThatFindsNothingIsLit) {
+  namespace fs = std::filesystem;
+  const fs::path p = fs::temp_directory_path() / ("shadowlab_pcss_plane_" + std::to_string(::getpid()) + ".json");
+  std::ofstream(p) << R"({"objects":[{"shape":"plane","size":[10,10]}],
+                         "light":{"direction":[0.3,-1,0.2],"radius":0.08},
+                         "cameras":[{"position":[0,6,6],"target":[0,0,0]}]})";
+  const Scene scene = loadScene(p.string(), defaultAssetsDir());
+  fs::remove(p);
+  GlHarness h;
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("pcss", {"shadowmap.size=256"}));
+  const Frame f = render(h, scene, vp, 64, 40);
+  int covered = 0;
+  for (int i = 0; i < f.width * f.height; ++i) {
+    if (f.position[4 * i + 3] < 0.5f) continue;
+    ++covered;
+    EXPECT_EQ(f.visibility[2 * i], 1.0f) << "pixel " << i;
+  }
+  EXPECT_GT(covered, 500);
+}
+
+// The aim of the soft family on its own scene: pcss at most half of pcf's rmse against the
+// area-light reference, on one map and on cascades.
+TEST(PcssGl, ContactPenumbraHalvesPcfError) {
+  GlHarness h;
+  const Scene scene = loadScene("contact", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  auto rmse = [&](const char* preset) {
+    Viewport vp(makeTechnique(preset));
+    return compare(scene, render(h, scene, vp, 192, 108)).rmse;
+  };
+  const double pcf = rmse("pcf"), pcss = rmse("pcss"), cascaded = rmse("pcss-cascaded");
+  EXPECT_GT(pcf, 0.02);  // the scene does call for soft shadows
+  EXPECT_LT(pcss, 0.5 * pcf) << "pcss " << pcss << " pcf " << pcf;
+  EXPECT_LT(cascaded, 0.5 * pcf) << "pcss-cascaded " << cascaded << " pcf " << pcf;
+}
+
+}  // namespace
+}  // namespace sl
