@@ -106,6 +106,8 @@ int runRenderCommand(int argc, char** argv) {
       j["timer"] = renderer.stats().timer;
       j["renderer"] = glRendererName();
       j["nonfinite_pixels"] = nonfinite;
+      j["shadow_texels"] = viewport.shadowTexels();
+      j["status"] = viewport.status();
       j["shader_errors"] = errors;
       j["gl_errors"] = glDebugErrorCount();
       std::ofstream f(args.get("--stats"));
