@@ -186,7 +186,7 @@ const std::vector<Preset>& allPresets() {
          {"fit.sdsm=on"}},
         {"virtual",
          "paged virtual shadow map (Lefohn et al. 2007): 16384² virtual texels over the scene, only the pages and mip "
-         "levels the visible pixels need, in one 2048² atlas, cached while nothing moves; nearest depth test",
+         "levels the visible pixels need, in one 1920² atlas, cached while nothing moves; nearest depth test",
          "virtual",
          "depth-nearest",
          "none",
