@@ -1,7 +1,7 @@
 // Page marking of the virtual shadow map: each covered pixel of the G-buffer projects its
-// footprint into the virtual map and marks the page of the level that matches it (one flag per
-// page of every level, flat: level offsets from the layout state). Several pixels writing the
-// same 1 race harmlessly.
+// footprint into the virtual map and counts itself on the page of the level that matches it
+// (a counter per page of every level, flat as PageAllocator's arrays): the counts decide which
+// pages are coarsened first when the pool is too small.
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "layouts/virtual_common.glsl"
 uniform sampler2D u_gPosition;
@@ -17,5 +17,5 @@ void main() {
   int level = virtualLevelFor(footprint);
   int n = SL_VIRTUAL_PAGES >> level;
   ivec2 cell = clamp(ivec2(floor(uv * float(n))), ivec2(0), ivec2(n - 1));
-  marks[virtualLevelOffset(level) + cell.y * n + cell.x] = 1u;
+  atomicAdd(marks[virtualLevelOffset(level) + cell.y * n + cell.x], 1u);
 }

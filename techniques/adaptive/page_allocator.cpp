@@ -1,6 +1,7 @@
 #include "adaptive/page_allocator.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -50,40 +51,50 @@ int PageAllocator::tileOf(int flatIndex) const {
   return it == resident_.end() ? -1 : it->second.tile;
 }
 
-// The requested pages, the coarsest page always, then coarsening while the pool is too small:
-// every page of the finest level still present becomes its parent (four children share one).
+// The requested pages and the coarsest page; then, while the pool is too small, sibling groups
+// of the finest level still present become their parent, the groups fewest pixels asked for
+// first (the parent inherits their pixels, so a level coarsened next weighs them too).
 std::vector<int> PageAllocator::neededSet(const std::vector<uint32_t>& marks, Frame& f) const {
-  std::vector<std::vector<int>> byLevel(static_cast<size_t>(levels_));
+  std::vector<std::map<int, uint64_t>> byLevel(static_cast<size_t>(levels_));  // page -> pixels
   for (int i = 0; i < flatSize(); ++i) {
     if (marks[static_cast<size_t>(i)] == 0u) continue;
     int level, x, y;
     decode(i, level, x, y);
-    byLevel[static_cast<size_t>(level)].push_back(i);
+    byLevel[static_cast<size_t>(level)][i] += marks[static_cast<size_t>(i)];
     ++f.requested;
   }
-  byLevel.back() = {encode(levels_ - 1, 0, 0)};
-  auto total = [&] {
-    size_t n = 0;
-    for (const auto& l : byLevel) n += l.size();
-    return n;
-  };
-  for (int level = 0; level < levels_ - 1 && total() > static_cast<size_t>(poolTiles_); ++level) {
-    if (byLevel[static_cast<size_t>(level)].empty()) continue;
+  byLevel.back() = {{encode(levels_ - 1, 0, 0), 1}};
+  size_t total = 0;
+  for (const auto& l : byLevel) total += l.size();
+  for (int level = 0; level < levels_ - 1 && total > static_cast<size_t>(poolTiles_); ++level) {
+    auto& pages = byLevel[static_cast<size_t>(level)];
     auto& parents = byLevel[static_cast<size_t>(level + 1)];
-    for (int i : byLevel[static_cast<size_t>(level)]) {
+    std::map<int, std::pair<uint64_t, std::vector<int>>> groups;  // parent -> pixels, children
+    for (const auto& [i, pixels] : pages) {
       int l, x, y;
       decode(i, l, x, y);
-      parents.push_back(encode(level + 1, x / 2, y / 2));
+      auto& g = groups[encode(level + 1, x / 2, y / 2)];
+      g.first += pixels;
+      g.second.push_back(i);
     }
-    std::sort(parents.begin(), parents.end());
-    parents.erase(std::unique(parents.begin(), parents.end()), parents.end());
-    byLevel[static_cast<size_t>(level)].clear();
+    std::vector<std::pair<uint64_t, int>> order;
+    for (const auto& [parent, g] : groups) order.push_back({g.first, parent});
+    std::sort(order.begin(), order.end());
+    for (const auto& [pixels, parent] : order) {
+      if (total <= static_cast<size_t>(poolTiles_)) break;
+      const auto& children = groups[parent].second;
+      total -= children.size();
+      for (int c : children) pages.erase(c);
+      f.coarsened += static_cast<int>(children.size());
+      if (!parents.count(parent)) ++total;
+      parents[parent] += pixels;
+    }
     ++f.coarsenedLevels;
   }
   std::vector<int> needed;
   // Coarse pages first: if the pool is smaller than even the coarse levels, these survive.
   for (int level = levels_ - 1; level >= 0; --level)
-    for (int i : byLevel[static_cast<size_t>(level)]) needed.push_back(i);
+    for (const auto& [i, pixels] : byLevel[static_cast<size_t>(level)]) needed.push_back(i);
   if (needed.size() > static_cast<size_t>(poolTiles_)) needed.resize(static_cast<size_t>(poolTiles_));
   return needed;
 }

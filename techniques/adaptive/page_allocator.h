@@ -34,15 +34,17 @@ class PageAllocator {
   struct Frame {
     int requested = 0;        // pages the pixels asked for
     int needed = 0;           // after the fallback page and any coarsening
-    int coarsenedLevels = 0;  // levels given up because the pool was too small (0 = none)
+    int coarsened = 0;        // pages asked for that got a coarser page (pool too small; 0 = none)
+    int coarsenedLevels = 0;  // levels in which any page was coarsened
     int hits = 0;             // needed pages still valid from earlier frames
     int resident = 0;         // pages in the pool after this frame
     std::vector<int> draw;    // flat page indices to draw this frame (their tile: tileOf)
-    bool exhausted() const { return coarsenedLevels > 0; }
+    bool exhausted() const { return coarsened > 0; }
   };
-  // marks: flatSize() flags (non-zero = a pixel asked for that page). Always keeps the one page
-  // of the coarsest level, so every point has a page; when the pool cannot hold every request,
-  // the finest level's requests are replaced by their parents until it can.
+  // marks: flatSize() counts of the pixels that asked for each page (0 = none). Always keeps the
+  // one page of the coarsest level, so every point has a page. When the pool cannot hold every
+  // request, pages of the finest level are replaced by their parent, four siblings at a time,
+  // those asked for by the fewest pixels first, until the pages fit.
   Frame update(const std::vector<uint32_t>& marks);
 
   int tileOf(int flatIndex) const;  // -1 when not resident

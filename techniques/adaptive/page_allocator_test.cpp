@@ -89,6 +89,27 @@ TEST(PageAllocator, ExhaustedPoolFallsBackToCoarserPages) {
   EXPECT_GE(a.tileOf(a.encode(3, 0, 0)), 0);
 }
 
+TEST(PageAllocator, CoarsensOnlyAsManyPagesAsNeededFewestPixelsFirst) {
+  PageAllocator a;
+  a.configure(8, 6);
+  std::vector<uint32_t> marks(static_cast<size_t>(a.flatSize()), 0u);
+  std::vector<int> busy, quiet;  // two sibling groups of level 0: many pixels, few
+  for (int k = 0; k < 4; ++k) {
+    busy.push_back(a.encode(0, k & 1, k >> 1));
+    quiet.push_back(a.encode(0, 4 + (k & 1), 4 + (k >> 1)));
+  }
+  for (int i : busy) marks[static_cast<size_t>(i)] = 500u;
+  for (int i : quiet) marks[static_cast<size_t>(i)] = 3u;
+  PageAllocator::Frame f = a.update(marks);  // 8 + the coarsest page > 6: one group goes up
+  EXPECT_TRUE(f.exhausted());
+  EXPECT_EQ(f.coarsened, 4);
+  EXPECT_EQ(f.coarsenedLevels, 1);
+  EXPECT_EQ(f.needed, 6);
+  for (int i : busy) EXPECT_GE(a.tileOf(i), 0);
+  for (int i : quiet) EXPECT_EQ(a.tileOf(i), -1);
+  EXPECT_GE(a.tileOf(a.encode(1, 2, 2)), 0);  // the quiet group's parent
+}
+
 TEST(PageAllocator, RejectsMarksOfAnotherSize) {
   PageAllocator a;
   a.configure(4, 4);

@@ -76,7 +76,9 @@ class VirtualState : public LayoutState {
     s << "virtual " << sizes_.virtualSize << "² in " << pages_.poolTiles() << " tiles of " << sizes_.page
       << "²: requested " << frame_.requested << ", resident " << frame_.resident << ", drawn " << draw_.size()
       << ", cache hits " << frame_.hits;
-    if (frame_.exhausted()) s << "; pool exhausted: " << frame_.coarsenedLevels << " level(s) coarser than asked";
+    if (frame_.exhausted())
+      s << "; pool exhausted: " << frame_.coarsened << " pages asked for served coarser, in " << frame_.coarsenedLevels
+        << " level(s)";
     return s.str();
   }
 
