@@ -90,6 +90,26 @@ TEST(VirtualShadowMap, MarksPagesDrawsThemAndKeepsThemCached) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+TEST(VirtualShadowMap, MovingTheLightRedrawsThePages) {
+  test::GlHarness h;
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("virtual"));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = kW;
+  in.height = kH;
+  h.renderer.render(in, {&vp});
+  h.renderer.render(in, {&vp});
+  EXPECT_NE(vp.status().find("drawn 0,"), std::string::npos) << vp.status();
+  scene.light.direction = glm::normalize(scene.light.direction + glm::vec3(0.3f, 0.0f, -0.2f));
+  h.renderer.render(in, {&vp});
+  EXPECT_EQ(vp.status().find("drawn 0,"), std::string::npos) << vp.status();
+  const std::vector<float> moved = vp.visibilityTexture()->readFloats(2);
+  // What a viewport that never saw the old light renders: stale pages would differ from it.
+  EXPECT_EQ(moved, render(h, scene, "virtual", {}).frame.visibility);
+}
+
 TEST(VirtualShadowMap, TinyPoolIsReportedAndDegradesToCoarserPages) {
   test::GlHarness h;
   Scene scene = loadScene("columns", defaultAssetsDir());

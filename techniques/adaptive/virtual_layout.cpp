@@ -152,6 +152,7 @@ class VirtualState : public LayoutState {
   // tiles and uploads the page table.
   void markAndAllocate(const PartContext& ctx) {
     ProgramSpec spec{"virtual marks", {{GL_COMPUTE_SHADER, "passes/virtual_mark.comp"}}, defines()};
+    draw_.clear();  // a marking program that does not build draws nothing (its error is shown)
     Program& p = ctx.shaders->get(spec);
     if (!p.valid()) return;
     const uint32_t zero = 0;
