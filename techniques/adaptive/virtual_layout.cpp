@@ -20,7 +20,8 @@ VirtualSizes virtualSizes(const ParamSet& params) {
   s.pagesPerSide = 1;
   while (s.pagesPerSide * 2 <= wanted && s.pagesPerSide < 4096) s.pagesPerSide *= 2;
   s.virtualSize = s.pagesPerSide * s.page;
-  s.poolSide = std::max(params.i("virtual.pool") / s.page, 1);
+  // At most 255 x 255 tiles: a page-table entry holds tile + 1 in 16 bits (8192² of 32² pages).
+  s.poolSide = std::clamp(params.i("virtual.pool") / s.page, 1, 255);
   s.atlasSize = s.poolSide * s.page;
   return s;
 }
