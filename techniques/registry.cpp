@@ -1,6 +1,7 @@
 // The one list of technique families. A new paper adds its register call here and nothing else.
 #include "technique.h"
 
+#include "adaptive/virtual_layout.h"
 #include "depth/depth_representations.h"
 #include "irregular/irregular.h"
 #include "layouts/cascaded.h"
@@ -80,6 +81,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     registerTrapezoidalLayouts(v);
     registerPerspectiveLayouts(v);
     registerFacePartitionedLayouts(v);
+    registerAdaptiveLayouts(v);
     return v;
   }();
   return list;
@@ -189,6 +191,13 @@ const std::vector<Preset>& allPresets() {
          "depth-nearest",
          "none",
          {"fit.sdsm=on"}},
+        {"virtual",
+         "paged virtual shadow map (Lefohn et al. 2007): 16384² virtual texels over the scene, only the pages and mip "
+         "levels the visible pixels need, in one 1920² atlas, cached while nothing moves; nearest depth test",
+         "virtual",
+         "depth-nearest",
+         "none",
+         {}},
     };
     addPrefilteredPresets(v);
     addIrregularPresets(v);

@@ -138,6 +138,16 @@ class LayoutState : public PartState {
   virtual LightSpace compute(const LayoutInput& in);
   // Adds passes before the shadow pass; returns the resources the shadow pass must read.
   virtual std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) { return {}; }
+  // Layouts that rasterize a layer piecewise (paged virtual maps) keep the rest of the layer
+  // between frames (drawsTiles). shadowTiles: the tiles of `layer` to draw this frame. `kept`:
+  // the representation bound the layer without clearing it (RepresentationState::bindShadowLayer),
+  // so tiles cached from earlier frames are still there.
+  virtual bool drawsTiles() const { return false; }
+  virtual int shadowTiles(int layer, bool kept) { return 0; }
+  // Before tile `tile` is drawn into the bound layer: sets the viewport and clears the tile.
+  virtual void beginShadowTile(int layer, int tile) {}
+  // The tile's uniforms (its page-local projection) on each program that draws it.
+  virtual void bindShadowTile(const Program& p, int layer, int tile) const {}
 
  protected:
   const Layout& layout_;
@@ -167,6 +177,13 @@ class RepresentationState : public PartState {
   virtual void prepare(int size, int layers) = 0;
   // Binds one layer of the targets for the shadow pass and clears it.
   virtual void beginShadowLayer(int layer) = 0;
+  // Binds one layer for a layout that draws it piecewise; returns true when the layer's content
+  // was kept (not cleared): then tiles drawn in earlier frames can be reused. By default the
+  // layer is cleared as by beginShadowLayer (representations whose passes read the whole layer).
+  virtual bool bindShadowLayer(int layer) {
+    beginShadowLayer(layer);
+    return false;
+  }
   // Adds passes after the shadow pass (reading ctx.shadowMap); returns the resource the
   // visibility and shading passes read.
   virtual std::string addPasses(FrameGraph& graph, const PartContext& ctx) { return ctx.shadowMap; }

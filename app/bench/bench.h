@@ -68,6 +68,8 @@ struct BenchEntry {
   bool hasFlicker = false;
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;
   long long nonfinite = 0;            // NaN/Inf visibility pixels in the last frame
+  long long shadowTexels = 0;         // Viewport::shadowTexels after the last frame
+  std::string status;                 // the parts' status lines after the last frame
   std::vector<float> lastVisibility;  // for the report's images
   std::vector<float> changeMap;       // per pixel mean |frame-to-frame change| along a path (report)
 };

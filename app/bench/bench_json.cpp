@@ -60,6 +60,8 @@ nlohmann::json benchToJson(const BenchResult& r) {
     else
       x["flicker"] = nullptr;
     x["nonfinite_pixels"] = e.nonfinite;
+    x["shadow_texels"] = e.shadowTexels;
+    if (!e.status.empty()) x["status"] = e.status;
     j["entries"].push_back(std::move(x));
   }
   return j;

@@ -189,6 +189,8 @@ void recordFrame(const Renderer& renderer, EntryRun& run, const ReferenceImage& 
     run.out.error = m;
     run.out.nonfinite = 0;
     for (float v : vis) run.out.nonfinite += std::isfinite(v) ? 0 : 1;
+    run.out.shadowTexels = run.viewport->shadowTexels();
+    run.out.status = run.viewport->status();
     run.out.lastVisibility = vis;
   }
   if (keepFrames) run.frames.push_back(std::move(vis));

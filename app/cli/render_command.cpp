@@ -111,8 +111,7 @@ int runRenderCommand(int argc, char** argv) {
       j["status"] = {{"layout", viewport.layout->status()},
                      {"representation", viewport.representation->status()},
                      {"accumulation", viewport.accumulation->status()}};
-      j["shadow_texels"] =
-          viewport.layout->texels() + viewport.representation->texels() + viewport.accumulation->texels();
+      j["shadow_texels"] = viewport.shadowTexels();
       j["shader_errors"] = errors;
       j["gl_errors"] = glDebugErrorCount();
       std::ofstream f(args.get("--stats"));

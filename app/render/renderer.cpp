@@ -38,6 +38,21 @@ std::vector<std::string> Viewport::availableViews() const {
   return v;
 }
 
+long long Viewport::shadowTexels() const {
+  return layout->texels() + representation->texels() + accumulation->texels();
+}
+
+std::string Viewport::status() const {
+  std::string out;
+  for (const PartState* part :
+       {static_cast<const PartState*>(layout.get()), static_cast<const PartState*>(representation.get()),
+        static_cast<const PartState*>(accumulation.get())}) {
+    const std::string s = part->status();
+    if (!s.empty()) out += (out.empty() ? "" : "; ") + s;
+  }
+  return out;
+}
+
 void Renderer::bindGBuffer(const Program& p, TextureUnits& units) const {
   units.bind(p, "u_gPosition", gPosition_->id());
   units.bind(p, "u_gNormal", gNormal_->id());
@@ -318,13 +333,30 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                "shadowmap " + t.layout->id() + "+" + t.representation->id(),
                {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
                prelude};
-           for (size_t layer = 0; layer < vp.lightSpace.views.size(); ++layer) {
-             vp.representation->beginShadowLayer(static_cast<int>(layer));
-             PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
-               bindTechnique(p, units, vp);
-               p.set("u_shadowView", static_cast<int>(layer));
-             });
-             gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
+           const GLenum cull = culled[t.params.i("shadowmap.cull")];
+           for (int layer = 0; layer < static_cast<int>(vp.lightSpace.views.size()); ++layer) {
+             if (!vp.layout->drawsTiles()) {
+               vp.representation->beginShadowLayer(layer);
+               PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
+                 bindTechnique(p, units, vp);
+                 p.set("u_shadowView", layer);
+               });
+               gpu_->draw(programs, in.time, in.time, cull);
+               continue;
+             }
+             // Piecewise (paged) layer: only the tiles the layout asks for, each into its viewport.
+             const bool kept = vp.representation->bindShadowLayer(layer);
+             const int tiles = vp.layout->shadowTiles(layer, kept);
+             for (int tile = 0; tile < tiles; ++tile) {
+               vp.layout->beginShadowTile(layer, tile);
+               PassPrograms programs(shaders_, spec, [this, &vp, layer, tile](const Program& p, TextureUnits& units) {
+                 bindTechnique(p, units, vp);
+                 p.set("u_shadowView", layer);
+                 vp.layout->bindShadowTile(p, layer, tile);
+               });
+               gpu_->draw(programs, in.time, in.time, cull);
+             }
+             glDisable(GL_SCISSOR_TEST);
            }
            glDisable(GL_DEPTH_TEST);
          }});

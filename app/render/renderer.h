@@ -102,6 +102,11 @@ class Viewport {
   const Texture2D* rawVisibilityTexture() const { return rawVisibility_.get(); }
   const Texture2D* viewTexture(const std::string& name) const;
   std::vector<std::string> availableViews() const;
+  // GPU texels the parts' targets hold (shadow map, page tables, moments, histories): the
+  // memory side of a technique's cost, `shadow_texels` in `render --stats` and the bench.
+  long long shadowTexels() const;
+  // The parts' status lines joined ("" when none has one).
+  std::string status() const;
   void setTechnique(Technique t);  // keeps targets, resets history
 
  private:

@@ -15,6 +15,7 @@ class DepthMapState : public RepresentationState {
   ~DepthMapState() override;
   void prepare(int size, int layers) override;
   void beginShadowLayer(int layer) override;
+  bool bindShadowLayer(int layer) override;  // keeps the content: no pass of ours reads the whole layer
   void bind(const Program& p, TextureUnits& units) const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;

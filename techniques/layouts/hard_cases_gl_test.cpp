@@ -64,7 +64,8 @@ TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
              {"cascaded", {"shadowmap.size=512"}},
              {"cascaded", {"shadowmap.size=512", "cascades.warp=lispsm"}},
              {"pixel-correct-lispsm", {"shadowmap.size=1024"}},
-             {"alias-free", {}}}) {
+             {"alias-free", {}},
+             {"virtual", {}}}) {
       const double wrong = runCase(h, scene, cam, preset, sets, hc.name);
       std::printf(", %s%s %.2f %%", preset.c_str(), sets.size() > 1 ? "+warp" : "", wrong);
       // Never garbage: within a point of the focused map's wrong pixels (one frame, 160x90).

@@ -1,0 +1,66 @@
+// Shared by the virtual layout module, its page-marking pass and its views: where a world point
+// falls in the virtual map (light view 0 over the whole scene) and which mip level of pages the
+// pixel footprint asks for. Defines from the layout state: SL_VIRTUAL_PAGES (pages per side at
+// level 0, a power of two), SL_VIRTUAL_LEVELS (down to one page), SL_VIRTUAL_PAGE (texels per
+// page side), SL_VIRTUAL_POOL_SIDE (tiles per side of the physical atlas).
+#include "common/light_views.glsl"
+uniform float u_virtual_lod_bias;
+
+// Virtual uv in [0,1] (outside: off the map); z = 0 when the point cannot be projected.
+vec3 virtualUv(vec3 worldPos) {
+  vec4 c = lightViewProjMatrix[0] * vec4(worldPos, 1.0);
+  if (!(c.w > 1e-6)) return vec3(0.0);
+  return vec3(c.xy / c.w * 0.5 + 0.5, 1.0);
+}
+
+// Level-0 virtual texels one pixel spans at `pixel` of a G-buffer of world positions: the larger
+// of its steps to the next pixel across and up, each taken on the side that stays on the
+// surface (the smaller of left/right, down/up: a neighbour across a depth edge would ask for a
+// needlessly coarse level). -1 when the pixel is not covered.
+float virtualFootprint(sampler2D gPosition, ivec2 pixel) {
+  ivec2 size = textureSize(gPosition, 0);
+  vec4 P = texelFetch(gPosition, pixel, 0);
+  if (P.w < 0.5 || any(isnan(P.xyz)) || any(isinf(P.xyz))) return -1.0;
+  vec3 uv = virtualUv(P.xyz);
+  if (uv.z == 0.0) return -1.0;
+  float steps[2];
+  for (int axis = 0; axis < 2; ++axis) {
+    float best = 1e30;
+    for (int s = -1; s <= 1; s += 2) {
+      ivec2 q = pixel + (axis == 0 ? ivec2(s, 0) : ivec2(0, s));
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      vec4 Q = texelFetch(gPosition, q, 0);
+      if (Q.w < 0.5) continue;
+      vec3 uq = virtualUv(Q.xyz);
+      if (uq.z == 0.0) continue;
+      best = min(best, length(uq.xy - uv.xy));
+    }
+    steps[axis] = best;
+  }
+  float step = max(steps[0] < 1e29 ? steps[0] : steps[1], steps[1] < 1e29 ? steps[1] : steps[0]);
+  if (!(step < 1e29)) return 1.0;  // an isolated pixel: ask for the finest level
+  return step * float(SL_VIRTUAL_PAGES * SL_VIRTUAL_PAGE);
+}
+
+// The level whose texels are at most one pixel footprint (resolution matching), shifted by
+// virtual.lod_bias (negative: finer).
+int virtualLevelFor(float footprint) {
+  float level = floor(log2(max(footprint, 1e-6)) + u_virtual_lod_bias);
+  return int(clamp(level, 0.0, float(SL_VIRTUAL_LEVELS - 1)));
+}
+
+// Where a level's pages start in the flat arrays (PageAllocator::levelOffset).
+int virtualLevelOffset(int level) {
+  int offset = 0;
+  for (int k = 0; k < level; ++k) offset += (SL_VIRTUAL_PAGES >> k) * (SL_VIRTUAL_PAGES >> k);
+  return offset;
+}
+
+// Colours of the levels in the views: 0 red, 1 orange, 2 yellow, 3 green, 4 cyan, 5 blue,
+// 6 purple, 7 and coarser grey.
+vec3 virtualLevelColour(int level) {
+  const vec3 palette[8] = vec3[8](vec3(0.90, 0.25, 0.20), vec3(0.95, 0.60, 0.20), vec3(0.95, 0.90, 0.30),
+                                  vec3(0.35, 0.80, 0.30), vec3(0.30, 0.80, 0.85), vec3(0.25, 0.45, 0.95),
+                                  vec3(0.65, 0.40, 0.85), vec3(0.60, 0.60, 0.60));
+  return palette[clamp(level, 0, 7)];
+}

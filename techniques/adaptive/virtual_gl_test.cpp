@@ -1,0 +1,174 @@
+// The paged virtual shadow map on llvmpipe (small frames): page marking, the cache, pool
+// exhaustion, accuracy against the focused map, and the real glTF scenes staying finite.
+#include "metrics/metrics.h"
+#include "reference/reference.h"
+#include "tests/gl_test_util.h"
+
+#include <algorithm>
+#include <fstream>
+
+namespace sl {
+namespace {
+
+constexpr int kW = 160, kH = 90;
+
+struct VirtualRun {
+  test::Frame frame;
+  std::string status;
+  long long texels = 0;
+  std::vector<std::string> passes;
+};
+
+// `frames` frames of one viewport from the scene's first camera (scene already set).
+VirtualRun render(test::GlHarness& h, const Scene& scene, const std::string& preset,
+                  const std::vector<std::string>& sets, int frames = 1, bool views = false) {
+  Viewport vp(makeTechnique(preset, sets));
+  if (views) vp.shownViews = vp.availableViews();
+  VirtualRun r;
+  for (int f = 0; f < frames; ++f) {
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = kW;
+    in.height = kH;
+    h.renderer.render(in, {&vp});
+  }
+  r.frame = test::readFrame(h.renderer, vp, kW, kH);
+  r.status = vp.status();
+  r.texels = vp.shadowTexels();
+  for (const auto& p : h.renderer.stats().passes) r.passes.push_back(p.name);
+  return r;
+}
+
+double wrongPct(const Scene& scene, const test::Frame& f) {
+  ReferenceTracer tracer(scene, 0.0);
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<float> vis(n);
+  std::vector<uint8_t> valid(n);
+  for (size_t i = 0; i < n; ++i) {
+    vis[i] = f.visibility[2 * i];
+    valid[i] = f.position[4 * i + 3] > 0.5f;
+  }
+  return compareVisibility(vis.data(), ref.data(), valid.data(), n).wrongPixelPct;
+}
+
+void expectSane(const test::Frame& f, const std::string& what) {
+  EXPECT_EQ(f.nonfinite(), 0) << what;
+  for (size_t i = 0; i < f.visibility.size(); i += 2) {
+    ASSERT_GE(f.visibility[i], 0.0f) << what;
+    ASSERT_LE(f.visibility[i], 1.0f) << what;
+  }
+}
+
+long long shadowed(const test::Frame& f) {
+  long long n = 0;
+  for (size_t i = 0; i < f.visibility.size(); i += 2) n += f.visibility[i] < 0.5f && f.position[2 * i + 3] > 0.5f;
+  return n;
+}
+
+TEST(VirtualShadowMap, MarksPagesDrawsThemAndKeepsThemCached) {
+  test::GlHarness h;
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun first = render(h, scene, "virtual", {}, 1, true);
+  expectSane(first.frame, "first frame");
+  EXPECT_NE(std::find(first.passes.begin(), first.passes.end(), "virtual.pages[0]"), first.passes.end());
+  EXPECT_NE(first.status.find("cache hits 0"), std::string::npos) << first.status;
+  EXPECT_EQ(first.status.find("drawn 0,"), std::string::npos) << first.status;
+  EXPECT_GT(shadowed(first.frame), 0);
+  // Same light, scene and camera: every page comes from the cache, the image is the same.
+  const VirtualRun again = render(h, scene, "virtual", {}, 3);
+  EXPECT_NE(again.status.find("drawn 0,"), std::string::npos) << again.status;
+  EXPECT_EQ(again.frame.visibility, first.frame.visibility);
+  // Without the cache every page is drawn each frame, and the image is still the same.
+  const VirtualRun uncached = render(h, scene, "virtual", {"virtual.cache=off"}, 2);
+  EXPECT_EQ(uncached.status.find("drawn 0,"), std::string::npos) << uncached.status;
+  EXPECT_EQ(uncached.frame.visibility, first.frame.visibility);
+  // Texels: the 1920² atlas and the page table (16384 / 128 = 128 pages per side, all levels).
+  EXPECT_EQ(first.texels, 1920LL * 1920 + (128 * 128 * 4 - 1) / 3);
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(VirtualShadowMap, MovingTheLightRedrawsThePages) {
+  test::GlHarness h;
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("virtual"));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = kW;
+  in.height = kH;
+  h.renderer.render(in, {&vp});
+  h.renderer.render(in, {&vp});
+  EXPECT_NE(vp.status().find("drawn 0,"), std::string::npos) << vp.status();
+  scene.light.direction = glm::normalize(scene.light.direction + glm::vec3(0.3f, 0.0f, -0.2f));
+  h.renderer.render(in, {&vp});
+  EXPECT_EQ(vp.status().find("drawn 0,"), std::string::npos) << vp.status();
+  const std::vector<float> moved = vp.visibilityTexture()->readFloats(2);
+  // What a viewport that never saw the old light renders: stale pages would differ from it.
+  EXPECT_EQ(moved, render(h, scene, "virtual", {}).frame.visibility);
+}
+
+TEST(VirtualShadowMap, TinyPoolIsReportedAndDegradesToCoarserPages) {
+  test::GlHarness h;
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun full = render(h, scene, "virtual", {});
+  EXPECT_EQ(full.status.find("exhausted"), std::string::npos) << full.status;
+  const VirtualRun tiny = render(h, scene, "virtual", {"virtual.pool=256"}, 2, true);  // 2 x 2 tiles
+  expectSane(tiny.frame, "tiny pool");
+  EXPECT_NE(tiny.status.find("pool exhausted"), std::string::npos) << tiny.status;
+  EXPECT_NE(tiny.status.find("in 4 tiles"), std::string::npos) << tiny.status;
+  // Coarser, so less accurate, but still a shadow map of the scene and not garbage.
+  const double wrongFull = wrongPct(scene, full.frame), wrongTiny = wrongPct(scene, tiny.frame);
+  const VirtualRun uniform = render(h, scene, "uniform", {"shadowmap.size=256"});
+  std::printf("columns %dx%d: virtual %.3f %%, pool of 4 tiles %.3f %%, uniform 256² %.3f %%\n", kW, kH, wrongFull,
+              wrongTiny, wrongPct(scene, uniform.frame));
+  EXPECT_LT(wrongFull, wrongTiny);
+  EXPECT_LE(wrongTiny, wrongPct(scene, uniform.frame) + 0.5);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+TEST(VirtualShadowMap, AsAccurateAsAFocused4096MapOnColumnsAndTerrain) {
+  test::GlHarness h;
+  for (const char* name : {"columns", "terrain"}) {
+    Scene scene = loadScene(name, defaultAssetsDir());
+    h.renderer.setScene(scene);
+    const VirtualRun standard = render(h, scene, "standard", {"shadowmap.size=4096"});
+    const VirtualRun virt = render(h, scene, "virtual", {});
+    expectSane(virt.frame, name);
+    const double ws = wrongPct(scene, standard.frame), wv = wrongPct(scene, virt.frame);
+    std::printf("%s %dx%d: standard 4096² %.3f %% (%lld texels), virtual %.3f %% (%lld texels; %s)\n", name, kW, kH, ws,
+                standard.texels, wv, virt.texels, virt.status.c_str());
+    EXPECT_LE(wv, ws + 0.05) << name;
+    EXPECT_LE(virt.texels * 4, standard.texels + 4 * 65536) << name;
+  }
+}
+
+// The hard scenes are in techniques/layouts/hard_cases_gl_test.cpp (virtual is in its
+// list); here the real glTF scenes, when shared/scenes-real is there.
+TEST(VirtualShadowMap, RealScenesStayFinite) {
+  test::GlHarness h;
+  int ran = 0;
+  for (const char* name : {"sponza", "engine", "tree"}) {
+    Scene scene;
+    try {
+      scene = loadScene(name, defaultAssetsDir());
+    } catch (const std::exception& e) {
+      if (std::string(e.what()).find("scenes-real") != std::string::npos) continue;
+      throw;
+    }
+    h.renderer.setScene(scene);
+    const VirtualRun r = render(h, scene, "virtual", {}, 2, true);
+    expectSane(r.frame, name);
+    std::printf("%s: %s\n", name, r.status.c_str());
+    ++ran;
+  }
+  if (ran == 0) GTEST_SKIP() << "shared/scenes-real not found: the real scenes were not rendered";
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+}  // namespace
+}  // namespace sl

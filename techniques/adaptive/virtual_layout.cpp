@@ -1,0 +1,282 @@
+#include "adaptive/virtual_layout.h"
+
+#include "adaptive/page_allocator.h"
+#include "gl/gl_util.h"
+#include "gl/shader_library.h"
+#include "gl/texture_units.h"
+#include "layouts/light_frame.h"
+#include "render/frame_graph.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace sl {
+
+VirtualSizes virtualSizes(const ParamSet& params) {
+  VirtualSizes s;
+  s.page = params.i("virtual.page");
+  // Pages per side: the largest power of two that fits (a mip pyramid of pages halves exactly).
+  const int wanted = std::max(params.i("virtual.size") / s.page, 1);
+  s.pagesPerSide = 1;
+  while (s.pagesPerSide * 2 <= wanted && s.pagesPerSide < 4096) s.pagesPerSide *= 2;
+  s.virtualSize = s.pagesPerSide * s.page;
+  // At most 255 x 255 tiles: a page-table entry holds tile + 1 in 16 bits (8192² of 32² pages).
+  s.poolSide = std::clamp(params.i("virtual.pool") / s.page, 1, 255);
+  s.atlasSize = s.poolSide * s.page;
+  return s;
+}
+
+namespace {
+
+const char* kViewNames[] = {"pages", "requested-resolution", "cache"};
+
+// Per-viewport state: the page-marking pass, the allocation, the page table and the tiles the
+// shadow pass draws.
+class VirtualState : public LayoutState {
+ public:
+  explicit VirtualState(const Layout& layout) : LayoutState(layout) {}
+  ~VirtualState() override {
+    if (marks_) glDeleteBuffers(1, &marks_);
+    if (table_) glDeleteTextures(1, &table_);
+  }
+  void reset() override { pages_.invalidate(); }
+
+  LightSpace compute(const LayoutInput& in) override {
+    sizes_ = virtualSizes(*in.params);
+    pages_.configure(sizes_.pagesPerSide, sizes_.poolSide * sizes_.poolSide);
+    LayoutInput virt = in;
+    LightSpace ls = layout_.compute(virt);
+    ls.size = sizes_.atlasSize;
+    // What the cached pages were drawn with: any change makes every page stale.
+    const bool moving = in.scene->hasMotion() && in.time != drawnTime_;
+    const bool changed = ls.primary().viewProj != drawnViewProj_ || in.scene != drawnScene_ ||
+                         in.params->i("shadowmap.cull") != drawnCull_ || moving || !in.params->b("virtual.cache");
+    if (changed) pages_.invalidate();
+    drawnViewProj_ = ls.primary().viewProj;
+    drawnScene_ = in.scene;
+    drawnCull_ = in.params->i("shadowmap.cull");
+    drawnTime_ = in.time;
+    return ls;
+  }
+
+  std::string defines() const override {
+    return "#define SL_VIRTUAL_PAGES " + std::to_string(sizes_.pagesPerSide) + "\n#define SL_VIRTUAL_LEVELS " +
+           std::to_string(pages_.levels()) + "\n#define SL_VIRTUAL_PAGE " + std::to_string(sizes_.page) +
+           "\n#define SL_VIRTUAL_POOL_SIDE " + std::to_string(sizes_.poolSide) + "\n";
+  }
+
+  void bind(const Program& p, TextureUnits& units) const override {
+    if (table_) units.bind(p, "u_pageTable", table_);
+    p.set("u_pageTransform", glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));
+  }
+
+  std::vector<std::string> views() const override { return {kViewNames[0], kViewNames[1], kViewNames[2]}; }
+
+  std::string status() const override {
+    std::ostringstream s;
+    s << "virtual " << sizes_.virtualSize << "² in " << pages_.poolTiles() << " tiles of " << sizes_.page
+      << "²: requested " << frame_.requested << ", resident " << frame_.resident << ", drawn " << draw_.size()
+      << ", cache hits " << frame_.hits;
+    if (frame_.exhausted())
+      s << "; pool exhausted: " << frame_.coarsened << " pages asked for served coarser, in " << frame_.coarsenedLevels
+        << " level(s)";
+    return s.str();
+  }
+
+  // The page table (a texel per page of every level); the atlas is the representation's.
+  long long texels() const override { return table_ ? pages_.flatSize() : 0; }
+
+  std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) override {
+    ensureGpu();
+    const std::string res = "virtual.pages" + ctx.viewportTag;
+    graph.add({res, {"gbuffer"}, {res}, [this, ctx] { markAndAllocate(ctx); }});
+    for (int v = 0; v < 3; ++v) addViewPass(graph, ctx, v, res);
+    return {res};
+  }
+
+  bool drawsTiles() const override { return true; }
+  int shadowTiles(int layer, bool kept) override {
+    if (!kept) {  // the representation cleared the layer: every resident page again
+      draw_.clear();
+      for (int i = 0; i < pages_.flatSize(); ++i)
+        if (pages_.tileOf(i) >= 0) draw_.push_back(i);
+    }
+    return static_cast<int>(draw_.size());
+  }
+
+  void beginShadowTile(int layer, int tile) override {
+    const int t = pages_.tileOf(draw_[static_cast<size_t>(tile)]);
+    const int x = (t % sizes_.poolSide) * sizes_.page, y = (t / sizes_.poolSide) * sizes_.page;
+    glViewport(x, y, sizes_.page, sizes_.page);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, sizes_.page, sizes_.page);
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile
+  }
+
+  // Maps the page's part of the virtual map's clip square onto the whole viewport.
+  void bindShadowTile(const Program& p, int layer, int tile) const override {
+    int level, x, y;
+    pages_.decode(draw_[static_cast<size_t>(tile)], level, x, y);
+    const float n = static_cast<float>(sizes_.pagesPerSide >> level);
+    p.set("u_pageTransform", glm::vec4(n, n, n - 2.0f * x - 1.0f, n - 2.0f * y - 1.0f));
+  }
+
+ private:
+  void ensureGpu() {
+    if (marks_ && tableLevels_ == pages_.levels() && tableSide_ == pages_.pagesPerSide()) return;
+    if (marks_) glDeleteBuffers(1, &marks_);
+    if (table_) glDeleteTextures(1, &table_);
+    glCreateBuffers(1, &marks_);
+    glNamedBufferData(marks_, static_cast<GLsizeiptr>(pages_.flatSize() * sizeof(uint32_t)), nullptr, GL_DYNAMIC_READ);
+    label(GL_BUFFER, marks_, "virtual page marks");
+    glCreateTextures(GL_TEXTURE_2D, 1, &table_);
+    glTextureStorage2D(table_, pages_.levels(), GL_R32UI, pages_.pagesPerSide(), pages_.pagesPerSide());
+    glTextureParameteri(table_, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTextureParameteri(table_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    label(GL_TEXTURE, table_, "virtual page table");
+    tableLevels_ = pages_.levels();
+    tableSide_ = pages_.pagesPerSide();
+    uploadTable();
+  }
+
+  void uploadTable() {
+    for (int m = 0; m < pages_.levels(); ++m) {
+      const int n = pages_.pagesPerSide() >> m;
+      glTextureSubImage2D(table_, m, 0, 0, n, n, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                          pages_.table().data() + pages_.levelOffset(m));
+    }
+  }
+
+  // Marks the pages the G-buffer's pixels need on the GPU, reads them back at once (synchronous:
+  // the allocation serves this frame; on llvmpipe the wait is the compute itself), allocates
+  // tiles and uploads the page table.
+  void markAndAllocate(const PartContext& ctx) {
+    ProgramSpec spec{"virtual marks", {{GL_COMPUTE_SHADER, "passes/virtual_mark.comp"}}, defines()};
+    draw_.clear();  // a marking program that does not build draws nothing (its error is shown)
+    Program& p = ctx.shaders->get(spec);
+    if (!p.valid()) return;
+    const uint32_t zero = 0;
+    glClearNamedBufferData(marks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    p.use();
+    TextureUnits units;
+    ctx.bindTechnique(p, units);
+    ctx.bindGBuffer(p, units);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marks_);
+    glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> marks(static_cast<size_t>(pages_.flatSize()));
+    glGetNamedBufferSubData(marks_, 0, static_cast<GLsizeiptr>(marks.size() * sizeof(uint32_t)), marks.data());
+    frame_ = pages_.update(marks);
+    draw_ = frame_.draw;
+    uploadTable();
+  }
+
+  void addViewPass(FrameGraph& graph, const PartContext& ctx, int view, const std::string& pagesRes) {
+    auto it = ctx.viewTargets.find(kViewNames[view]);
+    if (it == ctx.viewTargets.end() || !it->second) return;
+    Texture2D* target = it->second;
+    const std::string res = std::string("view.") + kViewNames[view] + ctx.viewportTag;
+    graph.add({res, {"gbuffer", pagesRes}, {res}, [ctx, target, view] {
+                 ProgramSpec spec{
+                     std::string("view ") + kViewNames[view],
+                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/virtual.frag"}},
+                     "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n" + ctx.techniquePrelude};
+                 Program& p = ctx.shaders->get(spec);
+                 if (!p.valid()) return;
+                 Framebuffer fbo(std::string("view.") + kViewNames[view]);
+                 fbo.attach({target}, nullptr);
+                 fbo.bind();
+                 glViewport(0, 0, target->width(), target->height());
+                 p.use();
+                 TextureUnits units;
+                 ctx.bindTechnique(p, units);
+                 ctx.bindGBuffer(p, units);
+                 ctx.drawFullscreen();
+               }});
+    graph.requestSink(res);
+  }
+
+  VirtualSizes sizes_;
+  PageAllocator pages_;
+  PageAllocator::Frame frame_;
+  std::vector<int> draw_;  // flat page indices the shadow pass draws this frame
+  GLuint marks_ = 0, table_ = 0;
+  int tableLevels_ = 0, tableSide_ = 0;
+  glm::mat4 drawnViewProj_{0.0f};
+  const Scene* drawnScene_ = nullptr;
+  int drawnCull_ = -1;
+  double drawnTime_ = -1.0;
+};
+
+class VirtualLayout : public Layout {
+ public:
+  std::string id() const override { return "virtual"; }
+  std::string help() const override {
+    return "paged virtual shadow map (resolution-matched, Lefohn et al. 2007): one huge map over the scene, only "
+           "the pages and mip levels the visible pixels need are rendered into a fixed atlas, and kept while "
+           "nothing moves";
+  }
+  std::string glslModule() const override { return "layouts/virtual.glsl"; }
+  std::vector<ParamDecl> params() const override {
+    return {
+        {.key = "virtual.size",
+         .type = ParamType::Int,
+         .min = 1024,
+         .max = 131072,
+         .defaultValue = 16384,
+         .unit = "texels",
+         .help = "virtual map texels per side (rounded down to the page size times a power of two)",
+         .logScale = true},
+        {.key = "virtual.page",
+         .type = ParamType::Int,
+         .min = 32,
+         .max = 512,
+         .defaultValue = 128,
+         .unit = "texels",
+         .help = "texels per page side: the unit of allocation and of drawing",
+         .logScale = true},
+        {.key = "virtual.pool",
+         .type = ParamType::Int,
+         .min = 64,
+         .max = 8192,
+         .defaultValue = 1920,
+         .unit = "texels",
+         .help =
+             "physical atlas texels per side (whole pages; 1920 = 15 x 15 pages of 128², with the page table under a "
+             "quarter of a 4096² map): when the pages asked for do not fit, the finest "
+             "level's pages are replaced by coarser ones and the status says so",
+         .logScale = true},
+        {.key = "virtual.lod_bias",
+         .type = ParamType::Float,
+         .min = -3,
+         .max = 3,
+         .defaultValue = 0,
+         .unit = "levels",
+         .help = "shift of the mip level each pixel asks for (negative: finer pages than its footprint)"},
+        {.key = "virtual.cache",
+         .type = ParamType::Bool,
+         .defaultValue = 1,
+         .help = "keep drawn pages between frames while the light, the scene and the map settings stay the same"}};
+  }
+  // The whole scene in one light view: it does not follow the camera, so pages stay valid.
+  LightSpace compute(const LayoutInput& in) const override {
+    const Light& light = in.scene->light;
+    const glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
+    const auto corners = boxCorners(in.scene->boundsAt(in.time));
+    const int size = virtualSizes(*in.params).virtualSize;
+    const bool snap = in.params->b("layout.snap");
+    if (light.type == Light::Type::Spot)
+      return LightSpace::single(fitPerspective(light, view, corners, corners, size, false, snap, in.jitter), size);
+    return LightSpace::single(fitOrthographic(view, corners, corners, size, snap, in.jitter), size);
+  }
+  std::unique_ptr<LayoutState> createState() const override { return std::make_unique<VirtualState>(*this); }
+};
+
+}  // namespace
+
+void registerAdaptiveLayouts(std::vector<std::unique_ptr<Layout>>& out) {
+  out.push_back(std::make_unique<VirtualLayout>());
+}
+
+}  // namespace sl
