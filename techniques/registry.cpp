@@ -1,6 +1,7 @@
 // The one list of technique families. A new paper adds its register call here and nothing else.
 #include "technique.h"
 
+#include "deep/deep_representation.h"
 #include "depth/depth_representations.h"
 #include "layouts/cascaded.h"
 #include "layouts/face_partitioned.h"
@@ -87,6 +88,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     std::vector<std::unique_ptr<Representation>> v;
     registerDepthRepresentations(v);
     registerPrefilteredRepresentations(v);
+    registerDeepRepresentations(v);
     return v;
   }();
   return list;
@@ -184,6 +186,7 @@ const std::vector<Preset>& allPresets() {
          {"fit.sdsm=on"}},
     };
     addPrefilteredPresets(v);
+    addDeepPresets(v);
     return v;
   }();
   return presets;

@@ -30,7 +30,9 @@ struct ReferenceOptions {
 };
 
 // Visibility in [0,1] per pixel (1 = lit), 0 for background pixels; row order as the G-buffer.
-// Alpha-masked materials are honoured through an Embree intersection filter.
+// Alpha-masked materials are honoured through an Embree intersection filter. Semi-transparent
+// casters make it the light fraction reaching the pixel: blended surfaces (hair, glTF BLEND)
+// multiply it by 1 - alpha, volumes by exp(-integral of sigma_t) (app/scene/volume_density.h).
 class ReferenceTracer {
  public:
   explicit ReferenceTracer(const Scene& scene, double time = 0.0);

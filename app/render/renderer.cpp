@@ -320,7 +320,8 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                bindTechnique(p, units, vp);
                p.set("u_shadowView", static_cast<int>(layer));
              });
-             gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")]);
+             gpu_->draw(programs, in.time, in.time, culled[t.params.i("shadowmap.cull")],
+                        t.representation->opaqueShadowPass() ? GpuScene::Only::Opaque : GpuScene::Only::All);
            }
            glDisable(GL_DEPTH_TEST);
          }});
@@ -349,6 +350,10 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.techniquePrelude = prelude;
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
   part.bindGBuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
+  part.drawSemiTransparent = [this, &in](const ProgramSpec& spec, const ProgramSetup& setup) {
+    PassPrograms programs(shaders_, spec, setup);
+    gpu_->draw(programs, in.time, in.time, 0, GpuScene::Only::SemiTransparent);
+  };
   part.replaceLightSpace = [&vp](const LightSpace& ls) {
     vp.lightSpace = ls;
     vp.lightViews_->upload(vp.lightSpace);
@@ -372,6 +377,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
   vp.lightViews_->upload(vp.lightSpace);
+  vp.representation->setScene(*scene_);
   vp.representation->configure(t.params);
   vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
   const std::string prelude = techniquePrelude(vp);

@@ -2,6 +2,7 @@
 // Validation is strict on purpose: a typo in a key or a degenerate value must be reported with
 // the file and the JSON location instead of silently producing a different scene.
 #include "scene/gltf_loader.h"
+#include "scene/hair.h"
 #include "scene/json_reader.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene.h"
@@ -96,7 +97,7 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   const json* shapeJ = JsonReader::find(j, "shape");
   if (!shapeJ) r.fail(where, "missing 'shape' (plane, box, sphere or cylinder)");
   const std::string shape = r.string(*shapeJ, where + ".shape");
-  std::vector<std::string> keys = {"name", "shape", "color", "transform", "motion", "double_sided"};
+  std::vector<std::string> keys = {"name", "shape", "color", "opacity", "transform", "motion", "double_sided"};
   Mesh mesh;
   if (shape == "plane") {
     keys.insert(keys.end(), {"size", "subdivisions"});
@@ -143,6 +144,14 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
     mat.baseColor = glm::vec4(v[0], v[1], v[2], n == 4 ? v[3] : 1.0f);
   }
   if (const json* d = JsonReader::find(j, "double_sided")) mat.doubleSided = r.boolean(*d, where + ".double_sided");
+  if (const json* o = JsonReader::find(j, "opacity")) {
+    // A semi-transparent caster (a sheet of tinted glass, a curtain): light through it is
+    // attenuated by `opacity` (deep shadow maps, the reference); other techniques cast it opaque.
+    const double a = r.number(*o, where + ".opacity");
+    if (!(a >= 0.0 && a <= 1.0)) r.expected(where + ".opacity", "a number in [0,1]", *o);
+    mat.baseColor.a = float(a);
+    mat.alphaBlend = true;
+  }
 
   Instance inst;
   const json* nameJ = JsonReader::find(j, "name");
@@ -169,6 +178,83 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   scene.meshes.push_back(std::move(mesh));
   inst.mesh = int(scene.meshes.size() - 1);
   scene.instances.push_back(inst);
+}
+
+void parseHair(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
+  r.checkObject(j, where);
+  r.checkKeys(j, where,
+              {"name", "on", "count", "length", "curl", "turns", "width", "opacity", "droop", "segments", "color",
+               "seed"});
+  HairSpec h;
+  const json* on = JsonReader::find(j, "on");
+  if (!on) r.fail(where, "missing 'on' (the name of the object the strands grow from)");
+  h.on = r.string(*on, where + ".on");
+  if (const json* n = JsonReader::find(j, "name")) h.name = r.string(*n, where + ".name");
+  if (const json* c = JsonReader::find(j, "count")) h.count = r.integer(*c, where + ".count", 0, 200000);
+  if (const json* l = JsonReader::find(j, "length")) h.length = r.positive(*l, where + ".length");
+  if (const json* w = JsonReader::find(j, "width")) h.width = r.positive(*w, where + ".width");
+  auto range = [&](const char* key, float lo, float hi, float& out) {
+    const json* v = JsonReader::find(j, key);
+    if (!v) return;
+    const double x = r.number(*v, where + "." + key);
+    if (!(x >= lo && x <= hi))
+      r.expected(where + "." + key, "a number in [" + describeJson(lo) + ", " + describeJson(hi) + "]", *v);
+    out = float(x);
+  };
+  range("opacity", 0.0f, 1.0f, h.opacity);
+  range("curl", 0.0f, 1e3f, h.curl);
+  range("turns", 0.0f, 100.0f, h.turns);
+  range("droop", 0.0f, 10.0f, h.droop);
+  if (const json* s = JsonReader::find(j, "segments")) h.segments = r.integer(*s, where + ".segments", 1, 64);
+  if (const json* s = JsonReader::find(j, "seed")) h.seed = uint32_t(r.integer(*s, where + ".seed", 0, 1 << 30));
+  if (const json* c = JsonReader::find(j, "color")) {
+    h.color = r.vec3(*c, where + ".color");
+    if (glm::any(glm::lessThan(h.color, glm::vec3(0.0f))) || glm::any(glm::greaterThan(h.color, glm::vec3(1.0f))))
+      r.expected(where + ".color", "3 numbers in [0,1]", *c);
+  }
+  appendHair(scene, h, where);
+}
+
+void parseVolume(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
+  r.checkObject(j, where);
+  const json* shapeJ = JsonReader::find(j, "shape");
+  if (!shapeJ) r.fail(where, "missing 'shape' (box or sphere)");
+  const std::string shape = r.string(*shapeJ, where + ".shape");
+  Volume v;
+  std::vector<std::string> keys = {"name", "shape", "center", "extinction", "noise", "noise_scale", "octaves", "seed"};
+  if (shape == "box") {
+    keys.push_back("size");
+    r.checkKeys(j, where, keys);
+    const json* s = JsonReader::find(j, "size");
+    if (!s) r.fail(where, "missing 'size' ([x, y, z])");
+    v.halfSize = 0.5f * r.vec3(*s, where + ".size", true);
+  } else if (shape == "sphere") {
+    keys.push_back("radius");
+    r.checkKeys(j, where, keys);
+    v.shape = Volume::Shape::Sphere;
+    const json* rad = JsonReader::find(j, "radius");
+    if (!rad) r.fail(where, "missing 'radius'");
+    v.halfSize = glm::vec3(r.positive(*rad, where + ".radius"));
+  } else {
+    r.fail(where + ".shape", "unknown volume shape '" + shape + "' (expected box or sphere)");
+  }
+  const json* n = JsonReader::find(j, "name");
+  v.name = n ? r.string(*n, where + ".name") : "volume" + std::to_string(scene.volumes.size());
+  if (const json* c = JsonReader::find(j, "center")) v.center = r.vec3(*c, where + ".center");
+  const json* e = JsonReader::find(j, "extinction");
+  if (!e) r.fail(where, "missing 'extinction' (sigma_t per world unit, >= 0)");
+  v.extinction = float(r.number(*e, where + ".extinction"));
+  if (!(v.extinction >= 0.0f && v.extinction <= 1e6f))
+    r.expected(where + ".extinction", "an extinction coefficient in [0, 1e6] per world unit", *e);
+  if (const json* x = JsonReader::find(j, "noise")) {
+    v.noise = float(r.number(*x, where + ".noise"));
+    if (!(v.noise >= 0.0f && v.noise <= 1.0f)) r.expected(where + ".noise", "a number in [0,1]", *x);
+  }
+  if (const json* x = JsonReader::find(j, "noise_scale")) v.noiseScale = r.positive(*x, where + ".noise_scale");
+  if (const json* x = JsonReader::find(j, "octaves")) v.octaves = r.integer(*x, where + ".octaves", 1, 8);
+  if (const json* x = JsonReader::find(j, "seed")) v.seed = uint32_t(r.integer(*x, where + ".seed", 0, 1 << 30));
+  if (scene.volumes.size() >= 4) r.fail(where, "at most 4 volumes per scene");
+  scene.volumes.push_back(v);
 }
 
 Light parseLight(const JsonReader& r, const json& j) {
@@ -308,7 +394,7 @@ Scene loadJsonScene(const std::string& path) {
     // nlohmann reports literals like 1e999 this way (out_of_range 406) instead of storing inf.
     r.fail("", "malformed JSON (numbers must be finite): " + std::string(e.what()));
   }
-  r.checkKeys(root, "", {"name", "description", "models", "objects", "light", "cameras", "paths"});
+  r.checkKeys(root, "", {"name", "description", "models", "objects", "hair", "volumes", "light", "cameras", "paths"});
   Scene scene;
   scene.sourcePath = path;
   const json* name = JsonReader::find(root, "name");
@@ -347,6 +433,14 @@ Scene loadJsonScene(const std::string& path) {
     for (size_t i = 0; i < objects->size(); ++i) {
       parseObject(r, (*objects)[i], "objects[" + std::to_string(i) + "]", scene);
     }
+  }
+  // Hair grows on objects (and models) declared above, whatever the key order in the file.
+  if (const json* hair = array("hair")) {
+    for (size_t i = 0; i < hair->size(); ++i) parseHair(r, (*hair)[i], "hair[" + std::to_string(i) + "]", scene);
+  }
+  if (const json* volumes = array("volumes")) {
+    for (size_t i = 0; i < volumes->size(); ++i)
+      parseVolume(r, (*volumes)[i], "volumes[" + std::to_string(i) + "]", scene);
   }
   const json* light = JsonReader::find(root, "light");
   if (light) scene.light = parseLight(r, *light);
