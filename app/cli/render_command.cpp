@@ -106,6 +106,10 @@ int runRenderCommand(int argc, char** argv) {
       j["timer"] = renderer.stats().timer;
       j["renderer"] = glRendererName();
       j["nonfinite_pixels"] = nonfinite;
+      // What the parts report (e.g. the deep shadow map's fragment-list overflow).
+      for (const PartState* part : {static_cast<const PartState*>(viewport.representation.get()),
+                                    static_cast<const PartState*>(viewport.accumulation.get())})
+        if (!part->status().empty()) j["status"].push_back(part->status());
       j["shader_errors"] = errors;
       j["gl_errors"] = glDebugErrorCount();
       std::ofstream f(args.get("--stats"));

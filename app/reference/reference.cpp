@@ -87,9 +87,8 @@ void blendOcclusionFilter(const RTCFilterFunctionNArguments* args) {
     for (int k = 0; k < ctx->seenCount && !counted; ++k) counted = ctx->seen[k] == key;
     if (!counted) {
       if (ctx->seenCount < 64) ctx->seen[ctx->seenCount++] = key;
-      const float alpha = std::clamp(geometry->alphaAt(prim, RTCHitN_u(args->hit, args->N, i),
-                                                       RTCHitN_v(args->hit, args->N, i)),
-                                     0.0f, 1.0f);
+      const float alpha = std::clamp(
+          geometry->alphaAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)), 0.0f, 1.0f);
       ctx->transmittance *= 1.0f - alpha;
     }
     args->valid[i] = 0;
@@ -167,7 +166,7 @@ struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<AlphaGeometry>> alphaGeometries;  // user data of the filters
-  std::vector<TracedMesh> meshes;                                // by scene instance index
+  std::vector<TracedMesh> meshes;                               // by scene instance index
   Light light;
   Scene media;  // the scene's volumes only (the density the deep map integrates too)
 
@@ -395,7 +394,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
     }
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl->scene, geom, static_cast<unsigned>(i));  // geomID = instance index
-    rtcReleaseGeometry(geom);  // the scene keeps its own reference
+    rtcReleaseGeometry(geom);                                            // the scene keeps its own reference
     triangles += triCount;
   }
   if (triangles == 0)

@@ -26,7 +26,8 @@ struct Root {
   glm::vec3 position, normal;
 };
 
-std::vector<Root> sampleRoots(const Scene& scene, const Instance& inst, const HairSpec& spec, const std::string& where) {
+std::vector<Root> sampleRoots(const Scene& scene, const Instance& inst, const HairSpec& spec,
+                              const std::string& where) {
   const Mesh& mesh = scene.meshes.at(static_cast<size_t>(inst.mesh));
   const glm::mat4 m = inst.transformAt(0.0);
   std::vector<glm::vec3> world(mesh.positions.size());
@@ -44,9 +45,9 @@ std::vector<Root> sampleRoots(const Scene& scene, const Instance& inst, const Ha
   std::vector<Root> roots;
   for (int s = 0; s < spec.count; ++s) {
     const double pick = rng.next() * total;
-    const size_t tri = std::min(static_cast<size_t>(std::lower_bound(cumulative.begin(), cumulative.end(), pick) -
-                                                    cumulative.begin()),
-                                cumulative.size() - 1);
+    const size_t tri =
+        std::min(static_cast<size_t>(std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()),
+                 cumulative.size() - 1);
     float u = rng.next(), v = rng.next();
     if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
     const glm::vec3 &a = world[mesh.indices[3 * tri]], &b = world[mesh.indices[3 * tri + 1]],
@@ -85,7 +86,7 @@ void appendHair(Scene& scene, const HairSpec& spec, const std::string& where) {
     throw SceneError(scene.sourcePath + ": " + where + ".on: no object named '" + spec.on + "' (objects: " + names +
                      ")");
   const Instance host = *target;  // scene.instances grows below
-  if (spec.count == 0) return;     // no strands: nothing to draw (an empty mesh is no GL buffer)
+  if (spec.count == 0) return;    // no strands: nothing to draw (an empty mesh is no GL buffer)
   Mesh mesh;
   mesh.name = spec.name;
   Random rng{spec.seed * 0x9E3779B97F4A7C15ull + 7};

@@ -11,15 +11,15 @@ namespace sl {
 
 struct HairSpec {
   std::string name = "hair";
-  std::string on;         // instance the strands grow from
-  int count = 1000;       // strands, >= 0
-  float length = 0.3f;    // world units along the strand
-  float curl = 0.0f;      // radius of the helix a strand winds around its axis, world units
-  float turns = 2.0f;     // helix turns over the strand's length
-  float width = 0.005f;   // ribbon width, world units
-  float opacity = 0.3f;   // alpha of one strand, [0,1]
-  float droop = 0.0f;     // how far the tip bends toward -y, fraction of the length
-  int segments = 6;       // ribbon quads per strand
+  std::string on;        // instance the strands grow from
+  int count = 1000;      // strands, >= 0
+  float length = 0.3f;   // world units along the strand
+  float curl = 0.0f;     // radius of the helix a strand winds around its axis, world units
+  float turns = 2.0f;    // helix turns over the strand's length
+  float width = 0.005f;  // ribbon width, world units
+  float opacity = 0.3f;  // alpha of one strand, [0,1]
+  float droop = 0.0f;    // how far the tip bends toward -y, fraction of the length
+  int segments = 6;      // ribbon quads per strand
   glm::vec3 color{0.35f, 0.22f, 0.12f};
   uint32_t seed = 1;
 };

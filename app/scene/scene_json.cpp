@@ -182,9 +182,9 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
 
 void parseHair(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
   r.checkObject(j, where);
-  r.checkKeys(j, where,
-              {"name", "on", "count", "length", "curl", "turns", "width", "opacity", "droop", "segments", "color",
-               "seed"});
+  r.checkKeys(
+      j, where,
+      {"name", "on", "count", "length", "curl", "turns", "width", "opacity", "droop", "segments", "color", "seed"});
   HairSpec h;
   const json* on = JsonReader::find(j, "on");
   if (!on) r.fail(where, "missing 'on' (the name of the object the strands grow from)");

@@ -58,8 +58,8 @@ float volumeExtinction(const Volume& v, const glm::vec3& p) {
   if (!inside(v, p)) return 0.0f;
   if (v.noise <= 0.0f) return v.extinction;
   // Contrast-stretched fBm (values cluster around 0.5): puffs with clear gaps between them.
-  const float n = std::clamp(2.5f * (volumeFbm((p - v.center) * v.noiseScale, v.octaves, v.seed) - 0.5f) + 0.5f,
-                             0.0f, 1.0f);
+  const float n =
+      std::clamp(2.5f * (volumeFbm((p - v.center) * v.noiseScale, v.octaves, v.seed) - 0.5f) + 0.5f, 0.0f, 1.0f);
   return v.extinction * ((1.0f - v.noise) + v.noise * n);
 }
 

@@ -67,13 +67,14 @@ void registerDeepRepresentations(std::vector<std::unique_ptr<Representation>>& o
 }
 
 void addDeepPresets(std::vector<Preset>& presets) {
-  presets.push_back({"deep",
-                     "deep shadow map (Lokovic & Veach 2000) for hair and smoke, nearest depth test for opaque casters; "
-                     "in a scene without semi-transparent casters exactly standard",
-                     "focused",
-                     "deep",
-                     "none",
-                     {}});
+  presets.push_back(
+      {"deep",
+       "deep shadow map (Lokovic & Veach 2000) for hair and smoke, nearest depth test for opaque casters; "
+       "in a scene without semi-transparent casters exactly standard",
+       "focused",
+       "deep",
+       "none",
+       {}});
 }
 
 }  // namespace sl

@@ -81,8 +81,8 @@ TEST(DeepScene, BadVolumeValuesNameTheFileAndField) {
     EXPECT_NE(err.find(path), std::string::npos) << c.volume << " -> " << err;
     EXPECT_NE(err.find(c.expect), std::string::npos) << c.volume << " -> " << err;
   }
-  const std::string opacity = writeScene(
-      "bad_opacity.json", R"({"objects":[{"name":"ground","shape":"plane","size":[4,4],"opacity":3}]})");
+  const std::string opacity =
+      writeScene("bad_opacity.json", R"({"objects":[{"name":"ground","shape":"plane","size":[4,4],"opacity":3}]})");
   EXPECT_NE(loadError(opacity).find("objects[0].opacity"), std::string::npos) << loadError(opacity);
 }
 

@@ -92,17 +92,16 @@ void DeepState::bind(const Program& p, TextureUnits& units) const {
   units.bind(p, "u_deepCounts", counts_.id());
 }
 
-std::vector<std::string> DeepState::views() const {
-  if (!active_) return {};
-  return {"deep-nodes"};
-}
+// Listed in every scene (views are offered before the first frame); without semi-transparent
+// casters the view is a plain dark grey.
+std::vector<std::string> DeepState::views() const { return {"deep-nodes"}; }
 
 std::string DeepState::status() const {
   if (!active_) return "deep: no semi-transparent casters, depth map only";
   std::string s = "deep: " + std::to_string(deepSize_) + "² texels, " + std::to_string(nodeCount_) + " nodes";
   if (overflow_[0])
-    s += "; OVERFLOW: " + std::to_string(overflow_[0]) + " fragments beyond deep.fragments=" +
-         std::to_string(maxFragments_) + " dropped (raise it)";
+    s += "; OVERFLOW: " + std::to_string(overflow_[0]) +
+         " fragments beyond deep.fragments=" + std::to_string(maxFragments_) + " dropped (raise it)";
   if (overflow_[1]) s += "; " + std::to_string(overflow_[1]) + " texels needed a larger tolerance to fit the nodes";
   return s;
 }
@@ -184,15 +183,26 @@ void DeepState::compressPass(const PartContext& ctx) {
 }
 
 std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {
-  if (!active_) return ctx.shadowMap;  // nothing semi-transparent: the depth map alone
   const std::string& tag = ctx.viewportTag;
+  auto view = ctx.viewTargets.find("deep-nodes");
+  Texture2D* target = view != ctx.viewTargets.end() ? view->second : nullptr;
+  const std::string resource = "view.deep-nodes" + tag;
+  if (!active_) {  // nothing semi-transparent: the depth map alone
+    if (target) {
+      graph.add({resource, {}, {resource}, [target] {
+                   Framebuffer fbo("view target");
+                   fbo.attach({target}, nullptr);
+                   const float grey[4] = {0.2f, 0.2f, 0.2f, 1.0f};
+                   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, grey);
+                 }});
+      graph.requestSink(resource);
+    }
+    return ctx.shadowMap;
+  }
   const std::string fragments = "deep-fragments" + tag, deep = "deep-compress" + tag;
   graph.add({fragments, {}, {fragments}, [this, ctx] { fragmentsPass(ctx); }});
   graph.add({deep, {ctx.shadowMap, fragments}, {deep}, [this, ctx] { compressPass(ctx); }});
-  auto view = ctx.viewTargets.find("deep-nodes");
-  if (view != ctx.viewTargets.end() && view->second) {
-    Texture2D* target = view->second;
-    const std::string resource = "view.deep-nodes" + tag;
+  if (target) {
     graph.add({resource, {deep}, {resource}, [ctx, target] {
                  ProgramSpec spec{
                      "view deep-nodes",

@@ -35,7 +35,7 @@ class DeepState : public RepresentationState {
   // needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
   unsigned overflowFragments() const { return overflow_[0]; }
   unsigned relaxedTexels() const { return overflow_[1]; }
-  const Texture2D& nodes() const { return nodes_; }  // RG32F array: layer view*N + k = (depth, T)
+  const Texture2D& nodes() const { return nodes_; }    // RG32F array: layer view*N + k = (depth, T)
   const Texture2D& counts() const { return counts_; }  // R32F array: nodes used per texel
 
  private:
