@@ -122,6 +122,34 @@ TEST(DeepGl, TransmittanceByHand) {
   EXPECT_NEAR(centreValue(test::renderOnce(h, above, "deep", {"deep.size=64"}, 32, 32)), 0.216f, 0.02f);
 }
 
+// Extremes: opacity 0 and 1, density 0 and 1e6, strands much thinner than a deep texel.
+TEST(DeepGl, ExtremesStayFiniteAndInRange) {
+  test::GlHarness h;
+  const auto ground = std::string(R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]})");
+  const auto sheet = [&](const char* opacity) {
+    return sceneFrom(ground + R"(,{"shape":"plane","size":[2,2],"opacity":)" + opacity +
+                     R"(,"transform":{"translate":[0,3.5,0]}}],)" + kTopCamera + "}");
+  };
+  EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
+  EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("1"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
+  const auto medium = [&](const char* sigma) {
+    return sceneFrom(ground + R"(],"volumes":[{"shape":"sphere","center":[0,1,0],"radius":0.5,"extinction":)" + sigma +
+                     "}]," + kTopCamera + "}");
+  };
+  EXPECT_NEAR(centreValue(test::renderOnce(h, medium("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
+  EXPECT_NEAR(centreValue(test::renderOnce(h, medium("1000000"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
+  // 0.2 mm strands on a 64² map over a 4 m ground: most texels miss them.
+  const Scene thin =
+      sceneFrom(ground + R"(,{"name":"ball","shape":"sphere","radius":0.3,"transform":{"translate":[0,1,0]}}],)" +
+                R"("hair":[{"on":"ball","count":300,"width":0.0002,"length":0.4}],)" + kTopCamera + "}");
+  const test::Frame f = test::renderOnce(h, thin, "deep", {"deep.size=64"}, 48, 48);
+  EXPECT_EQ(f.nonfinite(), 0);
+  for (size_t i = 0; i < f.visibility.size(); i += 2) {
+    ASSERT_GE(f.visibility[i], 0.0f);
+    ASSERT_LE(f.visibility[i], 1.0f);
+  }
+}
+
 TEST(DeepGl, HairAndSmokeMatchTheReferenceAndStayInRange) {
   test::GlHarness h;
   for (const char* id : {"hair", "smoke"}) {
