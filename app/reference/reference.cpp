@@ -452,3 +452,18 @@ bool ReferenceTracer::pointLit(const glm::vec3& p, const glm::vec3& n, int insta
 }
 
 }  // namespace sl
+
+namespace sl {
+
+float ReferenceTracer::transmittanceToLight(const glm::vec3& p) const {
+  glm::vec3 toLight;
+  float distance;
+  if (!isFinite(p) || !impl_->centreToLight(p, toLight, distance)) return 0.0f;
+  RayStart start;
+  start.origin = p;
+  start.tolerance = std::max(kPlaneTolerance * maxAbs(glm::dvec3(p)), kMinTolerance);
+  const float tfar = impl_->light.type == Light::Type::Directional ? distance : distance * (1.0f - 1e-4f);
+  return impl_->transmittance(start, toLight, tfar);
+}
+
+}  // namespace sl

@@ -44,6 +44,9 @@ class ReferenceTracer {
   // One shadow ray; true when the segment from p toward the light is unoccluded. `instance` and
   // `triangle` (optional, -1 = unknown) name the surface p lies on, as the G-buffer does.
   bool pointLit(const glm::vec3& p, const glm::vec3& n, int instance = -1, int triangle = -1) const;
+  // Light fraction reaching the point p in free space (no surface of its own: any hit beyond the
+  // float tolerance of p counts), toward the light's centre; 0 outside a spot cone.
+  float transmittanceToLight(const glm::vec3& p) const;
 
  private:
   struct Impl;

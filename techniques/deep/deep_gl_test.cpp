@@ -1,8 +1,10 @@
 // Deep shadow maps on the GPU: the density matches the C++ one, deep passes run only where
 // there are semi-transparent casters, transmittance matches cases computed by hand and the
 // reference, and bad cases (overflow, opacity 0/1, thin strands) stay finite and in [0,1].
+#include "deep/deep_curve.h"
 #include "deep/deep_state.h"
 #include "scene/volume_density.h"
+#include "prefiltered/visibility_curve.h"
 #include "tests/gl_test_util.h"
 
 #include <gtest/gtest.h>
@@ -179,6 +181,46 @@ TEST(DeepGl, HairAndSmokeMatchTheReferenceAndStayInRange) {
       if (f.position[4 * i + 3] >= 0.5f) seStd += (s.visibility[2 * i] - ref[i]) * (s.visibility[2 * i] - ref[i]);
     EXPECT_LT(rmse, std::sqrt(seStd / std::max(n, 1))) << id;
   }
+}
+
+// The stored function of the texel under the screen centre against the reference's along the
+// same light ray: three sheets of 0.4 give steps 1 -> 0.6 -> 0.36 -> 0.216.
+TEST(DeepGl, TexelCurveFollowsTheReference) {
+  test::GlHarness h;
+  std::string high = R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]})";
+  for (int k = 1; k <= 3; ++k)
+    high += R"(,{"shape":"plane","size":[2,2],"opacity":0.4,"transform":{"translate":[0,)" +
+            std::to_string(3.2 + 0.2 * k) + ",0]}}";
+  const Scene scene = sceneFrom(high + "]," + kTopCamera + "}");
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("deep", {"deep.size=64"}));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = in.height = 32;
+  h.renderer.render(in, {&vp});
+  const auto* state = dynamic_cast<const DeepState*>(vp.representation.get());
+  ASSERT_NE(state, nullptr);
+  // The light ray through a ground point under the sheets, off their triangles' shared edges
+  // (a ray through a vertex hits every triangle around it).
+  glm::vec3 uvLayer;
+  float depth = 0;
+  ASSERT_TRUE(mapPointOf(glm::vec3(0.13f, 0.0f, 0.07f), vp.lightSpace.primary(), uvLayer, depth));
+  const std::vector<float> deep = deepTexelCurve(*state, glm::vec2(uvLayer), 0, 200);
+  ReferenceTracer tracer(scene);
+  const std::vector<float> ref = referenceTexelCurve(tracer, vp.lightSpace.primary(), *state, glm::vec2(uvLayer), 200);
+  ASSERT_EQ(deep.size(), 200u);
+  ASSERT_EQ(ref.size(), 200u);
+  EXPECT_NEAR(deep.front(), 1.0f, 1e-4f);
+  EXPECT_NEAR(ref.front(), 1.0f, 1e-4f);
+  // Up to the ground (beyond it the reference is 0: the ground is opaque, and the deep map
+  // holds only the semi-transparent casters).
+  const size_t above = static_cast<size_t>((depth - 0.01f) * 199.0f);
+  ASSERT_GT(above, 100u);
+  EXPECT_NEAR(ref[above], 0.216f, 1e-4f);
+  EXPECT_NEAR(deep[above], 0.216f, 0.03f);
+  size_t close = 0;
+  for (size_t i = 0; i <= above; ++i) close += std::abs(deep[i] - ref[i]) < 0.03f;
+  EXPECT_GE(close + 6, above + 1);  // all but the samples right at the three steps
 }
 
 TEST(DeepGl, OverflowIsReportedNotGarbage) {
