@@ -2,6 +2,7 @@
 #include "technique.h"
 
 #include "adaptive/virtual_layout.h"
+#include "deep/deep_representation.h"
 #include "depth/depth_representations.h"
 #include "irregular/irregular.h"
 #include "layouts/cascaded.h"
@@ -95,6 +96,7 @@ const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
     registerIrregularRepresentations(v);
     registerReconstructionRepresentations(v);
     registerSoftRepresentations(v);
+    registerDeepRepresentations(v);
     return v;
   }();
   return list;
@@ -203,6 +205,7 @@ const std::vector<Preset>& allPresets() {
     addIrregularPresets(v);
     addReconstructionPresets(v);
     addSoftPresets(v);
+    addDeepPresets(v);
     return v;
   }();
   return presets;

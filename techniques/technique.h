@@ -21,6 +21,7 @@ namespace sl {
 
 class FrameGraph;
 class Program;
+struct ProgramSpec;
 class ShaderLibrary;
 class Texture2D;
 class TextureUnits;
@@ -110,6 +111,11 @@ struct PartContext {
   // Replaces this frame's light space after the layout's passes recomputed it (SDSM with no
   // readback latency); the number of views and their kind must stay the same.
   std::function<void(const LightSpace&)> replaceLightSpace;
+  // Draws only the semi-transparent instances (scene_effects.h) at the frame's time with
+  // programs built from `spec` (per material variant; `setup` runs once per program): no depth
+  // test, no culling, into whatever framebuffer is bound (the deep shadow map's fragment lists).
+  std::function<void(const ProgramSpec&, const std::function<void(const Program&, TextureUnits&)>&)>
+      drawSemiTransparent;
 };
 
 // The one shape of per-viewport state of every part (layout, representation, accumulation):
@@ -173,6 +179,9 @@ class RepresentationState : public PartState {
   // Called every frame before prepare with the technique's current values: targets, formats
   // and defines may depend on them (storage format, filter method, number of terms).
   virtual void configure(const ParamSet& params) {}
+  // Called every frame before configure: what the scene calls for (e.g. semi-transparent
+  // casters) may decide the passes and defines.
+  virtual void setScene(const Scene& scene) {}
   // Allocates (or keeps) the targets: size x size texels, `layers` layers.
   virtual void prepare(int size, int layers) = 0;
   // Binds one layer of the targets for the shadow pass and clears it.
@@ -202,6 +211,9 @@ class Representation {
   virtual std::vector<ParamDecl> params() const { return {}; }
   // Fragment shader of the shadow-map pass; moment representations write their own targets.
   virtual std::string shadowMapFragment() const { return "passes/shadow.frag"; }
+  // True when the shadow pass must draw only opaque casters (the representation handles the
+  // semi-transparent ones in passes of its own: deep shadow maps).
+  virtual bool opaqueShadowPass() const { return false; }
   virtual std::unique_ptr<RepresentationState> createState() const = 0;
 };
 

@@ -1,5 +1,6 @@
 // Tests for the scene module: JSON validation errors, glTF import, builtin scenes, motion, paths.
 #include "scene/scene.h"
+#include "scene/scene_effects.h"
 #include "scene/shapes.h"
 
 #include <gtest/gtest.h>
@@ -420,6 +421,23 @@ TEST(SceneGltf, MissingBinAndMissingTexture) {
   EXPECT_NE(tmsg.find("missing_texture.png"), std::string::npos) << tmsg;
   EXPECT_NE(tmsg.find("could not be loaded"), std::string::npos) << tmsg;
   EXPECT_NE(loadError(writeFile("garbage.gltf", "not json")).find("cannot load glTF"), std::string::npos);
+}
+
+// glTF BLEND stays a 0.5 mask for depth maps (as before) and becomes a semi-transparent caster
+// for deep shadow maps and the reference (Material::alphaBlend, scene_effects.h).
+TEST(SceneGltf, BlendMaterialIsSemiTransparent) {
+  const std::string path = writeQuadGltf("blend", true, false, true,
+                                         R"("materials":[{"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.4]},)"
+                                         R"("alphaMode":"BLEND"}])");
+  const Scene s = loadScene(path, kAssets);
+  const Material& m = s.materials[s.meshes[s.instances[0].mesh].material];
+  EXPECT_TRUE(m.alphaBlend);
+  EXPECT_TRUE(m.alphaMask);
+  EXPECT_FLOAT_EQ(m.alphaCutoff, 0.5f);
+  EXPECT_FLOAT_EQ(m.baseColor.a, 0.4f);
+  EXPECT_TRUE(sceneEffects(s).semiTransparent);
+  const std::string mask = writeQuadGltf("mask", true, false, true, R"("materials":[{"alphaMode":"MASK"}])");
+  EXPECT_FALSE(sceneEffects(loadScene(mask, kAssets)).semiTransparent);
 }
 
 // --- The real third-party scenes, when the shared folder is present -------------------------

@@ -106,8 +106,8 @@ int runRenderCommand(int argc, char** argv) {
       j["timer"] = renderer.stats().timer;
       j["renderer"] = glRendererName();
       j["nonfinite_pixels"] = nonfinite;
-      // What each part says about the last frame (the irregular z-buffer's list overflow, a hard
-      // test in an area-light scene ignoring the radius).
+      // What each part says about the last frame (the irregular z-buffer's list overflow, the deep map's fragment-list
+      // overflow, a hard test in an area-light scene ignoring the radius).
       j["status"] = {{"layout", viewport.layout->status()},
                      {"representation", viewport.representation->status()},
                      {"accumulation", viewport.accumulation->status()}};

@@ -1,6 +1,8 @@
 // Ray-traced shadow reference with Embree 3. See docs/reference.md for what is traced and why.
 #include "reference/reference.h"
 
+#include "scene/volume_density.h"
+
 #include <embree3/rtcore.h>
 
 #include <glm/glm.hpp>
@@ -60,6 +62,41 @@ void alphaOcclusionFilter(const RTCFilterFunctionNArguments* args) {
     if (geometry->alphaAt(prim, u, v) < geometry->cutoff) args->valid[i] = 0;
   }
 }
+
+// A shadow ray's running transmittance through semi-transparent (blended) surfaces. Embree
+// passes the context to the filters; ours starts with Embree's own, so the filter casts back.
+struct TransmittanceContext {
+  RTCIntersectContext context;
+  float transmittance = 1.0f;
+  // Hits already counted: with spatial splits (high-quality builds) a triangle can sit in two
+  // leaves and be reported twice; a strand must attenuate once.
+  uint64_t seen[64];
+  int seenCount = 0;
+};
+
+// Occlusion filter of blended geometry (hair, glTF BLEND): multiplies the ray's transmittance
+// by 1 - alpha and rejects the hit, so the ray goes on to the light.
+void blendOcclusionFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* geometry = static_cast<const AlphaGeometry*>(args->geometryUserPtr);
+  auto* ctx = reinterpret_cast<TransmittanceContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+    const uint64_t key = (static_cast<uint64_t>(RTCHitN_geomID(args->hit, args->N, i)) << 32) | prim;
+    bool counted = false;
+    for (int k = 0; k < ctx->seenCount && !counted; ++k) counted = ctx->seen[k] == key;
+    if (!counted) {
+      if (ctx->seenCount < 64) ctx->seen[ctx->seenCount++] = key;
+      const float alpha = std::clamp(
+          geometry->alphaAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)), 0.0f, 1.0f);
+      ctx->transmittance *= 1.0f - alpha;
+    }
+    args->valid[i] = 0;
+  }
+}
+
+// March steps per volume crossed by a shadow ray (the deep map uses deep.volume_steps per texel).
+constexpr int kReferenceVolumeSteps = 256;
 
 // Stateless integer hash (a splitmix64-style finaliser): the jitter of a light sample depends
 // only on (pixel, sample, dimension), so results do not depend on the thread count or order.
@@ -129,8 +166,9 @@ struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<AlphaGeometry>> alphaGeometries;  // user data of the filters
-  std::vector<TracedMesh> meshes;                                // by scene instance index
+  std::vector<TracedMesh> meshes;                               // by scene instance index
   Light light;
+  Scene media;  // the scene's volumes only (the density the deep map integrates too)
 
   std::mutex errorMutex;
   std::string firstError;  // filled by the Embree error callback
@@ -154,14 +192,16 @@ struct ReferenceTracer::Impl {
     if (device) rtcReleaseDevice(device);
   }
 
-  // Visibility along one direction from a ray start: hits nearer than the height the positions
-  // cannot resolve (tolerance above the receiver's plane) are the receiver's own surface.
-  bool unoccluded(const RayStart& start, const glm::vec3& dir, float tfar) const {
+  // Light fraction along one direction from a ray start: 0 behind an opaque hit, else the
+  // product of 1 - alpha of the blended surfaces crossed and exp(-integral of sigma_t) of the
+  // volumes. Hits nearer than the height the positions cannot resolve (tolerance above the
+  // receiver's plane) are the receiver's own surface.
+  float transmittance(const RayStart& start, const glm::vec3& dir, float tfar) const {
     double tnear = start.tolerance;
     if (start.hasPlane) tnear /= glm::dot(start.plane, glm::dvec3(dir));  // > 0: checked by callers
-    if (!(tnear < tfar)) return true;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    if (!(tnear < tfar)) return 1.0f;
+    TransmittanceContext context;
+    rtcInitIntersectContext(&context.context);
     RTCRay ray;
     ray.org_x = start.origin.x;
     ray.org_y = start.origin.y;
@@ -175,8 +215,12 @@ struct ReferenceTracer::Impl {
     ray.mask = 0xffffffffu;
     ray.id = 0;
     ray.flags = 0;
-    rtcOccluded1(scene, &context, &ray);
-    return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on an occluding hit
+    rtcOccluded1(scene, &context.context, &ray);
+    if (!(ray.tfar >= 0.0f)) return 0.0f;  // Embree sets tfar to -inf on an occluding hit
+    float t = context.transmittance;
+    if (!media.volumes.empty() && t > 0.0f)
+      t *= volumeTransmittance(media, start.origin, dir, tfar, kReferenceVolumeSteps);
+    return std::clamp(t, 0.0f, 1.0f);
   }
 
   // Direction from p to the centre of the light; false when p is outside a spot cone.
@@ -242,12 +286,12 @@ struct ReferenceTracer::Impl {
 
     if (light.radius <= 0.0f || gridSize <= 0) {
       const float tfar = light.type == Light::Type::Directional ? distance : distance * (1.0f - 1e-4f);
-      return unoccluded(start, toLight, tfar) ? 1.0f : 0.0f;
+      return transmittance(start, toLight, tfar);
     }
 
     glm::vec3 tangent, bitangent;
     orthonormalBasis(glm::normalize(light.direction), tangent, bitangent);
-    int visible = 0;
+    float visible = 0.0f;
     const int total = gridSize * gridSize;
     for (int s = 0; s < total; ++s) {
       const float a = (static_cast<float>(s % gridSize) + hashToUnit(pixel, s, 0)) / gridSize;
@@ -269,15 +313,16 @@ struct ReferenceTracer::Impl {
       }
       // Parts of the light below the surface's horizon are hidden by the surface itself.
       if (start.hasPlane && glm::dot(start.plane, glm::dvec3(dir)) <= 0.0) continue;
-      if (unoccluded(start, dir, tfar)) ++visible;
+      visible += transmittance(start, dir, tfar);
     }
-    return static_cast<float>(visible) / static_cast<float>(total);
+    return visible / static_cast<float>(total);
   }
 };
 
 ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Impl) {
   std::unique_ptr<Impl> impl(impl_);  // released only if construction succeeds
   impl->light = scene.light;
+  impl->media.volumes = scene.volumes;
   if (glm::length(impl->light.direction) > 0.0f) impl->light.direction = glm::normalize(impl->light.direction);
 
   impl->device = rtcNewDevice(nullptr);
@@ -329,7 +374,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
 
     const bool validMaterial = mesh.material >= 0 && static_cast<size_t>(mesh.material) < scene.materials.size();
-    if (validMaterial && scene.materials[mesh.material].alphaMask) {
+    if (validMaterial && (scene.materials[mesh.material].alphaMask || scene.materials[mesh.material].alphaBlend)) {
       const Material& material = scene.materials[mesh.material];
       auto alpha = std::make_unique<AlphaGeometry>();
       alpha->uvs = mesh.uvs;
@@ -343,12 +388,13 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
         if (texture.rgba.size() >= static_cast<size_t>(texture.width) * texture.height * 4) alpha->texture = texture;
       }
       rtcSetGeometryUserData(geom, alpha.get());
-      rtcSetGeometryOccludedFilterFunction(geom, &alphaOcclusionFilter);
+      // Blended surfaces attenuate (the light fraction reaching the receiver); masks cut holes.
+      rtcSetGeometryOccludedFilterFunction(geom, material.alphaBlend ? &blendOcclusionFilter : &alphaOcclusionFilter);
       impl->alphaGeometries.push_back(std::move(alpha));
     }
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl->scene, geom, static_cast<unsigned>(i));  // geomID = instance index
-    rtcReleaseGeometry(geom);  // the scene keeps its own reference
+    rtcReleaseGeometry(geom);                                            // the scene keeps its own reference
     triangles += triCount;
   }
   if (triangles == 0)
@@ -403,6 +449,21 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
 bool ReferenceTracer::pointLit(const glm::vec3& p, const glm::vec3& n, int instance, int triangle) const {
   // Hard visibility toward the light's centre, with the same ray start and tests as visibility().
   return impl_->shade(p, n, instance, triangle, 0, 0) > 0.5f;
+}
+
+}  // namespace sl
+
+namespace sl {
+
+float ReferenceTracer::transmittanceToLight(const glm::vec3& p) const {
+  glm::vec3 toLight;
+  float distance;
+  if (!isFinite(p) || !impl_->centreToLight(p, toLight, distance)) return 0.0f;
+  RayStart start;
+  start.origin = p;
+  start.tolerance = std::max(kPlaneTolerance * maxAbs(glm::dvec3(p)), kMinTolerance);
+  const float tfar = impl_->light.type == Light::Type::Directional ? distance : distance * (1.0f - 1e-4f);
+  return impl_->transmittance(start, toLight, tfar);
 }
 
 }  // namespace sl

@@ -30,7 +30,9 @@ struct ReferenceOptions {
 };
 
 // Visibility in [0,1] per pixel (1 = lit), 0 for background pixels; row order as the G-buffer.
-// Alpha-masked materials are honoured through an Embree intersection filter.
+// Alpha-masked materials are honoured through an Embree intersection filter. Semi-transparent
+// casters make it the light fraction reaching the pixel: blended surfaces (hair, glTF BLEND)
+// multiply it by 1 - alpha, volumes by exp(-integral of sigma_t) (app/scene/volume_density.h).
 class ReferenceTracer {
  public:
   explicit ReferenceTracer(const Scene& scene, double time = 0.0);
@@ -42,6 +44,9 @@ class ReferenceTracer {
   // One shadow ray; true when the segment from p toward the light is unoccluded. `instance` and
   // `triangle` (optional, -1 = unknown) name the surface p lies on, as the G-buffer does.
   bool pointLit(const glm::vec3& p, const glm::vec3& n, int instance = -1, int triangle = -1) const;
+  // Light fraction reaching the point p in free space (no surface of its own: any hit beyond the
+  // float tolerance of p counts), toward the light's centre; 0 outside a spot cone.
+  float transmittanceToLight(const glm::vec3& p) const;
 
  private:
   struct Impl;

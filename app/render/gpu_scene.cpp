@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "gl/gl_util.h"
+#include "scene/scene_effects.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +90,7 @@ const Program* PassPrograms::get(int variant) {
   return programs_[variant];
 }
 
-void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace) const {
+void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only) const {
   for (int variant = 0; variant < 4; ++variant) {
     const Program* program = nullptr;
     bool asked = false;
@@ -98,6 +99,7 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
       const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
       const Material& mat = scene.materials[static_cast<size_t>(m.material)];
       if (materialVariant(mat) != variant) continue;
+      if (only != Only::All && (only == Only::SemiTransparent) != instanceSemiTransparent(scene, index)) continue;
       if (!asked) {
         program = programs.get(variant);
         asked = true;

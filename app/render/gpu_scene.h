@@ -52,7 +52,9 @@ struct GpuScene {
   // Draws every instance at `time`; sets u_model, u_prevModel (at prevTime) and material uniforms.
   // cullFace (GL_BACK/GL_FRONT, 0 = none) applies to single-sided materials only: double-sided
   // leaf cards must cast from both sides.
-  void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0) const;
+  // `only` keeps all instances, the opaque ones or the semi-transparent ones (scene_effects.h).
+  enum class Only { All, Opaque, SemiTransparent };
+  void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All) const;
 
   const Scene& scene;
   std::vector<GpuMesh> meshes;

@@ -334,6 +334,8 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
                prelude};
            const GLenum cull = culled[t.params.i("shadowmap.cull")];
+           // A deep map draws its semi-transparent casters into its own fragment lists instead.
+           const auto only = t.representation->opaqueShadowPass() ? GpuScene::Only::Opaque : GpuScene::Only::All;
            for (int layer = 0; layer < static_cast<int>(vp.lightSpace.views.size()); ++layer) {
              if (!vp.layout->drawsTiles()) {
                vp.representation->beginShadowLayer(layer);
@@ -341,7 +343,7 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                  bindTechnique(p, units, vp);
                  p.set("u_shadowView", layer);
                });
-               gpu_->draw(programs, in.time, in.time, cull);
+               gpu_->draw(programs, in.time, in.time, cull, only);
                continue;
              }
              // Piecewise (paged) layer: only the tiles the layout asks for, each into its viewport.
@@ -354,7 +356,7 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                  p.set("u_shadowView", layer);
                  vp.layout->bindShadowTile(p, layer, tile);
                });
-               gpu_->draw(programs, in.time, in.time, cull);
+               gpu_->draw(programs, in.time, in.time, cull, only);
              }
              glDisable(GL_SCISSOR_TEST);
            }
@@ -385,6 +387,10 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.techniquePrelude = prelude;
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };
   part.bindGBuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
+  part.drawSemiTransparent = [this, &in](const ProgramSpec& spec, const ProgramSetup& setup) {
+    PassPrograms programs(shaders_, spec, setup);
+    gpu_->draw(programs, in.time, in.time, 0, GpuScene::Only::SemiTransparent);
+  };
   part.replaceLightSpace = [&vp](const LightSpace& ls) {
     vp.lightSpace = ls;
     vp.lightViews_->upload(vp.lightSpace);
@@ -408,6 +414,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
     throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
   vp.lightViews_->upload(vp.lightSpace);
+  vp.representation->setScene(*scene_);
   vp.representation->configure(t.params);
   vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
   const std::string prelude = techniquePrelude(vp);

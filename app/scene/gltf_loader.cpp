@@ -343,10 +343,11 @@ class GltfImporter {
       m.alphaMask = true;
       m.alphaCutoff = float(gm.alphaCutoff);
     } else if (gm.alphaMode == "BLEND") {
-      // Shadow maps store one depth per texel, so blended surfaces are approximated as a mask
+      // Depth shadow maps store one depth per texel, so blended surfaces are approximated as a mask
       // with the default cutoff (0.5): texels at least half opaque cast shadows.
       m.alphaMask = true;
       m.alphaCutoff = 0.5f;
+      m.alphaBlend = true;  // deep shadow maps and the reference attenuate by alpha instead
     }
     m.doubleSided = gm.doubleSided;
     const int tex = gm.pbrMetallicRoughness.baseColorTexture.index;

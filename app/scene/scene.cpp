@@ -64,6 +64,12 @@ Bounds Scene::boundsAt(double t) const {
     const glm::mat4 m = inst.transformAt(t);
     for (const glm::vec3& p : meshes[inst.mesh].positions) b.add(glm::vec3(m * glm::vec4(p, 1.0f)));
   }
+  // Media cast shadows too: light frusta fitted to the bounds must hold them.
+  for (const Volume& v : volumes) {
+    const glm::vec3 h = v.shape == Volume::Shape::Sphere ? glm::vec3(v.halfSize.x) : v.halfSize;
+    b.add(v.center - h);
+    b.add(v.center + h);
+  }
   return b;
 }
 

@@ -31,6 +31,10 @@ struct Material {
   bool alphaMask = false;     // glTF alphaMode MASK: texels with alpha < cutoff are holes
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
+  // Semi-transparent caster (glTF alphaMode BLEND, generated hair): light passes through it
+  // attenuated by alpha. Techniques without a transmittance representation treat it as the mask
+  // above; the deep shadow map and the reference attenuate.
+  bool alphaBlend = false;
 };
 
 struct Mesh {
@@ -70,6 +74,22 @@ struct Light {
   // `direction`. Directional: tangent of the angular radius (disk radius at unit distance).
   float radius = 0.0f;
   glm::vec3 color{1.0f};
+};
+
+// A participating medium: procedural density inside a box or sphere (app/scene/volume_density.h;
+// the same function runs in GLSL, shaders/common/volume_density.glsl). Not drawn by the
+// rasterizer: it only attenuates light (deep shadow maps, the reference).
+struct Volume {
+  enum class Shape { Box, Sphere };
+  std::string name;
+  Shape shape = Shape::Box;
+  glm::vec3 center{0.0f};
+  glm::vec3 halfSize{0.5f};  // box: half extents; sphere: x = radius
+  float extinction = 1.0f;   // sigma_t at full density, per world unit
+  float noiseScale = 1.0f;   // noise features per world unit
+  float noise = 0.0f;        // 0 = constant density, 1 = fully noise-modulated
+  int octaves = 4;
+  uint32_t seed = 0;
 };
 
 struct Camera {
@@ -118,6 +138,7 @@ struct Scene {
   Light light;
   std::vector<Camera> cameras;  // at least one after loading
   std::vector<CameraPath> paths;
+  std::vector<Volume> volumes;  // semi-transparent media (scene_effects.h)
 
   bool hasMotion() const;
   size_t triangleCount() const;

@@ -2,6 +2,7 @@
 // Validation is strict on purpose: a typo in a key or a degenerate value must be reported with
 // the file and the JSON location instead of silently producing a different scene.
 #include "scene/gltf_loader.h"
+#include "scene/scene_json_media.h"
 #include "scene/json_reader.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene.h"
@@ -96,7 +97,7 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   const json* shapeJ = JsonReader::find(j, "shape");
   if (!shapeJ) r.fail(where, "missing 'shape' (plane, box, sphere or cylinder)");
   const std::string shape = r.string(*shapeJ, where + ".shape");
-  std::vector<std::string> keys = {"name", "shape", "color", "transform", "motion", "double_sided"};
+  std::vector<std::string> keys = {"name", "shape", "color", "opacity", "transform", "motion", "double_sided"};
   Mesh mesh;
   if (shape == "plane") {
     keys.insert(keys.end(), {"size", "subdivisions"});
@@ -143,6 +144,14 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
     mat.baseColor = glm::vec4(v[0], v[1], v[2], n == 4 ? v[3] : 1.0f);
   }
   if (const json* d = JsonReader::find(j, "double_sided")) mat.doubleSided = r.boolean(*d, where + ".double_sided");
+  if (const json* o = JsonReader::find(j, "opacity")) {
+    // A semi-transparent caster (a sheet of tinted glass, a curtain): light through it is
+    // attenuated by `opacity` (deep shadow maps, the reference); other techniques cast it opaque.
+    const double a = r.number(*o, where + ".opacity");
+    if (!(a >= 0.0 && a <= 1.0)) r.expected(where + ".opacity", "a number in [0,1]", *o);
+    mat.baseColor.a = float(a);
+    mat.alphaBlend = true;
+  }
 
   Instance inst;
   const json* nameJ = JsonReader::find(j, "name");
@@ -309,7 +318,7 @@ Scene loadJsonScene(const std::string& path) {
     // nlohmann reports literals like 1e999 this way (out_of_range 406) instead of storing inf.
     r.fail("", "malformed JSON (numbers must be finite): " + std::string(e.what()));
   }
-  r.checkKeys(root, "", {"name", "description", "models", "objects", "light", "cameras", "paths"});
+  r.checkKeys(root, "", {"name", "description", "models", "objects", "hair", "volumes", "light", "cameras", "paths"});
   Scene scene;
   scene.sourcePath = path;
   const json* name = JsonReader::find(root, "name");
@@ -348,6 +357,14 @@ Scene loadJsonScene(const std::string& path) {
     for (size_t i = 0; i < objects->size(); ++i) {
       parseObject(r, (*objects)[i], "objects[" + std::to_string(i) + "]", scene);
     }
+  }
+  // Hair grows on objects (and models) declared above, whatever the key order in the file.
+  if (const json* hair = array("hair")) {
+    for (size_t i = 0; i < hair->size(); ++i) parseHair(r, (*hair)[i], "hair[" + std::to_string(i) + "]", scene);
+  }
+  if (const json* volumes = array("volumes")) {
+    for (size_t i = 0; i < volumes->size(); ++i)
+      parseVolume(r, (*volumes)[i], "volumes[" + std::to_string(i) + "]", scene);
   }
   const json* light = JsonReader::find(root, "light");
   if (light) scene.light = parseLight(r, *light);

@@ -1,0 +1,24 @@
+// Deep shadow map, step 1 (Lokovic & Veach 2000): every semi-transparent fragment the light sees
+// goes into its texel's list as (light depth, alpha). Lists have a fixed length
+// (SL_DEEP_FRAGMENTS); a fragment that finds its list full is counted, never written past the
+// end, so memory stays bounded and the status reports it. Needs the technique prelude.
+#include "common/material.glsl"
+uniform float u_deep_size;
+layout(std430, binding = 3) buffer DeepCounts { uint deepCount[]; };
+layout(std430, binding = 4) writeonly buffer DeepFragments { vec2 deepFragment[]; };
+layout(std430, binding = 5) buffer DeepOverflow { uint deepOverflow[2]; };
+in vec3 v_world;
+in vec2 v_uv;
+
+void main() {
+  float alpha = clamp(materialColor(v_uv).a, 0.0, 1.0);
+  if (!(alpha > 0.0)) return;  // fully clear (or NaN): no attenuation
+  int size = int(u_deep_size + 0.5);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  uint index = uint((u_shadowView * size + texel.y) * size + texel.x);
+  uint slot = atomicAdd(deepCount[index], 1u);
+  if (slot < uint(SL_DEEP_FRAGMENTS))
+    deepFragment[index * uint(SL_DEEP_FRAGMENTS) + slot] = vec2(clamp(layoutDepth(v_world), 0.0, 1.0), alpha);
+  else
+    atomicAdd(deepOverflow[0], 1u);
+}

@@ -1,0 +1,227 @@
+#include "deep/deep_state.h"
+
+#include "gl/shader_library.h"
+#include "gl/texture_units.h"
+#include "render/frame_graph.h"
+#include "scene/scene_effects.h"
+
+#include <algorithm>
+
+namespace sl {
+
+namespace {
+
+// SSBO bindings shared with passes/deep_fragments.frag and passes/deep_compress.comp.
+constexpr GLuint kCountsBinding = 3, kFragmentsBinding = 4, kOverflowBinding = 5, kVolumesBinding = 6;
+
+// std430 layout of one volume (shaders/common/volume_density.glsl).
+struct GpuVolume {
+  glm::vec4 centerShape;  // xyz centre, w: 0 box, 1 sphere
+  glm::vec4 halfSizeExtinction;
+  glm::vec4 noise;  // scale, amount, octaves, seed (as float: < 2^24)
+};
+
+}  // namespace
+
+DeepState::~DeepState() {
+  releaseBuffers();
+  if (volumes_) glDeleteBuffers(1, &volumes_);
+  if (emptyFbo_) glDeleteFramebuffers(1, &emptyFbo_);
+}
+
+void DeepState::releaseBuffers() {
+  GLuint b[3] = {fragmentCounts_, fragments_, overflowBuffer_};
+  for (GLuint id : b)
+    if (id) glDeleteBuffers(1, &id);
+  fragmentCounts_ = fragments_ = overflowBuffer_ = 0;
+  bufferTexels_ = bufferFragments_ = 0;
+}
+
+void DeepState::setScene(const Scene& scene) { active_ = sceneEffects(scene).semiTransparent; }
+
+void DeepState::configure(const ParamSet& params) {
+  nodeCount_ = params.i("deep.nodes");
+  maxFragments_ = params.i("deep.fragments");
+  deepSize_ = params.i("deep.size");
+  steps_ = params.i("deep.volume_steps");
+}
+
+void DeepState::prepare(int size, int layers) {
+  opaque_.prepare(size, layers);
+  layers_ = layers;
+  if (!active_) return;
+  if (!nodes_ || nodes_.width() != deepSize_ || nodes_.layers() != layers * nodeCount_) {
+    nodes_ = Texture2D::array(GL_RG32F, deepSize_, deepSize_, layers * nodeCount_, 1, "deep shadow map nodes");
+    counts_ = Texture2D::array(GL_R32F, deepSize_, deepSize_, layers, 1, "deep shadow map node counts");
+  }
+  const size_t texels = static_cast<size_t>(deepSize_) * deepSize_ * layers;
+  const size_t fragments = texels * static_cast<size_t>(maxFragments_);
+  if (texels != bufferTexels_ || fragments != bufferFragments_) {
+    releaseBuffers();
+    glCreateBuffers(1, &fragmentCounts_);
+    glNamedBufferStorage(fragmentCounts_, static_cast<GLsizeiptr>(texels * sizeof(GLuint)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    glCreateBuffers(1, &fragments_);
+    glNamedBufferStorage(fragments_, static_cast<GLsizeiptr>(fragments * 2 * sizeof(float)), nullptr, 0);
+    glCreateBuffers(1, &overflowBuffer_);
+    glNamedBufferStorage(overflowBuffer_, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    label(GL_BUFFER, fragmentCounts_, "deep fragment counts");
+    label(GL_BUFFER, fragments_, "deep fragment lists");
+    label(GL_BUFFER, overflowBuffer_, "deep overflow counters");
+    bufferTexels_ = texels;
+    bufferFragments_ = fragments;
+  }
+  if (!emptyFbo_) {
+    glCreateFramebuffers(1, &emptyFbo_);
+    label(GL_FRAMEBUFFER, emptyFbo_, "deep fragments (no attachments)");
+  }
+  glNamedFramebufferParameteri(emptyFbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, deepSize_);
+  glNamedFramebufferParameteri(emptyFbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, deepSize_);
+}
+
+std::string DeepState::defines() const {
+  if (!active_) return "";
+  return "#define SL_DEEP\n#define SL_DEEP_NODES " + std::to_string(nodeCount_) + "\n#define SL_DEEP_FRAGMENTS " +
+         std::to_string(maxFragments_) + "\n#define SL_DEEP_STEPS " + std::to_string(steps_) + "\n";
+}
+
+void DeepState::bind(const Program& p, TextureUnits& units) const {
+  opaque_.bind(p, units);
+  if (!active_ || !nodes_) return;
+  units.bind(p, "u_deepNodes", nodes_.id());
+  units.bind(p, "u_deepCounts", counts_.id());
+}
+
+// Listed in every scene (views are offered before the first frame); without semi-transparent
+// casters the view is a plain dark grey.
+std::vector<std::string> DeepState::views() const { return {"deep-nodes"}; }
+
+std::string DeepState::status() const {
+  if (!active_) return "deep: no semi-transparent casters, depth map only";
+  std::string s = "deep: " + std::to_string(deepSize_) + "² texels, " + std::to_string(nodeCount_) + " nodes";
+  if (overflow_[0])
+    s += "; OVERFLOW: " + std::to_string(overflow_[0]) +
+         " fragments beyond deep.fragments=" + std::to_string(maxFragments_) + " dropped (raise it)";
+  if (overflow_[1]) s += "; " + std::to_string(overflow_[1]) + " texels needed a larger tolerance to fit the nodes";
+  return s;
+}
+
+long long DeepState::texels() const {
+  long long t = opaque_.texels();
+  if (active_ && nodes_) t += static_cast<long long>(nodes_.width()) * nodes_.height() * (nodes_.layers() + layers_);
+  return t;
+}
+
+void DeepState::uploadVolumes(const Scene& scene) {
+  std::vector<GpuVolume> v;
+  for (const Volume& vol : scene.volumes)
+    v.push_back({glm::vec4(vol.center, vol.shape == Volume::Shape::Sphere ? 1.0f : 0.0f),
+                 glm::vec4(vol.halfSize, vol.extinction),
+                 glm::vec4(vol.noiseScale, vol.noise, float(vol.octaves), float(vol.seed))});
+  // Header: the count in x; std430 aligns the array of vec4 structs to 16 bytes.
+  std::vector<glm::vec4> data(1 + 3 * v.size(), glm::vec4(0.0f));
+  data[0].x = float(v.size());
+  for (size_t i = 0; i < v.size(); ++i) {
+    data[1 + 3 * i] = v[i].centerShape;
+    data[2 + 3 * i] = v[i].halfSizeExtinction;
+    data[3 + 3 * i] = v[i].noise;
+  }
+  if (volumes_) glDeleteBuffers(1, &volumes_);
+  glCreateBuffers(1, &volumes_);
+  glNamedBufferStorage(volumes_, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data(), 0);
+  label(GL_BUFFER, volumes_, "deep volumes");
+}
+
+// Every semi-transparent fragment seen from the light goes into its texel's list (depth, alpha);
+// a full list counts the fragment as overflow instead of writing past its end.
+void DeepState::fragmentsPass(const PartContext& ctx) {
+  const GLuint zero = 0;
+  glClearNamedBufferData(fragmentCounts_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(overflowBuffer_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_);
+  glViewport(0, 0, deepSize_, deepSize_);
+  glDisable(GL_DEPTH_TEST);
+  const ProgramSpec spec{"deep fragments",
+                         {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/deep_fragments.frag"}},
+                         ctx.techniquePrelude};
+  for (int layer = 0; layer < layers_; ++layer) {
+    ctx.drawSemiTransparent(spec, [&ctx, layer](const Program& p, TextureUnits& units) {
+      ctx.bindTechnique(p, units);
+      p.set("u_shadowView", layer);
+    });
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// Per texel: sort the list, merge it with the volumes ray-marched along the texel's light ray
+// into one transmittance function, compress it to at most deep.nodes nodes.
+void DeepState::compressPass(const PartContext& ctx) {
+  uploadVolumes(*ctx.scene);
+  const ProgramSpec spec{"deep compress", {{GL_COMPUTE_SHADER, "passes/deep_compress.comp"}}, ctx.techniquePrelude};
+  Program& p = ctx.shaders->get(spec);
+  if (!p.valid()) return;
+  p.use();
+  TextureUnits units;
+  ctx.bindTechnique(p, units);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumesBinding, volumes_);
+  glBindImageTexture(0, nodes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(1, counts_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  p.set("u_deepNodesOut", 0);  // image units (the layout bindings say the same)
+  p.set("u_deepCountsOut", 1);
+  const GLuint groups = static_cast<GLuint>((deepSize_ + 7) / 8);
+  glDispatchCompute(groups, groups, static_cast<GLuint>(layers_));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // Two counters read back for the status line (free on a software rasterizer, which is
+  // synchronous; a stall of one frame's work on a GPU).
+  glGetNamedBufferSubData(overflowBuffer_, 0, sizeof(overflow_), overflow_);
+}
+
+std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {
+  const std::string& tag = ctx.viewportTag;
+  auto view = ctx.viewTargets.find("deep-nodes");
+  Texture2D* target = view != ctx.viewTargets.end() ? view->second : nullptr;
+  const std::string resource = "view.deep-nodes" + tag;
+  if (!active_) {  // nothing semi-transparent: the depth map alone
+    if (target) {
+      graph.add({resource, {}, {resource}, [target] {
+                   Framebuffer fbo("view target");
+                   fbo.attach({target}, nullptr);
+                   const float grey[4] = {0.2f, 0.2f, 0.2f, 1.0f};
+                   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, grey);
+                 }});
+      graph.requestSink(resource);
+    }
+    return ctx.shadowMap;
+  }
+  const std::string fragments = "deep-fragments" + tag, deep = "deep-compress" + tag;
+  graph.add({fragments, {}, {fragments}, [this, ctx] { fragmentsPass(ctx); }});
+  graph.add({deep, {ctx.shadowMap, fragments}, {deep}, [this, ctx] { compressPass(ctx); }});
+  if (target) {
+    graph.add({resource, {deep}, {resource}, [ctx, target] {
+                 ProgramSpec spec{
+                     "view deep-nodes",
+                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/deep_nodes.frag"}},
+                     ctx.techniquePrelude};
+                 Program& p = ctx.shaders->get(spec);
+                 if (!p.valid()) return;
+                 Framebuffer fbo("view target");
+                 fbo.attach({target}, nullptr);
+                 fbo.bind();
+                 p.use();
+                 TextureUnits units;
+                 ctx.bindTechnique(p, units);
+                 p.set("u_viewSize", glm::vec2(target->width(), target->height()));
+                 ctx.drawFullscreen();
+               }});
+    graph.requestSink(resource);
+  }
+  return deep;
+}
+
+}  // namespace sl

@@ -1,0 +1,56 @@
+// Per-viewport state of the deep shadow map (Lokovic & Veach 2000): an ordinary depth map for
+// the opaque casters plus, per light texel, a transmittance function of light depth for the
+// semi-transparent ones (hair fragments and volumes), compressed to a fixed number of
+// piecewise-linear nodes. In a scene without semi-transparent casters it is the depth map alone:
+// no deep pass, no define, the same shaders as depth-nearest.
+#pragma once
+
+#include "depth/depth_map_state.h"
+#include "gl/gl_util.h"
+#include "technique.h"
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+class DeepState : public RepresentationState {
+ public:
+  DeepState() : opaque_(false) {}
+  ~DeepState() override;
+  void setScene(const Scene& scene) override;
+  void configure(const ParamSet& params) override;
+  void prepare(int size, int layers) override;
+  void beginShadowLayer(int layer) override { opaque_.beginShadowLayer(layer); }
+  std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
+  const Texture2D* depthTexture() const override { return opaque_.depthTexture(); }
+  std::string defines() const override;
+  void bind(const Program& p, TextureUnits& units) const override;
+  std::vector<std::string> views() const override;
+  std::string status() const override;
+  long long texels() const override;
+
+  bool active() const { return active_; }
+  // Of the last frame: fragments that did not fit their texel's list, texels whose function
+  // needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
+  unsigned overflowFragments() const { return overflow_[0]; }
+  unsigned relaxedTexels() const { return overflow_[1]; }
+  const Texture2D& nodes() const { return nodes_; }    // RG32F array: layer view*N + k = (depth, T)
+  const Texture2D& counts() const { return counts_; }  // R32F array: nodes used per texel
+
+ private:
+  void releaseBuffers();
+  void fragmentsPass(const PartContext& ctx);
+  void compressPass(const PartContext& ctx);
+  void uploadVolumes(const Scene& scene);
+
+  DepthMapState opaque_;
+  bool active_ = false;
+  int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, layers_ = 1;
+  Texture2D nodes_, counts_;
+  GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, volumes_ = 0, emptyFbo_ = 0;
+  size_t bufferTexels_ = 0, bufferFragments_ = 0;
+  unsigned overflow_[2] = {0, 0};
+};
+
+}  // namespace sl
