@@ -2,6 +2,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "explorer/explorer.h"
+#include "explorer/settings.h"
 
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,7 @@ const char* kUsage =
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
+    "            [--enlarge VIEW]... [--settings FILE | --no-settings]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
@@ -23,13 +25,15 @@ const char* kUsage =
     "  shadowlab plot --scene S --techniques a,b --out F.svg    visibility vs receiver depth at a texel (plot --help)\n"
     "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
     "\n"
-    "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
+    "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n"
+    "The window keeps its settings in $SHADOWLAB_SETTINGS or $XDG_CONFIG_HOME/shadowlab/settings.json\n"
+    "(not with --frames unless --settings is given). F1 in the window lists every key.\n";
 
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light"},
-                {"--magnifier", "--visibility-plot"});
+                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge"},
+                {"--magnifier", "--visibility-plot", "--no-settings"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -43,6 +47,18 @@ int runExplorerCommand(int argc, char** argv) {
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
+  o.enlargedViews = args.all("--enlarge");  // one per viewport, in order ("colour" = none)
+  for (std::string& v : o.enlargedViews)
+    if (v == "colour" || v == "color") v.clear();
+  // Settings: an explicit file always; otherwise the user's file, except in scripted runs
+  // (--frames), which must not depend on (or change) what a person left there.
+  o.sceneGiven = args.has("--scene");
+  o.layoutGiven = args.has("--technique") || args.has("--compare") || args.has("--view") || args.has("--set") ||
+                  args.has("--enlarge");
+  if (args.has("--settings"))
+    o.settingsPath = args.get("--settings");
+  else if (!args.has("--no-settings") && o.maxFrames == 0)
+    o.settingsPath = sl::defaultSettingsPath();
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
     const std::string v = args.get("--light");

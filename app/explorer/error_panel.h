@@ -94,6 +94,12 @@ struct ChartAxis {
 // range is padded and rounded outward to tick values.
 ChartAxis chooseChartAxis(double minValue, double maxValue, double floor, double logRatio = 20.0);
 std::string formatTick(double v);
+// The chart as a standalone SVG (axes with ticks, the Pareto front dashed, one labelled point
+// per configuration) and its points as CSV rows, for slides and spreadsheets.
+std::string chartPointsSvg(const std::vector<ChartPoint>& points);
+std::string chartPointsCsv(const std::vector<ChartPoint>& points);
+// A CSV field: quoted when it holds a comma, quote or newline.
+std::string csvField(const std::string& text);
 
 // Cost of viewport v in one frame: its own passes only (names ending in "[v]"; debug views
 // "view.*" excluded: they are display, not the technique). The shared "gbuffer" pass is kept
@@ -154,6 +160,10 @@ class ErrorPanel {
   // errorViewStatus says why).
   const Texture2D* errorTexture(int slot) const;
   std::string errorViewStatus() const;
+  // Exports (error_panel_export.cpp): the accuracy table of the shown viewports, then every
+  // configuration of the chart, as CSV; the chart as SVG.
+  std::string accuracyCsv(const ExplorerState& state) const;
+  std::string chartSvg() const { return chartPointsSvg(points_); }
 
   struct Job;  // a reference being traced (defined in the .cpp)
 

@@ -7,7 +7,11 @@
 #include "explorer/magnifier.h"
 #include "explorer/visibility_plot.h"
 #include "explorer/screenshot.h"
+#include "explorer/session_files.h"
+#include "explorer/settings.h"
+#include "explorer/shortcuts.h"
 #include "explorer/side_panel.h"
+#include "explorer/ui_scale.h"
 #include "explorer/viewport_area.h"
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
@@ -34,7 +38,6 @@ namespace {
 
 constexpr double kShaderPollSeconds = 0.25;  // hot reload shows an edit within half a second
 constexpr float kMaxFrameSeconds = 0.1f;     // a stall (breakpoint, resize) must not fling the camera
-constexpr float kFontPixels = 16.0f;         // readable on a projector at 1280x720
 
 const char* const kNoDisplayMessage =
     "shadowlab: no display found (DISPLAY unset or X server unreachable); run headless:\n"
@@ -62,22 +65,11 @@ GLFWwindow* createWindow(const ExplorerOptions& options) {
                           nullptr);
 }
 
-void setUpImGui(GLFWwindow* window) {
+void setUpImGui(GLFWwindow* window, float uiScale) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; do not litter the working directory
-  const char* fontCandidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                                  "/usr/share/fonts/TTF/DejaVuSans.ttf"};
-  bool fontLoaded = false;
-  for (const char* path : fontCandidates) {
-    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, kFontPixels)) {
-      fontLoaded = true;
-      break;
-    }
-  }
-  if (!fontLoaded) io.Fonts->AddFontDefault();
-
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 0.0f;
@@ -88,6 +80,7 @@ void setUpImGui(GLFWwindow* window) {
 
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
+  applyUiScale(uiScale);  // loads the font (16 px x scale)
 }
 
 void shutDownImGui() {
@@ -191,13 +184,21 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   ensureViewportSlots(state);
   const std::vector<std::string> offered = availableViewNames(state);
   for (const std::string& view : state.options.debugViews) {
-    if (std::find(offered.begin(), offered.end(), view) == offered.end()) {
+    const bool known = std::find(offered.begin(), offered.end(), view) != offered.end();
+    if (!known && (state.options.fromSettings || state.options.firstStartDefaults)) continue;  // not offered now
+    if (!known) {
       std::cerr << "shadowlab: no debug view '" << view << "'; these techniques offer:";
       for (const std::string& name : offered) std::cerr << " " << name;
       std::cerr << "\n";
       return 1;
     }
     state.selectedViews.insert(view);
+  }
+  for (size_t i = 0; i < state.options.enlargedViews.size() && i < state.slots.size(); ++i) {
+    const std::string& view = state.options.enlargedViews[i];
+    if (view.empty() || std::find(offered.begin(), offered.end(), view) == offered.end()) continue;
+    state.selectedViews.insert(view);
+    state.slots[i].enlargedView = view;
   }
   state.magnifierPinned = state.options.magnifier;
   state.plotPinned = state.options.visibilityPlot;
@@ -208,6 +209,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   std::vector<std::string> printedShaderErrors;
+  float appliedUiScale = state.uiScale;
   for (int frame = 0;; ++frame) {
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
@@ -236,15 +238,20 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       printedShaderErrors = std::move(errors);
     }
 
+    if (state.uiScale != appliedUiScale) {  // fonts are rebuilt between frames, never inside one
+      applyUiScale(state.uiScale);
+      appliedUiScale = state.uiScale;
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    handleShortcuts(state);
     drawSidePanel(state, renderer, shaders);
     ensureViewportSlots(state);
     applySelectedViews(state);
 
     const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
+    const float panelWidth = std::min(sidePanelWidth(state.uiScale), io.DisplaySize.x - 1.0f);
     const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
     const MainAreaLayout layout =
         layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
@@ -268,17 +275,15 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       drawVisibilityPlot(shaders, renderer, *state.slots[static_cast<size_t>(area.hoveredViewport)].viewport,
                          area.hoveredImage, io.MousePos);
 
+    drawHelpWindow(state);
+
     ImGui::Render();
     prepareDefaultFramebuffer(fbWidth, fbHeight);
     blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-    if (state.screenshotRequested) {
-      state.screenshotRequested = false;
-      const std::string path = timestampedScreenshotName();
-      const std::string error = writeWindowPng(fbWidth, fbHeight, path);
-      state.statusLine = error.empty() ? "saved " + path : error;
-    }
+    saveRequestedScreenshots(state, fbWidth, fbHeight);
+    saveSettingsIfChanged(state, now, lastFrame);
     if (lastFrame && !state.options.screenshotOnExit.empty()) {
       const std::string error = writeWindowPng(fbWidth, fbHeight, state.options.screenshotOnExit);
       if (!error.empty()) {
@@ -309,11 +314,22 @@ bool prepareState(const ExplorerOptions& options, ExplorerState& state, std::vec
   state.assetsDir = options.assetsDir.empty() ? defaultAssetsDir() : options.assetsDir;
   try {
     state.sceneIds = builtinSceneIds(state.assetsDir);
-    state.scene = std::make_unique<Scene>(loadScene(options.scene, state.assetsDir));
-    state.sceneLabel = options.scene;
+    try {
+      state.scene = std::make_unique<Scene>(loadScene(options.scene, state.assetsDir));
+      state.sceneLabel = options.scene;
+    } catch (const std::exception& e) {
+      if (!options.fromSettings) throw;
+      // A saved scene that moved or broke must not keep the explorer from starting.
+      state.settingsMessage = std::string("saved scene not loaded (") + e.what() + "); showing basic";
+      std::cerr << "shadowlab: " << state.settingsMessage << "\n";
+      state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+      state.sceneLabel = "basic";
+    }
     techniques.push_back(makeTechnique(options.technique, options.overrides));
     for (size_t i = 0; i < options.compareTechniques.size() && techniques.size() < size_t(kMaxViewports); ++i)
-      techniques.push_back(makeTechnique(options.compareTechniques[i]));
+      techniques.push_back(makeTechnique(options.compareTechniques[i], i < options.compareOverrides.size()
+                                                                           ? options.compareOverrides[i]
+                                                                           : std::vector<std::string>{}));
   } catch (const std::exception& e) {
     std::cerr << "shadowlab: " << e.what() << "\n";
     return false;
@@ -343,7 +359,15 @@ int runExplorer(const ExplorerOptions& options) {
   }
   ExplorerState state;
   std::vector<Technique> techniques;  // one per viewport shown at start
-  if (!prepareState(options, state, techniques)) return 1;
+  ExplorerOptions start = options;
+  SettingsLoad saved = loadSettings(options.settingsPath);
+  std::string problems = saved.problem;
+  startLayout(start, saved.settings ? &*saved.settings : nullptr, problems);
+  if (!problems.empty()) std::cerr << "shadowlab: " << problems << "\n";
+  if (!prepareState(start, state, techniques)) return 1;
+  state.settingsPath = options.settingsPath;
+  if (!problems.empty()) state.settingsMessage = problems;
+  if (saved.settings) applyStateSettings(state, *saved.settings);
 
   glfwSetErrorCallback(rememberGlfwError);
   if (!glfwInit()) {
@@ -360,7 +384,7 @@ int runExplorer(const ExplorerOptions& options) {
   glfwSetWindowTitle(window, ("shadowlab explorer - " + state.sceneLabel).c_str());
   enableGlDebugOutput(false);
   keepGlDriverLoaded();
-  setUpImGui(window);
+  setUpImGui(window, state.uiScale);
 
   int exitCode = 0;
   try {

@@ -8,7 +8,8 @@
 
 namespace sl {
 
-constexpr float kSidePanelWidth = 420.0f;
+constexpr float kSidePanelWidth = 420.0f;  // at UI scale 1
+inline float sidePanelWidth(float uiScale) { return kSidePanelWidth * uiScale; }
 
 void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary& shaders);
 
