@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 
@@ -16,7 +17,7 @@ const char* kUsage =
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
-    "            [--enlarge VIEW]... [--settings FILE | --no-settings]\n"
+    "            [--enlarge VIEW]... [--ui-scale S] [--show-help] [--settings FILE | --no-settings]\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
@@ -32,8 +33,8 @@ const char* kUsage =
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge"},
-                {"--magnifier", "--visibility-plot", "--no-settings"});
+                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge", "--ui-scale"},
+                {"--magnifier", "--visibility-plot", "--no-settings", "--show-help"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -47,6 +48,14 @@ int runExplorerCommand(int argc, char** argv) {
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
+  o.showHelp = args.has("--show-help");
+  if (args.has("--ui-scale")) {
+    char* end = nullptr;
+    const std::string v = args.get("--ui-scale");
+    o.uiScale = std::strtof(v.c_str(), &end);
+    if (v.empty() || *end || !(o.uiScale >= 0.75f && o.uiScale <= 2.5f))
+      throw sl::ArgError("--ui-scale: expected a number in [0.75, 2.5], got '" + v + "'");
+  }
   o.enlargedViews = args.all("--enlarge");  // one per viewport, in order ("colour" = none)
   for (std::string& v : o.enlargedViews)
     if (v == "colour" || v == "color") v.clear();

@@ -41,7 +41,8 @@ void drawColourKey(ImDrawList* draw, const ColourKey& key, ImVec2 imageMin, ImVe
   float labelsWidth = 0.0f;
   for (const ColourStop& s : key.stops) labelsWidth += ImGui::CalcTextSize(s.label.c_str()).x + pad * 2.0f;
   width = std::max(width, labelsWidth);
-  for (const SpecialColour& s : key.specials) width = std::max(width, line * 1.4f + ImGui::CalcTextSize(s.meaning.c_str()).x);
+  for (const SpecialColour& s : key.specials)
+    width = std::max(width, line * 1.4f + ImGui::CalcTextSize(s.meaning.c_str()).x);
   if (!key.note.empty()) width = std::max(width, ImGui::CalcTextSize(key.note.c_str()).x);
   width = std::min(width, imageMax.x - imageMin.x - 4.0f * pad);
   const float barHeight = line * 0.8f;

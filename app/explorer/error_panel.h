@@ -72,12 +72,16 @@ struct ChartPoint {
   double wrongPct = 0;
   int viewport = -1;  // viewport it was last measured in (0-based), for its colour
   double imageWrongPct = 0;
-  std::vector<double> msReadings;  // the ms of every measurement of this config, oldest first
+  std::vector<double> msReadings;                         // the ms of every measurement of this config, oldest first
+  std::vector<double> wrongReadings, imageWrongReadings;  // the last kChartErrorReadings errors
 };
 constexpr size_t kChartReadingsKept = 64;
-// Adds a point, or a reading to the point with the same config string: error, image error and
-// viewport from the latest measurement (an accumulating technique converges), ms the median of
-// its readings (the last kChartReadingsKept), so a point does not wander with each reading's noise.
+// Errors: a short window, so an accumulating technique's point follows its convergence within a
+// few measurements while one flickering frame (or one view) does not move it.
+constexpr size_t kChartErrorReadings = 5;
+// Adds a point, or a reading to the point with the same config string: viewport from the latest
+// measurement, error and image error the median of the last kChartErrorReadings, ms the median
+// of the last kChartReadingsKept readings, so a point does not wander with each reading's noise.
 void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading);
 // Indices of the points no other point beats in both time and error, by increasing ms.
 // (A point is dominated when another is at most as slow and as wrong, and better in one.)

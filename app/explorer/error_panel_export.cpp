@@ -21,11 +21,16 @@ std::string number(double v, const char* format = "%.4g") {
 std::string xmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -79,8 +84,8 @@ std::string chartPointsSvg(const std::vector<ChartPoint>& points) {
       << "\" fill=\"none\" stroke=\"#666\"/>\n";
   svg << "<text x=\"" << (left + right) / 2 << "\" y=\"" << bottom + 34 << "\" text-anchor=\"middle\">ms per frame"
       << (x.log ? " (log)" : "") << ", median</text>\n";
-  svg << "<text transform=\"translate(16," << (top + bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">wrong pixels %"
-      << (y.log ? " (log)" : "") << "</text>\n";
+  svg << "<text transform=\"translate(16," << (top + bottom) / 2
+      << ") rotate(-90)\" text-anchor=\"middle\">wrong pixels %" << (y.log ? " (log)" : "") << "</text>\n";
   const std::vector<size_t> front = paretoFront(points);
   if (!front.empty()) {
     svg << "<polyline fill=\"none\" stroke=\"#333\" stroke-dasharray=\"5,4\" points=\"";
@@ -108,7 +113,8 @@ std::string ErrorPanel::accuracyCsv(const ExplorerState& state) const {
   for (int i = 0; i < state.viewportCount && i < 4; ++i) {
     const ViewportAccuracy& va = viewports_[i];
     if (state.slots.size() <= size_t(i) || !state.slots[size_t(i)].viewport) continue;
-    out += std::to_string(i + 1) + "," + csvField(va.haveMetrics ? va.config : configString(state.slots[size_t(i)].viewport->technique));
+    out += std::to_string(i + 1) + "," +
+           csvField(va.haveMetrics ? va.config : configString(state.slots[size_t(i)].viewport->technique));
     if (va.haveMetrics) {
       const ErrorMetrics& m = va.metrics;
       out += "," + number(m.wrongPixelPct) + "," + number(va.image.imageWrongPct) + "," + number(m.falseShadowPct) +

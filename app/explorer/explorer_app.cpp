@@ -251,7 +251,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     applySelectedViews(state);
 
     const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = std::min(sidePanelWidth(state.uiScale), io.DisplaySize.x - 1.0f);
+    const float panelWidth = std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
     const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
     const MainAreaLayout layout =
         layoutMainArea(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y),
@@ -368,6 +368,8 @@ int runExplorer(const ExplorerOptions& options) {
   state.settingsPath = options.settingsPath;
   if (!problems.empty()) state.settingsMessage = problems;
   if (saved.settings) applyStateSettings(state, *saved.settings);
+  if (options.uiScale > 0.0f) state.uiScale = options.uiScale;
+  state.showHelp = options.showHelp;
 
   glfwSetErrorCallback(rememberGlfwError);
   if (!glfwInit()) {

@@ -55,21 +55,21 @@ struct ExplorerState {
   std::set<std::string> selectedViews;  // debug views drawn as thumbnails under each viewport
 
   // Tools and status.
-  bool magnifierPinned = false;  // checkbox; holding M shows it too
-  bool plotPinned = false;       // checkbox; holding V shows the visibility plot too
-  bool screenshotRequested = false;        // the whole window, UI included
-  bool viewportShotsRequested = false;     // each viewport's image alone, no UI
-  std::string screenshotDir;               // where screenshots and exports go (see exportDir)
-  std::string statusLine;   // last screenshot written, etc.
-  double statusLineTime = -1e9;  // glfwGetTime() when statusLine was set: shown on screen for a while
+  bool magnifierPinned = false;         // checkbox; holding M shows it too
+  bool plotPinned = false;              // checkbox; holding V shows the visibility plot too
+  bool screenshotRequested = false;     // the whole window, UI included
+  bool viewportShotsRequested = false;  // each viewport's image alone, no UI
+  std::string screenshotDir;            // where screenshots and exports go (see exportDir)
+  std::string statusLine;               // last screenshot written, etc.
+  double statusLineTime = -1e9;         // glfwGetTime() when statusLine was set: shown on screen for a while
   // Lecture settings: UI size (fonts rebuilt at 16 px x uiScale), help window, linked parameters.
   float uiScale = 1.0f;
   bool showHelp = false;
-  bool linkAllParams = false;           // every parameter edit goes to every viewport declaring it
-  std::set<std::string> linkedParams;   // keys linked one by one (the chain button beside a widget)
-  std::string settingsPath;             // "" = settings are neither read nor written (scripted runs)
-  std::string settingsMessage;          // a settings problem (corrupt file set aside), shown in the panel
-  std::string renderError;  // exception from the last frame, shown until a frame works again
+  bool linkAllParams = false;          // every parameter edit goes to every viewport declaring it
+  std::set<std::string> linkedParams;  // keys linked one by one (the chain button beside a widget)
+  std::string settingsPath;            // "" = settings are neither read nor written (scripted runs)
+  std::string settingsMessage;         // a settings problem (corrupt file set aside), shown in the panel
+  std::string renderError;             // exception from the last frame, shown until a frame works again
   float smoothedFrameMs = 0.0f;
   int hoveredViewport = -1;  // viewport image under the mouse in the previous frame
   // Accuracy panel and `error` view (owned by the frame loop; null outside it).

@@ -39,8 +39,7 @@ glm::vec3 FlyCamera::forward() const {
 }
 
 bool FlyCamera::update(const FlyInput& input, float dtSeconds) {
-  if (input.scrollSteps != 0.0f)
-    setSpeedFactor(speedFactor_ * std::pow(kSpeedStepFactor, input.scrollSteps));
+  if (input.scrollSteps != 0.0f) setSpeedFactor(speedFactor_ * std::pow(kSpeedStepFactor, input.scrollSteps));
 
   bool changed = false;
   if (input.lookPixels != glm::vec2(0.0f)) {

@@ -27,7 +27,7 @@ class FlyCamera {
   // Applies one frame of input; returns true when position or orientation changed.
   bool update(const FlyInput& input, float dtSeconds);
 
-  Camera camera() const;  // fov/near/far/name of the scene camera it started from
+  Camera camera() const;                                      // fov/near/far/name of the scene camera it started from
   float speed() const { return speedFactor_ * sceneScale_; }  // world units per second
   // Scene diagonals per second (the wheel multiplies it by 1.25 per notch).
   float speedFactor() const { return speedFactor_; }
@@ -39,8 +39,8 @@ class FlyCamera {
  private:
   Camera base_;
   glm::vec3 position_{0.0f};
-  float yaw_ = 0.0f;    // radians, 0 = looking down +X
-  float pitch_ = 0.0f;  // radians, clamped short of straight up/down so "up" stays defined
+  float yaw_ = 0.0f;          // radians, 0 = looking down +X
+  float pitch_ = 0.0f;        // radians, clamped short of straight up/down so "up" stays defined
   float sceneScale_ = 10.0f;  // the scene's diagonal (world units)
   float speedFactor_ = kDefaultSpeedFactor;
 };

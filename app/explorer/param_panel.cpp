@@ -86,8 +86,8 @@ void linkToggle(const std::string& key, ParamLinks& links) {
   ImGui::PopStyleColor(2);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(links.all ? "linked: 'Link all viewports' is on"
-                                : on ? "linked: a change here sets %s in every viewport that has it (click to unlink)"
-                                     : "not linked: click so that a change here sets %s in every viewport that has it",
+                      : on      ? "linked: a change here sets %s in every viewport that has it (click to unlink)"
+                                : "not linked: click so that a change here sets %s in every viewport that has it",
                       key.c_str());
   ImGui::SameLine();
 }

@@ -96,7 +96,8 @@ std::string writeTextFile(const std::string& dir, const std::string& name, const
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
-  if (ec) throw std::runtime_error("could not rename " + temporary.string() + " to " + path.string() + ": " + ec.message());
+  if (ec)
+    throw std::runtime_error("could not rename " + temporary.string() + " to " + path.string() + ": " + ec.message());
   return path.string();
 }
 

@@ -81,7 +81,8 @@ void saveRequestedScreenshots(ExplorerState& state, int framebufferWidth, int fr
         suffix += "-" + slot.enlargedView;
       }
       const std::string path = (folder / timestampedName(suffix + ".png")).string();
-      const std::string error = image ? writeTexturePng(*image, path) : "viewport " + std::to_string(i + 1) + " has no image";
+      const std::string error =
+          image ? writeTexturePng(*image, path) : "viewport " + std::to_string(i + 1) + " has no image";
       if (error.empty())
         written += (written.empty() ? "" : ", ") + std::filesystem::path(path).filename().string();
       else

@@ -20,8 +20,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string defaultSettingsPath() {
-  if (const char* explicitPath = std::getenv("SHADOWLAB_SETTINGS"); explicitPath && *explicitPath)
-    return explicitPath;
+  if (const char* explicitPath = std::getenv("SHADOWLAB_SETTINGS"); explicitPath && *explicitPath) return explicitPath;
   if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
     return (fs::path(config) / "shadowlab" / "settings.json").string();
   if (const char* home = std::getenv("HOME"); home && *home)

@@ -297,7 +297,7 @@ void drawToolsPanel(ExplorerState& state) {
 void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary& shaders) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::min(sidePanelWidth(state.uiScale), display.x), display.y));
+  ImGui::SetNextWindowSize(ImVec2(std::min(sidePanelWidth(state.uiScale, display.x), display.x), display.y));
   // No background: the window is cleared to the same colour, and a blended full-height
   // rectangle is a measurable cost on a software rasterizer.
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

@@ -14,16 +14,15 @@ const SpecialColour kBlackSky{{0.0f, 0.0f, 0.0f}, "black: no geometry (sky)"};
 std::map<std::string, ColourKey> makeKeys() {
   std::map<std::string, ColourKey> keys;
   // shaders/views/aliasing.frag: aliasingHeat().
-  keys["aliasing"] = {
-      "screen pixels per shadow-map texel",
-      "px/texel",
-      {{0.0f, {0.10f, 0.30f, 1.00f}, "1/4096"},
-       {0.25f, {0.10f, 0.75f, 0.90f}, "1/64"},
-       {0.5f, {0.10f, 0.80f, 0.20f}, "1"},
-       {0.75f, {0.95f, 0.85f, 0.10f}, "64"},
-       {1.0f, {1.00f, 0.10f, 0.05f}, "4096"}},
-      {kSky},
-      "log scale; red = undersampled (blocky), blue = texels wasted"};
+  keys["aliasing"] = {"screen pixels per shadow-map texel",
+                      "px/texel",
+                      {{0.0f, {0.10f, 0.30f, 1.00f}, "1/4096"},
+                       {0.25f, {0.10f, 0.75f, 0.90f}, "1/64"},
+                       {0.5f, {0.10f, 0.80f, 0.20f}, "1"},
+                       {0.75f, {0.95f, 0.85f, 0.10f}, "64"},
+                       {1.0f, {1.00f, 0.10f, 0.05f}, "4096"}},
+                      {kSky},
+                      "log scale; red = undersampled (blocky), blue = texels wasted"};
   // shaders/views/shadowmap.frag: normalised to the depths present in each layer.
   keys["shadowmap"] = {"light-space depth (per layer, stretched to its min..max)",
                        "",

@@ -24,9 +24,9 @@ struct SpecialColour {
 };
 
 struct ColourKey {
-  std::string title;               // what the gradient measures
-  std::string unit;                // of the gradient's labels ("" = none)
-  std::vector<ColourStop> stops;   // empty: the view is categorical (specials only)
+  std::string title;              // what the gradient measures
+  std::string unit;               // of the gradient's labels ("" = none)
+  std::vector<ColourStop> stops;  // empty: the view is categorical (specials only)
   std::vector<SpecialColour> specials;
   std::string note;  // one line on how to read it ("" = none)
 };
