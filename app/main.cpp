@@ -18,6 +18,7 @@ const char* kUsage =
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
     "            [--enlarge VIEW]... [--ui-scale S] [--show-help] [--settings FILE | --no-settings]\n"
+    "            [--soak SECONDS]                               (unattended reliability run: scripts/soak.sh)\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
@@ -33,7 +34,7 @@ const char* kUsage =
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge", "--ui-scale"},
+                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge", "--ui-scale", "--soak"},
                 {"--magnifier", "--visibility-plot", "--no-settings", "--show-help"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
@@ -49,6 +50,10 @@ int runExplorerCommand(int argc, char** argv) {
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
   o.showHelp = args.has("--show-help");
+  if (args.has("--soak")) {
+    o.soakSeconds = args.getInt("--soak", 0);
+    if (o.soakSeconds <= 0) throw sl::ArgError("--soak: expected a number of seconds > 0");
+  }
   if (args.has("--ui-scale")) {
     char* end = nullptr;
     const std::string v = args.get("--ui-scale");
@@ -66,7 +71,7 @@ int runExplorerCommand(int argc, char** argv) {
                   args.has("--enlarge");
   if (args.has("--settings"))
     o.settingsPath = args.get("--settings");
-  else if (!args.has("--no-settings") && o.maxFrames == 0)
+  else if (!args.has("--no-settings") && o.maxFrames == 0 && o.soakSeconds == 0)
     o.settingsPath = sl::defaultSettingsPath();
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.

@@ -37,7 +37,8 @@ struct ExplorerOptions {
   bool firstStartDefaults = false;
   bool fromSettings = false;
   float uiScale = 0.0f;   // UI size (1 = 16 px font); 0 = from the settings file, else 1
-  bool showHelp = false;  // open the keys window at start (scripted screenshots of it)  // scene/viewports came from
+  bool showHelp = false;  // open the keys window at start (scripted screenshots of it)
+  double soakSeconds = 0;  // > 0: unattended reliability run (app/explorer/soak.h), then exit  // scene/viewports came from
                           // the settings file: be lenient with them
 };
 

@@ -10,6 +10,7 @@
 #include "explorer/session_files.h"
 #include "explorer/settings.h"
 #include "explorer/shortcuts.h"
+#include "explorer/soak.h"
 #include "explorer/side_panel.h"
 #include "explorer/ui_scale.h"
 #include "explorer/viewport_area.h"
@@ -205,7 +206,9 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   state.cutPending = true;
 
   const int maxFrames = state.options.maxFrames;
-  glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
+  std::unique_ptr<SoakDriver> soak;
+  if (state.options.soakSeconds > 0) soak = std::make_unique<SoakDriver>(state.options.soakSeconds, state.shaderDir);
+  glfwSwapInterval(maxFrames > 0 || soak ? 0 : 1);  // smoke runs should not wait for vsync
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   std::vector<std::string> printedShaderErrors;
@@ -213,7 +216,8 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   for (int frame = 0;; ++frame) {
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
-    const bool lastFrame = glfwWindowShouldClose(window) || (maxFrames > 0 && frame + 1 >= maxFrames);
+    const bool lastFrame =
+        glfwWindowShouldClose(window) || (maxFrames > 0 && frame + 1 >= maxFrames) || (soak && soak->done());
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
     if ((fbWidth == 0 || fbHeight == 0) && !lastFrame) {  // minimized
@@ -246,6 +250,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleShortcuts(state);
+    if (soak) soak->beforeFrame(state, renderer, shaders, now);
     drawSidePanel(state, renderer, shaders);
     ensureViewportSlots(state);
     applySelectedViews(state);
@@ -292,6 +297,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       }
     }
     glfwSwapBuffers(window);
+    if (soak) soak->afterFrame(state);
     if (lastFrame) break;
   }
   if (maxFrames > 0 && !frameSeconds.empty()) {
@@ -302,6 +308,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
                 frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
                 glRendererName().c_str());
   }
+  if (soak) return soak->finish();
   // In --frames mode a failing renderer must not look like success to scripts and tests.
   if (maxFrames > 0 && !state.renderError.empty()) return 1;
   return 0;
