@@ -18,6 +18,7 @@ const char* kUsage =
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
     "            [--enlarge VIEW]... [--ui-scale S] [--show-help] [--settings FILE | --no-settings]\n"
+    "            [--save-to DIR] [--save-on-exit]               (captures: window, each viewport, CSV, SVG)\n"
     "            [--soak SECONDS]                               (unattended reliability run: scripts/soak.sh)\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
@@ -32,10 +33,11 @@ const char* kUsage =
     "(not with --frames unless --settings is given). F1 in the window lists every key.\n";
 
 int runExplorerCommand(int argc, char** argv) {
-  sl::Args args(argc, argv, 1,
-                {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light", "--settings", "--enlarge", "--ui-scale", "--soak"},
-                {"--magnifier", "--visibility-plot", "--no-settings", "--show-help"});
+  sl::Args args(
+      argc, argv, 1,
+      {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit", "--shaders",
+       "--compare", "--view", "--light", "--settings", "--enlarge", "--ui-scale", "--soak", "--save-to"},
+      {"--magnifier", "--visibility-plot", "--no-settings", "--show-help", "--save-on-exit"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -50,6 +52,8 @@ int runExplorerCommand(int argc, char** argv) {
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
   o.showHelp = args.has("--show-help");
+  o.saveOnExit = args.has("--save-on-exit");
+  o.screenshotDir = args.get("--save-to");
   if (args.has("--soak")) {
     o.soakSeconds = args.getInt("--soak", 0);
     if (o.soakSeconds <= 0) throw sl::ArgError("--soak: expected a number of seconds > 0");

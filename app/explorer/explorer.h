@@ -36,10 +36,12 @@ struct ExplorerOptions {
   // techniques side by side with debug views (a lecture's first slide, not one bare image).
   bool firstStartDefaults = false;
   bool fromSettings = false;
-  float uiScale = 0.0f;   // UI size (1 = 16 px font); 0 = from the settings file, else 1
-  bool showHelp = false;  // open the keys window at start (scripted screenshots of it)
-  double soakSeconds = 0;  // > 0: unattended reliability run (app/explorer/soak.h), then exit  // scene/viewports came from
-                          // the settings file: be lenient with them
+  float uiScale = 0.0f;       // UI size (1 = 16 px font); 0 = from the settings file, else 1
+  bool showHelp = false;      // open the keys window at start (scripted screenshots of it)
+  bool saveOnExit = false;    // last frame: window + viewport images + table/chart into the screenshot folder
+  std::string screenshotDir;  // "" = from the settings file, else defaultScreenshotDir()
+  double soakSeconds = 0;  // > 0: unattended reliability run (app/explorer/soak.h), then exit  // scene/viewports came
+                           // from the settings file: be lenient with them
 };
 
 // Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the

@@ -287,6 +287,10 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+    if (lastFrame && state.options.saveOnExit) {
+      state.screenshotRequested = state.viewportShotsRequested = true;
+      exportAccuracy(state);
+    }
     saveRequestedScreenshots(state, fbWidth, fbHeight);
     saveSettingsIfChanged(state, now, lastFrame);
     if (lastFrame && !state.options.screenshotOnExit.empty()) {
@@ -377,6 +381,7 @@ int runExplorer(const ExplorerOptions& options) {
   if (saved.settings) applyStateSettings(state, *saved.settings);
   if (options.uiScale > 0.0f) state.uiScale = options.uiScale;
   state.showHelp = options.showHelp;
+  if (!options.screenshotDir.empty()) state.screenshotDir = options.screenshotDir;
 
   glfwSetErrorCallback(rememberGlfwError);
   if (!glfwInit()) {

@@ -66,7 +66,7 @@ void saveRequestedScreenshots(ExplorerState& state, int framebufferWidth, int fr
   if (state.screenshotRequested) {
     const std::string path = (folder / timestampedScreenshotName()).string();
     const std::string error = writeWindowPng(framebufferWidth, framebufferHeight, path);
-    (error.empty() ? written : failed) += error.empty() ? path : error;
+    (error.empty() ? written : failed) += error.empty() ? std::filesystem::path(path).filename().string() : error;
   }
   if (state.viewportShotsRequested) {
     for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
@@ -93,7 +93,7 @@ void saveRequestedScreenshots(ExplorerState& state, int framebufferWidth, int fr
   if (!failed.empty())
     reportStatus(state, "screenshot failed: " + failed, true);
   else
-    reportStatus(state, "saved " + written + (written.find('/') == 0 ? "" : " in " + dir));
+    reportStatus(state, "saved " + written + " in " + dir);
 }
 
 void exportAccuracy(ExplorerState& state) {

@@ -201,7 +201,11 @@ void drawViewportPanels(ExplorerState& state) {
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the preset's values");
       if (slot.viewport->accumulation) {
         const std::string status = slot.viewport->accumulation->status();
-        if (!status.empty()) ImGui::TextDisabled("%s", status.c_str());
+        if (!status.empty()) {  // wrapped: the tile header has room only for its start
+          ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+          ImGui::TextWrapped("%s", status.c_str());
+          ImGui::PopStyleColor();
+        }
       }
       // setViewportPreset may have replaced the technique: read it again.
       ParamLinks links{state.viewportCount > 1 ? &state.linkedParams : nullptr, state.linkAllParams, {}};

@@ -22,7 +22,7 @@ std::map<std::string, ColourKey> makeKeys() {
                        {0.75f, {0.95f, 0.85f, 0.10f}, "64"},
                        {1.0f, {1.00f, 0.10f, 0.05f}, "4096"}},
                       {kSky},
-                      "log scale; red = undersampled (blocky), blue = texels wasted"};
+                      "log scale: red = blocky (undersampled), blue = texels wasted"};
   // shaders/views/shadowmap.frag: normalised to the depths present in each layer.
   keys["shadowmap"] = {"light-space depth (per layer, stretched to its min..max)",
                        "",
