@@ -108,6 +108,7 @@ ExplorerSettings sampleSettings() {
   s.cameraSpeed = 0.02f;
   s.screenshotDir = "/tmp/somewhere";
   s.linkAll = true;
+  s.colourKeys = false;
   s.linked = {"shadowmap.size"};
   return s;
 }
@@ -320,7 +321,7 @@ TEST(ExplorerExports, ChartCsvAndSvgHoldEveryPoint) {
 TEST(ExplorerShortcuts, HelpListsTheKeysAndUiScaleIsClamped) {
   std::string keys;
   for (const Shortcut& s : explorerShortcuts()) keys += s.keys + "|";
-  for (const char* k : {"F1", "Ctrl + =", "Tab", "F12", "P", "N", "hold M", "mouse wheel"})
+  for (const char* k : {"F1", "Ctrl + =", "Tab", "F12", "P", "N", "K", "hold M", "mouse wheel"})
     EXPECT_NE(keys.find(k), std::string::npos) << k;
   EXPECT_FLOAT_EQ(steppedUiScale(1.0f, 1), 1.125f);
   EXPECT_FLOAT_EQ(steppedUiScale(1.0f, -1), 0.875f);

@@ -82,8 +82,27 @@ void drawColourKey(ImDrawList* draw, const ColourKey& key, ImVec2 imageMin, ImVe
   draw->PopClipRect();
 }
 
+// A categorical key in a thumbnail: its colours as a row of swatches (hover for their meaning).
+void drawSwatchRow(ImDrawList* draw, const ColourKey& key, ImVec2 imageMin, ImVec2 imageMax) {
+  const float side = std::max(6.0f, ImGui::GetTextLineHeight() * 0.55f);
+  const ImVec2 rowMin(imageMin.x, imageMax.y - side - 4.0f);
+  draw->PushClipRect(imageMin, imageMax, true);
+  draw->AddRectFilled(rowMin, imageMax, kKeyBackground);
+  float x = imageMin.x + 2.0f;
+  for (const SpecialColour& s : key.specials) {
+    if (x + side > imageMax.x) break;
+    draw->AddRectFilled(ImVec2(x, rowMin.y + 2.0f), ImVec2(x + side, rowMin.y + 2.0f + side), toU32(s.colour));
+    draw->AddRect(ImVec2(x, rowMin.y + 2.0f), ImVec2(x + side, rowMin.y + 2.0f + side), kSwatchBorder);
+    x += side + 3.0f;
+  }
+  draw->PopClipRect();
+}
+
 void drawCompactColourKey(ImDrawList* draw, const ColourKey& key, ImVec2 imageMin, ImVec2 imageMax) {
-  if (key.stops.size() < 2) return;
+  if (key.stops.size() < 2) {
+    if (!key.specials.empty()) drawSwatchRow(draw, key, imageMin, imageMax);
+    return;
+  }
   const float line = ImGui::GetTextLineHeight();
   const float barHeight = std::max(4.0f, line * 0.35f);
   const ImVec2 barMin(imageMin.x + 2.0f, imageMax.y - barHeight - line - 2.0f);

@@ -65,6 +65,7 @@ struct ExplorerState {
   // Lecture settings: UI size (fonts rebuilt at 16 px x uiScale), help window, linked parameters.
   float uiScale = 1.0f;
   bool showHelp = false;
+  bool showColourKeys = true;          // each heat-map view's key over its image (K toggles)
   bool linkAllParams = false;          // every parameter edit goes to every viewport declaring it
   std::set<std::string> linkedParams;  // keys linked one by one (the chain button beside a widget)
   std::string settingsPath;            // "" = settings are neither read nor written (scripted runs)

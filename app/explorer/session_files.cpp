@@ -155,6 +155,7 @@ void applyStateSettings(ExplorerState& state, const ExplorerSettings& settings) 
   if (settings.cameraSpeed > 0.0f) state.camera.setSpeedFactor(settings.cameraSpeed);
   state.screenshotDir = settings.screenshotDir;
   state.linkAllParams = settings.linkAll;
+  state.showColourKeys = settings.colourKeys;
   state.linkedParams.insert(settings.linked.begin(), settings.linked.end());
 }
 

@@ -40,6 +40,7 @@ std::string settingsToJson(const ExplorerSettings& s) {
   j["camera_speed"] = s.cameraSpeed;
   j["screenshot_dir"] = s.screenshotDir;
   j["link_all"] = s.linkAll;
+  j["colour_keys"] = s.colourKeys;
   j["linked"] = s.linked;
   return j.dump(2) + "\n";
 }
@@ -100,6 +101,7 @@ ExplorerSettings settingsFromJson(const std::string& text) {
   readField(j, "camera_speed", s.cameraSpeed);
   readField(j, "screenshot_dir", s.screenshotDir);
   readField(j, "link_all", s.linkAll);
+  readField(j, "colour_keys", s.colourKeys);
   readField(j, "linked", s.linked);
   if (!std::isfinite(s.uiScale) || !std::isfinite(s.cameraSpeed))
     throw std::runtime_error("ui_scale or camera_speed is not a finite number");
@@ -166,6 +168,7 @@ ExplorerSettings captureSettings(const ExplorerState& state) {
   s.cameraSpeed = state.camera.speedFactor();
   s.screenshotDir = state.screenshotDir;
   s.linkAll = state.linkAllParams;
+  s.colourKeys = state.showColourKeys;
   s.linked.assign(state.linkedParams.begin(), state.linkedParams.end());
   return s;
 }

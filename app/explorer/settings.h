@@ -27,6 +27,7 @@ struct ExplorerSettings {
   float cameraSpeed = 0.0f;  // scene diagonals per second; 0 = the default
   std::string screenshotDir;
   bool linkAll = false;
+  bool colourKeys = true;
   std::vector<std::string> linked;
 };
 

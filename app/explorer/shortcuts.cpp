@@ -16,6 +16,7 @@ const std::vector<Shortcut>& explorerShortcuts() {
       {"Ctrl + 0", "UI back to 100 %", "Window"},
       {"1  2  4", "one, two or four viewports", "Window"},
       {"Tab  /  Shift + Tab", "cycle the big images: colour, then each debug view", "Window"},
+      {"K", "show / hide the colour keys over the debug views", "Window"},
       {"F12  or  Ctrl + S", "screenshot of the whole window", "Window"},
       {"Shift + F12", "clean images of each viewport (no UI)", "Window"},
       {"P", "pause / resume scene time (animation)", "Time"},
@@ -67,6 +68,7 @@ void handleShortcuts(ExplorerState& state) {
   if (pressed(GLFW_KEY_4)) state.viewportCount = 4;
   if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, shift ? -1 : 1);
   if (pressed(GLFW_KEY_P)) state.paused = !state.paused;
+  if (pressed(GLFW_KEY_K)) state.showColourKeys = !state.showColourKeys;
   if (pressed(GLFW_KEY_F)) state.frozen = !state.frozen;
   if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) {
     state.frozen = true;

@@ -222,6 +222,8 @@ void drawDebugViewPanel(ExplorerState& state) {
   if (!ImGui::CollapsingHeader("Debug views")) return;
   const std::vector<std::string> names = availableViewNames(state);
   if (names.empty()) ImGui::TextDisabled("(none offered by these techniques)");
+  ImGui::Checkbox("Colour keys (K)", &state.showColourKeys);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("what each heat-map view's colours mean, drawn over its image");
   // Two columns of checkboxes keep the list short enough to stay on screen.
   ImGui::Columns(2, "views", false);
   for (const std::string& name : names) {

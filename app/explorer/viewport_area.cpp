@@ -105,7 +105,7 @@ void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& sl
     draw->AddText(ImVec2(min.x, max.y + 1), enlarged ? kHighlight : IM_COL32(200, 200, 200, 255), name.c_str());
     draw->PopClipRect();
     const ColourKey* key = viewColourKey(name);
-    if (key) drawCompactColourKey(draw, *key, min, max);
+    if (key && state.showColourKeys) drawCompactColourKey(draw, *key, min, max);
     if (hovered) {
       ImGui::BeginTooltip();
       ImGui::Text("%s: click to %s", name.c_str(), enlarged ? "show the colour image again" : "enlarge");
@@ -192,7 +192,7 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
       draw->AddText(ImVec2(tile.imageMin.x + 10, tile.imageMin.y + 10), IM_COL32(255, 120, 120, 255),
                     "not rendered (see the error in the side panel)");
     }
-    if (const ColourKey* key = viewColourKey(slot.enlargedView); key && !slot.enlargedView.empty())
+    if (const ColourKey* key = viewColourKey(slot.enlargedView); key && state.showColourKeys)
       drawColourKey(draw, *key, tile.imageMin, imageMax);
     if (i == state.hoveredViewport || hovered)
       draw->AddRect(ImVec2(tile.imageMin.x - 1, tile.imageMin.y - 1), ImVec2(imageMax.x + 1, imageMax.y + 1),
