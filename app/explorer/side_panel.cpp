@@ -169,7 +169,11 @@ void drawViewportPanels(ExplorerState& state) {
   }
   ensureViewportSlots(state);
   if (state.viewportCount > 1) {
-    ImGui::SameLine();
+    // Beside the radio buttons when it fits (a large UI scale moves it to its own row).
+    const float needed =
+        ImGui::GetFrameHeight() + ImGui::CalcTextSize("link all").x + ImGui::GetStyle().ItemSpacing.x * 2;
+    if (ImGui::GetItemRectMax().x + needed <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+      ImGui::SameLine();
     ImGui::Checkbox("link all", &state.linkAllParams);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
