@@ -2,9 +2,11 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "explorer/explorer.h"
+#include "explorer/settings.h"
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 
@@ -15,6 +17,9 @@ const char* kUsage =
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
     "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
+    "            [--enlarge VIEW]... [--ui-scale S] [--show-help] [--settings FILE | --no-settings]\n"
+    "            [--save-to DIR] [--save-on-exit]               (captures: window, each viewport, CSV, SVG)\n"
+    "            [--soak SECONDS]                               (unattended reliability run: scripts/soak.sh)\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab --tour T.json [--tour-step N] [--presenter]    play a lecture tour (arrows/PageUp/PageDown, F5)\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
@@ -25,13 +30,16 @@ const char* kUsage =
     "  shadowlab plot dpds --scene S --out F.svg ...            perspective aliasing along the view (plot --help)\n"
     "  shadowlab figure --tour T --step N --out F.png           a lecture-tour step as a figure (figure --help)\n"
     "\n"
-    "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n";
+    "Shaders are read at run time from $SHADOWLAB_SHADERS (default: the source tree's shaders/).\n"
+    "The window keeps its settings in $SHADOWLAB_SETTINGS or $XDG_CONFIG_HOME/shadowlab/settings.json\n"
+    "(not with --frames unless --settings is given). F1 in the window lists every key.\n";
 
 int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
-                 "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step"},
-                {"--magnifier", "--visibility-plot", "--presenter"});
+                 "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step", "--settings", "--enlarge",
+                 "--ui-scale", "--soak", "--save-to"},
+                {"--magnifier", "--visibility-plot", "--presenter", "--no-settings", "--show-help", "--save-on-exit"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -48,6 +56,32 @@ int runExplorerCommand(int argc, char** argv) {
   o.tour = args.get("--tour");  // its steps replace --scene, --technique and the views
   o.tourStep = args.getInt("--tour-step", 1);
   o.presenter = args.has("--presenter");
+  o.showHelp = args.has("--show-help");
+  o.saveOnExit = args.has("--save-on-exit");
+  o.screenshotDir = args.get("--save-to");
+  if (args.has("--soak")) {
+    o.soakSeconds = args.getInt("--soak", 0);
+    if (o.soakSeconds <= 0) throw sl::ArgError("--soak: expected a number of seconds > 0");
+  }
+  if (args.has("--ui-scale")) {
+    char* end = nullptr;
+    const std::string v = args.get("--ui-scale");
+    o.uiScale = std::strtof(v.c_str(), &end);
+    if (v.empty() || *end || !(o.uiScale >= 0.75f && o.uiScale <= 2.5f))
+      throw sl::ArgError("--ui-scale: expected a number in [0.75, 2.5], got '" + v + "'");
+  }
+  o.enlargedViews = args.all("--enlarge");  // one per viewport, in order ("colour" = none)
+  for (std::string& v : o.enlargedViews)
+    if (v == "colour" || v == "color") v.clear();
+  // Settings: an explicit file always; otherwise the user's file, except in scripted runs
+  // (--frames), which must not depend on (or change) what a person left there.
+  o.sceneGiven = args.has("--scene");
+  o.layoutGiven = args.has("--technique") || args.has("--compare") || args.has("--view") || args.has("--set") ||
+                  args.has("--enlarge") || args.has("--tour");
+  if (args.has("--settings"))
+    o.settingsPath = args.get("--settings");
+  else if (!args.has("--no-settings") && o.maxFrames == 0 && o.soakSeconds == 0)
+    o.settingsPath = sl::defaultSettingsPath();
   if (args.has("--light")) {
     // Degrees: azimuth about +y from +z and elevation of the direction towards the light.
     const std::string v = args.get("--light");

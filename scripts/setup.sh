@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages shadowlab needs (only the missing ones), then configures and
-# builds into build/. Used by run.sh, test.sh and CI.
+# builds into build/. Used by run.sh, test.sh and CI. (clang + libclang-rt-dev: libFuzzer, for
+# scripts/fuzz.sh.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -9,6 +10,7 @@ PACKAGES=(
   libglfw3-dev libimgui-dev libglm-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgtest-dev libembree-dev
   xvfb xauth
+  clang libclang-rt-dev
 )
 
 missing=()

@@ -2,7 +2,8 @@
 # One command: install what is missing, build, run the whole test suite (GPU tests run
 # headless on Mesa's llvmpipe through EGL; the window smoke test under Xvfb), then build the
 # same suite with AddressSanitizer + UBSan (CMakePresets.json, preset asan, into build-asan/)
-# and run it again. SHADOWLAB_SKIP_ASAN=1 skips the sanitizer run locally; CI runs both.
+# and run it again; in between, the scene loaders are fuzzed for 30 s each (scripts/fuzz.sh).
+# SHADOWLAB_SKIP_ASAN=1 / SHADOWLAB_SKIP_FUZZ=1 skip those locally; CI runs all three.
 # Arguments go to both ctest runs (e.g. -R Scene). Exits non-zero if either run fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,6 +17,16 @@ summary() { sed -n '/tests passed, /,$p' "$1"; }
 
 normal=0
 (cd build && ctest --output-on-failure -j2 "$@") 2>&1 | tee "$logs/normal.txt" || normal=$?
+
+# The scene loaders under libFuzzer, 30 s per target (scripts/fuzz.sh; builds build-fuzz/, a
+# few minutes on 2 cores the first time). SHADOWLAB_SKIP_FUZZ=1 skips it locally.
+fuzz=skipped
+if [ "${SHADOWLAB_SKIP_FUZZ:-0}" != 1 ]; then
+  echo
+  echo "== libFuzzer: scene loaders (build-fuzz/) =="
+  fuzz=0
+  scripts/fuzz.sh 30 2>&1 | tee "$logs/fuzz.txt" || fuzz=$?
+fi
 
 asan=skipped
 if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
@@ -50,4 +61,7 @@ else
   summary "$logs/asan.txt"
   grep -q 'tests passed, ' "$logs/asan.txt" || cat "$logs/asan.txt"
 fi
-if [ "$normal" != 0 ] || { [ "$asan" != 0 ] && [ "$asan" != skipped ]; }; then exit 1; fi
+echo "== libFuzzer (build-fuzz/) =="
+if [ "$fuzz" = skipped ]; then echo "skipped (SHADOWLAB_SKIP_FUZZ=1)"; else tail -n 1 "$logs/fuzz.txt"; fi
+if [ "$normal" != 0 ] || { [ "$asan" != 0 ] && [ "$asan" != skipped ]; } ||
+  { [ "$fuzz" != 0 ] && [ "$fuzz" != skipped ]; }; then exit 1; fi

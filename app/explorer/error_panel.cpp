@@ -85,7 +85,8 @@ struct ErrorPanel::Job {
         const size_t a = size_t(y0) * w, b = size_t(y1) * w;
         if (std::any_of(valid.begin() + long(a), valid.begin() + long(b), [](uint8_t v) { return v != 0; })) {
           std::copy(position.begin() + long(4 * a), position.begin() + long(4 * b), masked.begin() + long(4 * a));
-          const std::vector<float> part = tracer.visibility(GBufferView{w, h, masked.data(), normal.data(), surface.data()}, options);
+          const std::vector<float> part =
+              tracer.visibility(GBufferView{w, h, masked.data(), normal.data(), surface.data()}, options);
           std::copy(part.begin() + long(a), part.begin() + long(b), visibility.begin() + long(a));
           std::fill(masked.begin() + long(4 * a), masked.begin() + long(4 * b), 0.0f);
         }

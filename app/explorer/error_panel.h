@@ -72,12 +72,16 @@ struct ChartPoint {
   double wrongPct = 0;
   int viewport = -1;  // viewport it was last measured in (0-based), for its colour
   double imageWrongPct = 0;
-  std::vector<double> msReadings;  // the ms of every measurement of this config, oldest first
+  std::vector<double> msReadings;                         // the ms of every measurement of this config, oldest first
+  std::vector<double> wrongReadings, imageWrongReadings;  // the last kChartErrorReadings errors
 };
 constexpr size_t kChartReadingsKept = 64;
-// Adds a point, or a reading to the point with the same config string: error, image error and
-// viewport from the latest measurement (an accumulating technique converges), ms the median of
-// its readings (the last kChartReadingsKept), so a point does not wander with each reading's noise.
+// Errors: a short window, so an accumulating technique's point follows its convergence within a
+// few measurements while one flickering frame (or one view) does not move it.
+constexpr size_t kChartErrorReadings = 5;
+// Adds a point, or a reading to the point with the same config string: viewport from the latest
+// measurement, error and image error the median of the last kChartErrorReadings, ms the median
+// of the last kChartReadingsKept readings, so a point does not wander with each reading's noise.
 void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading);
 // Indices of the points no other point beats in both time and error, by increasing ms.
 // (A point is dominated when another is at most as slow and as wrong, and better in one.)
@@ -94,6 +98,12 @@ struct ChartAxis {
 // range is padded and rounded outward to tick values.
 ChartAxis chooseChartAxis(double minValue, double maxValue, double floor, double logRatio = 20.0);
 std::string formatTick(double v);
+// The chart as a standalone SVG (axes with ticks, the Pareto front dashed, one labelled point
+// per configuration) and its points as CSV rows, for slides and spreadsheets.
+std::string chartPointsSvg(const std::vector<ChartPoint>& points);
+std::string chartPointsCsv(const std::vector<ChartPoint>& points);
+// A CSV field: quoted when it holds a comma, quote or newline.
+std::string csvField(const std::string& text);
 
 // Cost of viewport v in one frame: its own passes only (names ending in "[v]"; debug views
 // "view.*" excluded: they are display, not the technique). The shared "gbuffer" pass is kept
@@ -154,6 +164,10 @@ class ErrorPanel {
   // errorViewStatus says why).
   const Texture2D* errorTexture(int slot) const;
   std::string errorViewStatus() const;
+  // Exports (error_panel_export.cpp): the accuracy table of the shown viewports, then every
+  // configuration of the chart, as CSV; the chart as SVG.
+  std::string accuracyCsv(const ExplorerState& state) const;
+  std::string chartSvg() const { return chartPointsSvg(points_); }
 
   struct Job;  // a reference being traced (defined in the .cpp)
 

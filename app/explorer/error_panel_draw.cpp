@@ -175,8 +175,9 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "One point per configuration (technique + changed parameters) measured this\n"
-        "session: its latest error, and the median ms (own passes) of all its measurements,\n"
-        "so a point holds still while timings jitter. Dashed: the Pareto front, configurations\n"
+        "session: the median error of its last 5 measurements and the median ms (own passes)\n"
+        "of its last 64, so a point holds still while readings jitter (and still follows a\n"
+        "technique that converges). Dashed: the Pareto front, configurations\n"
         "that no other is both faster and more accurate than. Numbered points are what\n"
         "the viewports show now; grey ones were tried earlier (possibly from another\n"
         "camera: compare points measured at the same view).");

@@ -62,18 +62,38 @@ bool RestDetector::update(const RestKey& key, double now) {
   return resting();
 }
 
-void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading) {
-  auto it = std::find_if(points.begin(), points.end(), [&](const ChartPoint& p) { return p.config == reading.config; });
-  std::vector<double> ms;
-  if (it != points.end()) ms = std::move(it->msReadings);
-  ms.push_back(reading.ms);
-  if (ms.size() > kChartReadingsKept) ms.erase(ms.begin());
-  ChartPoint point = reading;
-  point.msReadings = std::move(ms);
-  std::vector<double> sorted = point.msReadings;
+namespace {
+
+// Appends v, drops the oldest beyond `keep`, returns the median (mean of the middle two).
+double pushAndMedian(std::vector<double>& readings, double v, size_t keep) {
+  readings.push_back(v);
+  if (readings.size() > keep) readings.erase(readings.begin(), readings.end() - long(keep));
+  std::vector<double> sorted = readings;
   std::sort(sorted.begin(), sorted.end());
   const size_t n = sorted.size();
-  point.ms = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
+}  // namespace
+
+void recordChartPoint(std::vector<ChartPoint>& points, const ChartPoint& reading) {
+  auto it = std::find_if(points.begin(), points.end(), [&](const ChartPoint& p) { return p.config == reading.config; });
+  ChartPoint point = reading;
+  point.msReadings.clear();
+  point.wrongReadings.clear();
+  point.imageWrongReadings.clear();
+  if (it != points.end()) {
+    point.msReadings = std::move(it->msReadings);
+    point.wrongReadings = std::move(it->wrongReadings);
+    point.imageWrongReadings = std::move(it->imageWrongReadings);
+  }
+  point.ms = pushAndMedian(point.msReadings, reading.ms, kChartReadingsKept);
+  point.wrongPct = pushAndMedian(point.wrongReadings, reading.wrongPct, kChartErrorReadings);
+  // The image error is NaN when it could not be measured: such a reading does not vote.
+  if (std::isfinite(reading.imageWrongPct))
+    point.imageWrongPct = pushAndMedian(point.imageWrongReadings, reading.imageWrongPct, kChartErrorReadings);
+  else if (it != points.end())
+    point.imageWrongPct = it->imageWrongPct;
   if (it != points.end())
     *it = std::move(point);
   else

@@ -19,15 +19,31 @@ struct ExplorerOptions {
   std::string screenshotOnExit;        // PNG of the whole window written before exiting, or ""
   std::string shaderDir, assetsDir;    // "" = defaultShaderDir() / defaultAssetsDir()
   // Start-up state of the window, so a comparison can be scripted (slides, smoke tests).
-  std::vector<std::string> compareTechniques;  // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
-  std::vector<std::string> debugViews;         // debug views shown as thumbnails from the start
-  bool magnifier = false;                      // lens on without holding M
-  bool visibilityPlot = false;                 // visibility-vs-depth plot on without holding V
-  bool setLight = false;                       // replace the scene's light direction by lightAngles
-  glm::vec2 lightAngles{0.0f};                 // degrees: azimuth about +y from +z, elevation
-  std::string tour;                            // lecture tour to play (explorer/tour_player.h), or ""
-  int tourStep = 1;                            // its first step shown (1-based)
-  bool presenter = false;                      // start the tour in presenter mode
+  std::vector<std::string> compareTechniques;              // presets for viewports 2..4 (1 -> 2 viewports, 2-3 -> 4)
+  std::vector<std::string> debugViews;                     // debug views shown as thumbnails from the start
+  bool magnifier = false;                                  // lens on without holding M
+  bool visibilityPlot = false;                             // visibility-vs-depth plot on without holding V
+  std::vector<std::string> enlargedViews;                  // per viewport: debug view in the big image ("" = colour)
+  std::vector<std::vector<std::string>> compareOverrides;  // "key=value" per compared viewport
+  bool setLight = false;                                   // replace the scene's light direction by lightAngles
+  glm::vec2 lightAngles{0.0f};                             // degrees: azimuth about +y from +z, elevation
+  // Settings between runs (app/explorer/settings.h): "" = none read or written. When the command
+  // line names a scene, technique, comparison or view (`layoutGiven`), that wins over the saved
+  // scene and viewports; UI scale, camera speed and folders still come from the file.
+  std::string settingsPath;
+  bool sceneGiven = false, layoutGiven = false;
+  // Neither the command line nor settings chose the viewports: start as the README shows, two
+  // techniques side by side with debug views (a lecture's first slide, not one bare image).
+  bool firstStartDefaults = false;
+  bool fromSettings = false;  // scene/viewports came from the settings file: be lenient with them
+  float uiScale = 0.0f;       // UI size (1 = 16 px font); 0 = from the settings file, else 1
+  bool showHelp = false;      // open the keys window at start (scripted screenshots of it)
+  bool saveOnExit = false;    // last frame: window + viewport images + table/chart into the screenshot folder
+  std::string screenshotDir;  // "" = from the settings file, else defaultScreenshotDir()
+  double soakSeconds = 0;     // > 0: unattended reliability run (app/explorer/soak.h), then exit
+  std::string tour;           // lecture tour to play (explorer/tour_player.h), or ""
+  int tourStep = 1;           // its first step shown (1-based)
+  bool presenter = false;     // start the tour in presenter mode
 };
 
 // Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the

@@ -7,8 +7,13 @@
 #include "explorer/magnifier.h"
 #include "explorer/visibility_plot.h"
 #include "explorer/screenshot.h"
+#include "explorer/session_files.h"
+#include "explorer/settings.h"
+#include "explorer/shortcuts.h"
+#include "explorer/soak.h"
 #include "explorer/side_panel.h"
 #include "explorer/tour_player.h"
+#include "explorer/ui_scale.h"
 #include "explorer/viewport_area.h"
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
@@ -35,7 +40,6 @@ namespace {
 
 constexpr double kShaderPollSeconds = 0.25;  // hot reload shows an edit within half a second
 constexpr float kMaxFrameSeconds = 0.1f;     // a stall (breakpoint, resize) must not fling the camera
-constexpr float kFontPixels = 16.0f;         // readable on a projector at 1280x720
 
 const char* const kNoDisplayMessage =
     "shadowlab: no display found (DISPLAY unset or X server unreachable); run headless:\n"
@@ -63,22 +67,11 @@ GLFWwindow* createWindow(const ExplorerOptions& options) {
                           nullptr);
 }
 
-void setUpImGui(GLFWwindow* window) {
+void setUpImGui(GLFWwindow* window, float uiScale) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; do not litter the working directory
-  const char* fontCandidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                                  "/usr/share/fonts/TTF/DejaVuSans.ttf"};
-  bool fontLoaded = false;
-  for (const char* path : fontCandidates) {
-    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, kFontPixels)) {
-      fontLoaded = true;
-      break;
-    }
-  }
-  if (!fontLoaded) io.Fonts->AddFontDefault();
-
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 0.0f;
@@ -89,6 +82,7 @@ void setUpImGui(GLFWwindow* window) {
 
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
+  applyUiScale(uiScale);  // loads the font (16 px x scale)
 }
 
 void shutDownImGui() {
@@ -192,13 +186,21 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   ensureViewportSlots(state);
   const std::vector<std::string> offered = availableViewNames(state);
   for (const std::string& view : state.options.debugViews) {
-    if (std::find(offered.begin(), offered.end(), view) == offered.end()) {
+    const bool known = std::find(offered.begin(), offered.end(), view) != offered.end();
+    if (!known && (state.options.fromSettings || state.options.firstStartDefaults)) continue;  // not offered now
+    if (!known) {
       std::cerr << "shadowlab: no debug view '" << view << "'; these techniques offer:";
       for (const std::string& name : offered) std::cerr << " " << name;
       std::cerr << "\n";
       return 1;
     }
     state.selectedViews.insert(view);
+  }
+  for (size_t i = 0; i < state.options.enlargedViews.size() && i < state.slots.size(); ++i) {
+    const std::string& view = state.options.enlargedViews[i];
+    if (view.empty() || std::find(offered.begin(), offered.end(), view) == offered.end()) continue;
+    state.selectedViews.insert(view);
+    state.slots[i].enlargedView = view;
   }
   state.magnifierPinned = state.options.magnifier;
   state.plotPinned = state.options.visibilityPlot;
@@ -209,14 +211,18 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     return 1;
 
   const int maxFrames = state.options.maxFrames;
-  glfwSwapInterval(maxFrames > 0 ? 0 : 1);  // smoke runs should not wait for vsync
+  std::unique_ptr<SoakDriver> soak;
+  if (state.options.soakSeconds > 0) soak = std::make_unique<SoakDriver>(state.options.soakSeconds, state.shaderDir);
+  glfwSwapInterval(maxFrames > 0 || soak ? 0 : 1);  // smoke runs should not wait for vsync
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   std::vector<std::string> printedShaderErrors;
+  float appliedUiScale = state.uiScale;
   for (int frame = 0;; ++frame) {
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
-    const bool lastFrame = glfwWindowShouldClose(window) || (maxFrames > 0 && frame + 1 >= maxFrames);
+    const bool lastFrame =
+        glfwWindowShouldClose(window) || (maxFrames > 0 && frame + 1 >= maxFrames) || (soak && soak->done());
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
     if ((fbWidth == 0 || fbHeight == 0) && !lastFrame) {  // minimized
@@ -241,16 +247,23 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       printedShaderErrors = std::move(errors);
     }
 
+    if (state.uiScale != appliedUiScale) {  // fonts are rebuilt between frames, never inside one
+      applyUiScale(state.uiScale);
+      appliedUiScale = state.uiScale;
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    handleShortcuts(state);
     tour.handleKeys(state, renderer);
+    if (soak) soak->beforeFrame(state, renderer, shaders, now);
     if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
     ensureViewportSlots(state);
     applySelectedViews(state);
 
     const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = tour.presenter() ? 0.0f : std::min(kSidePanelWidth, io.DisplaySize.x - 1.0f);
+    const float panelWidth =
+        tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
     const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
     const MainAreaLayout layout = layoutMainArea(
         ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
@@ -275,17 +288,19 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       drawVisibilityPlot(shaders, renderer, *state.slots[static_cast<size_t>(area.hoveredViewport)].viewport,
                          area.hoveredImage, io.MousePos);
 
+    drawHelpWindow(state);
+
     ImGui::Render();
     prepareDefaultFramebuffer(fbWidth, fbHeight);
     blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-    if (state.screenshotRequested) {
-      state.screenshotRequested = false;
-      const std::string path = timestampedScreenshotName();
-      const std::string error = writeWindowPng(fbWidth, fbHeight, path);
-      state.statusLine = error.empty() ? "saved " + path : error;
+    if (lastFrame && state.options.saveOnExit) {
+      state.screenshotRequested = state.viewportShotsRequested = true;
+      exportAccuracy(state);
     }
+    saveRequestedScreenshots(state, fbWidth, fbHeight);
+    saveSettingsIfChanged(state, now, lastFrame);
     if (lastFrame && !state.options.screenshotOnExit.empty()) {
       const std::string error = writeWindowPng(fbWidth, fbHeight, state.options.screenshotOnExit);
       if (!error.empty()) {
@@ -294,6 +309,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       }
     }
     glfwSwapBuffers(window);
+    if (soak) soak->afterFrame(state);
     if (lastFrame) break;
   }
   if (maxFrames > 0 && !frameSeconds.empty()) {
@@ -304,6 +320,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
                 frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
                 glRendererName().c_str());
   }
+  if (soak) return soak->finish();
   // In --frames mode a failing renderer must not look like success to scripts and tests.
   if (maxFrames > 0 && !state.renderError.empty()) return 1;
   return 0;
@@ -316,11 +333,22 @@ bool prepareState(const ExplorerOptions& options, ExplorerState& state, std::vec
   state.assetsDir = options.assetsDir.empty() ? defaultAssetsDir() : options.assetsDir;
   try {
     state.sceneIds = builtinSceneIds(state.assetsDir);
-    state.scene = std::make_unique<Scene>(loadScene(options.scene, state.assetsDir));
-    state.sceneLabel = options.scene;
+    try {
+      state.scene = std::make_unique<Scene>(loadScene(options.scene, state.assetsDir));
+      state.sceneLabel = options.scene;
+    } catch (const std::exception& e) {
+      if (!options.fromSettings) throw;
+      // A saved scene that moved or broke must not keep the explorer from starting.
+      state.settingsMessage = std::string("saved scene not loaded (") + e.what() + "); showing basic";
+      std::cerr << "shadowlab: " << state.settingsMessage << "\n";
+      state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+      state.sceneLabel = "basic";
+    }
     techniques.push_back(makeTechnique(options.technique, options.overrides));
     for (size_t i = 0; i < options.compareTechniques.size() && techniques.size() < size_t(kMaxViewports); ++i)
-      techniques.push_back(makeTechnique(options.compareTechniques[i]));
+      techniques.push_back(makeTechnique(options.compareTechniques[i], i < options.compareOverrides.size()
+                                                                           ? options.compareOverrides[i]
+                                                                           : std::vector<std::string>{}));
   } catch (const std::exception& e) {
     std::cerr << "shadowlab: " << e.what() << "\n";
     return false;
@@ -350,7 +378,18 @@ int runExplorer(const ExplorerOptions& options) {
   }
   ExplorerState state;
   std::vector<Technique> techniques;  // one per viewport shown at start
-  if (!prepareState(options, state, techniques)) return 1;
+  ExplorerOptions start = options;
+  SettingsLoad saved = loadSettings(options.settingsPath);
+  std::string problems = saved.problem;
+  startLayout(start, saved.settings ? &*saved.settings : nullptr, problems);
+  if (!problems.empty()) std::cerr << "shadowlab: " << problems << "\n";
+  if (!prepareState(start, state, techniques)) return 1;
+  state.settingsPath = options.settingsPath;
+  if (!problems.empty()) state.settingsMessage = problems;
+  if (saved.settings) applyStateSettings(state, *saved.settings);
+  if (options.uiScale > 0.0f) state.uiScale = options.uiScale;
+  state.showHelp = options.showHelp;
+  if (!options.screenshotDir.empty()) state.screenshotDir = options.screenshotDir;
 
   glfwSetErrorCallback(rememberGlfwError);
   if (!glfwInit()) {
@@ -367,7 +406,7 @@ int runExplorer(const ExplorerOptions& options) {
   glfwSetWindowTitle(window, ("shadowlab explorer - " + state.sceneLabel).c_str());
   enableGlDebugOutput(false);
   keepGlDriverLoaded();
-  setUpImGui(window);
+  setUpImGui(window, state.uiScale);
 
   int exitCode = 0;
   try {

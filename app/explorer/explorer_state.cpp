@@ -139,4 +139,50 @@ void applySelectedViews(ExplorerState& state) {
   }
 }
 
+bool paramLinked(const ExplorerState& state, const std::string& key) {
+  return state.linkAllParams || state.linkedParams.count(key) > 0;
+}
+
+int propagateLinkedParam(ExplorerState& state, int source, const std::string& key) {
+  if (source < 0 || source >= int(state.slots.size()) || !state.slots[size_t(source)].viewport) return 0;
+  const ParamSet& from = state.slots[size_t(source)].viewport->technique.params;
+  if (!from.has(key)) return 0;
+  const double value = from.get(key);
+  int changed = 0;
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
+    ViewportSlot& slot = state.slots[size_t(i)];
+    if (i == source || !slot.viewport || !slot.viewport->technique.params.has(key)) continue;
+    ParamSet& to = slot.viewport->technique.params;
+    if (to.get(key) == value) continue;
+    try {
+      to.set(key, value);
+      ++changed;
+    } catch (const ParamError& e) {
+      slot.error = std::string("linked from viewport ") + std::to_string(source + 1) + ": " + e.what();
+    }
+  }
+  return changed;
+}
+
+std::string cycleEnlargedView(ExplorerState& state, int step) {
+  std::vector<std::string> cycle{""};
+  for (const std::string& name : availableViewNames(state)) cycle.push_back(name);
+  std::string current;
+  if (!state.slots.empty()) current = state.slots.front().enlargedView;
+  auto it = std::find(cycle.begin(), cycle.end(), current);
+  const int n = int(cycle.size());
+  const int index = it == cycle.end() ? 0 : int(it - cycle.begin());
+  const std::string next = cycle[size_t(((index + step) % n + n) % n)];
+  if (!next.empty()) state.selectedViews.insert(next);
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
+    ViewportSlot& slot = state.slots[size_t(i)];
+    if (!slot.viewport) continue;
+    const std::vector<std::string> offered = slot.viewport->availableViews();
+    const bool has = next.empty() || next == ErrorPanel::kViewName ||
+                     std::find(offered.begin(), offered.end(), next) != offered.end();
+    slot.enlargedView = has ? next : "";
+  }
+  return next;
+}
+
 }  // namespace sl

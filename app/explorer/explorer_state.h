@@ -55,11 +55,22 @@ struct ExplorerState {
   std::set<std::string> selectedViews;  // debug views drawn as thumbnails under each viewport
 
   // Tools and status.
-  bool magnifierPinned = false;  // checkbox; holding M shows it too
-  bool plotPinned = false;       // checkbox; holding V shows the visibility plot too
-  bool screenshotRequested = false;
-  std::string statusLine;   // last screenshot written, etc.
-  std::string renderError;  // exception from the last frame, shown until a frame works again
+  bool magnifierPinned = false;         // checkbox; holding M shows it too
+  bool plotPinned = false;              // checkbox; holding V shows the visibility plot too
+  bool screenshotRequested = false;     // the whole window, UI included
+  bool viewportShotsRequested = false;  // each viewport's image alone, no UI
+  std::string screenshotDir;            // where screenshots and exports go (see exportDir)
+  std::string statusLine;               // last screenshot written, etc.
+  double statusLineTime = -1e9;         // glfwGetTime() when statusLine was set: shown on screen for a while
+  // Lecture settings: UI size (fonts rebuilt at 16 px x uiScale), help window, linked parameters.
+  float uiScale = 1.0f;
+  bool showHelp = false;
+  bool showColourKeys = true;          // each heat-map view's key over its image (K toggles)
+  bool linkAllParams = false;          // every parameter edit goes to every viewport declaring it
+  std::set<std::string> linkedParams;  // keys linked one by one (the chain button beside a widget)
+  std::string settingsPath;            // "" = settings are neither read nor written (scripted runs)
+  std::string settingsMessage;         // a settings problem (corrupt file set aside), shown in the panel
+  std::string renderError;             // exception from the last frame, shown until a frame works again
   float smoothedFrameMs = 0.0f;
   int hoveredViewport = -1;  // viewport image under the mouse in the previous frame
   // Accuracy panel and `error` view (owned by the frame loop; null outside it).
@@ -92,6 +103,16 @@ std::vector<std::string> availableViewNames(const ExplorerState& state);
 // enlarged view that is no longer selected.
 void applySelectedViews(ExplorerState& state);
 std::vector<Viewport*> shownViewports(const ExplorerState& state);
+// Whether an edit of `key` goes to the other viewports (linkAllParams or linked one by one).
+bool paramLinked(const ExplorerState& state, const std::string& key);
+// After viewport `source` changed `key`: the same value in every other shown viewport whose
+// technique declares the key (its range permitting; a value it rejects leaves it unchanged and
+// records the message in that slot's error). Returns how many viewports were changed.
+int propagateLinkedParam(ExplorerState& state, int source, const std::string& key);
+// Tab through the big image of every shown viewport: colour, then each offered debug view in
+// turn (a view chosen this way is also selected, so it is rendered). step = +1 or -1. Returns
+// the view now shown ("" = colour).
+std::string cycleEnlargedView(ExplorerState& state, int step);
 float sceneDiagonal(const Scene& scene);
 
 }  // namespace sl

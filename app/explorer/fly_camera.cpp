@@ -27,8 +27,11 @@ void FlyCamera::setPose(const Camera& camera) {
 
 void FlyCamera::jumpTo(const Camera& camera, float sceneDiagonal) {
   setPose(camera);
-  // A quarter of the scene per second is slow enough to inspect shadow edges closely.
-  speed_ = std::max(0.05f, 0.25f * sceneDiagonal);
+  sceneScale_ = std::isfinite(sceneDiagonal) && sceneDiagonal > 0.0f ? sceneDiagonal : 10.0f;
+}
+
+void FlyCamera::setSpeedFactor(float factor) {
+  if (std::isfinite(factor)) speedFactor_ = std::clamp(factor, kMinSpeedFactor, kMaxSpeedFactor);
 }
 
 glm::vec3 FlyCamera::forward() const {
@@ -36,8 +39,7 @@ glm::vec3 FlyCamera::forward() const {
 }
 
 bool FlyCamera::update(const FlyInput& input, float dtSeconds) {
-  if (input.scrollSteps != 0.0f)
-    speed_ = std::clamp(speed_ * std::pow(kSpeedStepFactor, input.scrollSteps), 1e-3f, 1e4f);
+  if (input.scrollSteps != 0.0f) setSpeedFactor(speedFactor_ * std::pow(kSpeedStepFactor, input.scrollSteps));
 
   bool changed = false;
   if (input.lookPixels != glm::vec2(0.0f)) {
@@ -48,7 +50,7 @@ bool FlyCamera::update(const FlyInput& input, float dtSeconds) {
   if (input.move != glm::vec3(0.0f)) {
     glm::vec3 fwd = forward();
     glm::vec3 right = glm::normalize(glm::cross(fwd, kWorldUp));
-    float distance = speed_ * (input.fast ? kFastFactor : 1.0f) * dtSeconds;
+    float distance = speed() * (input.fast ? kFastFactor : 1.0f) * dtSeconds;
     position_ += distance * (right * input.move.x + kWorldUp * input.move.y + fwd * input.move.z);
     changed = true;
   }

@@ -71,12 +71,34 @@ bool drawWidget(const ParamDecl& decl, ParamSet& params, double& newValue) {
 
 }  // namespace
 
-bool drawParamPanel(ParamSet& params, std::string& error) {
+// A narrow toggle: highlighted when the parameter is linked across viewports.
+void linkToggle(const std::string& key, ParamLinks& links) {
+  const bool on = links.all || links.linked->count(key);
+  // Orange when linked, dim when not: the same "L" keeps the widgets aligned.
+  ImGui::PushStyleColor(ImGuiCol_Button, on ? ImVec4(0.85f, 0.55f, 0.15f, 1.0f) : ImVec4(0.2f, 0.2f, 0.24f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_Text, on ? ImVec4(1, 1, 1, 1) : ImVec4(0.55f, 0.55f, 0.6f, 1.0f));
+  if (ImGui::SmallButton("L") && !links.all) {
+    if (on)
+      links.linked->erase(key);
+    else
+      links.linked->insert(key);
+  }
+  ImGui::PopStyleColor(2);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(links.all ? "linked: 'Link all viewports' is on"
+                      : on      ? "linked: a change here sets %s in every viewport that has it (click to unlink)"
+                                : "not linked: click so that a change here sets %s in every viewport that has it",
+                      key.c_str());
+  ImGui::SameLine();
+}
+
+bool drawParamPanel(ParamSet& params, std::string& error, ParamLinks* links) {
   bool changed = false;
   // Widgets take a bit over half the width; the rest shows the key, which is also the --set name.
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
   for (const ParamDecl& decl : params.decls()) {
     ImGui::PushID(decl.key.c_str());
+    if (links && links->linked) linkToggle(decl.key, *links);
     double newValue = 0.0;
     const bool edited = drawWidget(decl, params, newValue);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltipText(decl).c_str());
@@ -85,6 +107,7 @@ bool drawParamPanel(ParamSet& params, std::string& error) {
         params.set(decl.key, newValue);
         error.clear();
         changed = true;
+        if (links) links->changed.push_back(decl.key);
       } catch (const ParamError& e) {
         error = e.what();
       }

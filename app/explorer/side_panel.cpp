@@ -2,6 +2,9 @@
 
 #include "explorer/error_panel.h"
 #include "explorer/param_panel.h"
+#include "explorer/screenshot.h"
+#include "explorer/session_files.h"
+#include "explorer/shortcuts.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -45,6 +48,13 @@ void drawStatusHeader(ExplorerState& state, Renderer& renderer, const ShaderLibr
   ImGui::PopStyleColor();
   // Errors first: a shader typo must be noticed even with every section collapsed.
   // Several viewports can share a broken module; one line per distinct message is enough.
+  // Where the last capture went (and settings trouble): here at the top, never below the fold.
+  if (!state.statusLine.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.9f, 0.55f, 1.0f));
+    ImGui::TextWrapped("%s", state.statusLine.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (!state.settingsMessage.empty()) errorText(state.settingsMessage);
   std::vector<std::string> errors = shaders.errors();
   std::sort(errors.begin(), errors.end());
   errors.erase(std::unique(errors.begin(), errors.end()), errors.end());
@@ -100,15 +110,15 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
       ImGui::SetTooltip("direction towards the light; changing it resets accumulated history and references");
     if (changed) setLightDirection(state, directionFromLightAngles(angles.x, angles.y));
   }
-  ImGui::Checkbox("Pause time", &state.paused);
+  ImGui::Checkbox("Pause time (P)", &state.paused);
   ImGui::SameLine();
   ImGui::Text("t = %.2f s", state.sceneTime);
-  ImGui::Checkbox("Freeze frames", &state.frozen);
+  ImGui::Checkbox("Freeze frames (F)", &state.frozen);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("render no new frame; Step renders one (watch pixel-correct converge frame by frame)");
   ImGui::SameLine();
   ImGui::BeginDisabled(!state.frozen);
-  if (ImGui::Button("Step")) state.stepRequested = true;
+  if (ImGui::Button("Step (N)")) state.stepRequested = true;
   ImGui::EndDisabled();
 }
 
@@ -135,18 +145,19 @@ void drawCameraPanel(ExplorerState& state) {
       ImGui::PopID();
     }
   }
-  ImGui::TextDisabled("speed %.2f units/s   controls (?)", state.camera.speed());
+  // Speed as a share of the scene's diagonal per second, so it suits any scene size.
+  float factor = state.camera.speedFactor() * 100.0f;
+  char speedLabel[64];
+  std::snprintf(speedLabel, sizeof speedLabel, "%%.1f%%%% of scene/s (%.2g units/s)", state.camera.speed());
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Help (F1)").x -
+                          ImGui::GetStyle().FramePadding.x * 2 - ImGui::GetStyle().ItemSpacing.x);
+  if (ImGui::SliderFloat("##speed", &factor, FlyCamera::kMinSpeedFactor * 100.0f, FlyCamera::kMaxSpeedFactor * 100.0f,
+                         speedLabel, ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    state.camera.setSpeedFactor(factor / 100.0f);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "With the mouse over a viewport:\n"
-        "  right-drag   look around\n"
-        "  W A S D      move\n"
-        "  Q / E        down / up\n"
-        "  Shift        4x faster\n"
-        "  wheel        change speed\n"
-        "  hold M       magnifier (8x, unfiltered)\n"
-        "  hold V       visibility vs receiver depth (pre-filtered)\n"
-        "Camera buttons jump (a cut: accumulated history is reset).");
+    ImGui::SetTooltip("camera speed: WASD/QE move, Shift 4x, the wheel over a viewport changes it too");
+  ImGui::SameLine();
+  if (ImGui::Button("Help (F1)")) state.showHelp = !state.showHelp;
 }
 
 void drawViewportPanels(ExplorerState& state) {
@@ -157,6 +168,18 @@ void drawViewportPanels(ExplorerState& state) {
     if (ImGui::RadioButton(std::to_string(n).c_str(), state.viewportCount == n)) state.viewportCount = n;
   }
   ensureViewportSlots(state);
+  if (state.viewportCount > 1) {
+    // Beside the radio buttons when it fits (a large UI scale moves it to its own row).
+    const float needed =
+        ImGui::GetFrameHeight() + ImGui::CalcTextSize("link all").x + ImGui::GetStyle().ItemSpacing.x * 2;
+    if (ImGui::GetItemRectMax().x + needed <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+      ImGui::SameLine();
+    ImGui::Checkbox("link all", &state.linkAllParams);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Every parameter edit goes to every viewport whose technique has that parameter.\n"
+          "Or link single parameters with the button before each one.");
+  }
 
   for (int i = 0; i < state.viewportCount; ++i) {
     ViewportSlot& slot = state.slots[size_t(i)];
@@ -183,10 +206,17 @@ void drawViewportPanels(ExplorerState& state) {
       for (const PartState* part : {static_cast<const PartState*>(slot.viewport->representation.get()),
                                     static_cast<const PartState*>(slot.viewport->accumulation.get())}) {
         const std::string status = part ? part->status() : "";
-        if (!status.empty()) ImGui::TextDisabled("%s", status.c_str());
+        if (!status.empty()) {  // wrapped: the tile header has room only for its start
+          ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+          ImGui::TextWrapped("%s", status.c_str());
+          ImGui::PopStyleColor();
+        }
       }
       // setViewportPreset may have replaced the technique: read it again.
-      drawParamPanel(slot.viewport->technique.params, slot.error);
+      ParamLinks links{state.viewportCount > 1 ? &state.linkedParams : nullptr, state.linkAllParams, {}};
+      drawParamPanel(slot.viewport->technique.params, slot.error, &links);
+      for (const std::string& key : links.changed)
+        if (paramLinked(state, key)) propagateLinkedParam(state, i, key);
       if (!slot.error.empty()) errorText(slot.error);
     }
     ImGui::PopID();
@@ -197,6 +227,8 @@ void drawDebugViewPanel(ExplorerState& state) {
   if (!ImGui::CollapsingHeader("Debug views")) return;
   const std::vector<std::string> names = availableViewNames(state);
   if (names.empty()) ImGui::TextDisabled("(none offered by these techniques)");
+  ImGui::Checkbox("Colour keys (K)", &state.showColourKeys);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("what each heat-map view's colours mean, drawn over its image");
   // Two columns of checkboxes keep the list short enough to stay on screen.
   ImGui::Columns(2, "views", false);
   for (const std::string& name : names) {
@@ -245,8 +277,29 @@ void drawToolsPanel(ExplorerState& state) {
   ImGui::Separator();
   ImGui::Checkbox("Magnifier (hold M)", &state.magnifierPinned);
   ImGui::Checkbox("Visibility plot (hold V)", &state.plotPinned);
+  // UI size for the room: fonts are rebuilt at the new size (Ctrl+= / Ctrl+-).
+  ImGui::Text("UI size %.0f %%", state.uiScale * 100.0f);
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot")) state.screenshotRequested = true;
+  if (ImGui::SmallButton(" - ")) state.uiScale = steppedUiScale(state.uiScale, -1);
+  ImGui::SameLine();
+  if (ImGui::SmallButton(" + ")) state.uiScale = steppedUiScale(state.uiScale, 1);
+  ImGui::SameLine();
+  ImGui::TextDisabled("Ctrl + = / Ctrl + -");
+
+  ImGui::TextUnformatted("Save to folder:");
+  if (state.screenshotDir.empty()) state.screenshotDir = defaultScreenshotDir();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##shotdir", &state.screenshotDir);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("created when something is saved; kept between runs");
+  if (ImGui::Button("Window (F12)")) state.screenshotRequested = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the whole window, panels included");
+  ImGui::SameLine();
+  if (ImGui::Button("Viewport images")) state.viewportShotsRequested = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("each viewport's image alone, at its rendered size, no UI (Shift + F12)");
+  ImGui::SameLine();
+  if (ImGui::Button("Table + chart")) exportAccuracy(state);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the accuracy table as CSV and the error-vs-time chart as SVG");
   if (!state.statusLine.empty()) ImGui::TextWrapped("%s", state.statusLine.c_str());
 }
 
@@ -255,7 +308,7 @@ void drawToolsPanel(ExplorerState& state) {
 void drawSidePanel(ExplorerState& state, Renderer& renderer, const ShaderLibrary& shaders) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::min(kSidePanelWidth, display.x), display.y));
+  ImGui::SetNextWindowSize(ImVec2(std::min(sidePanelWidth(state.uiScale, display.x), display.x), display.y));
   // No background: the window is cleared to the same colour, and a blended full-height
   // rectangle is a measurable cost on a software rasterizer.
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

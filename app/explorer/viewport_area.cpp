@@ -1,5 +1,6 @@
 #include "explorer/viewport_area.h"
 
+#include "explorer/colour_key.h"
 #include "explorer/error_panel.h"
 
 #include <algorithm>
@@ -38,10 +39,20 @@ void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSl
     if (!status.empty()) text += "   " + status;
   }
   const float textY = tile.headerMin.y + (tile.headerSize.y - ImGui::GetTextLineHeight()) * 0.5f;
-  draw->PushClipRect(tile.headerMin, ImVec2(tile.headerMin.x + tile.headerSize.x, tile.headerMin.y + tile.headerSize.y),
-                     true);
-  draw->AddText(ImVec2(tile.headerMin.x + 4.0f, textY), IM_COL32(235, 235, 235, 255), text.c_str());
+  const ImVec2 headerMax(tile.headerMin.x + tile.headerSize.x, tile.headerMin.y + tile.headerSize.y);
+  // A long status (pixel-correct's) does not fit a 2x2 tile: cut it with an ellipsis and show
+  // the whole text when the header is hovered.
+  const float room = tile.headerSize.x - 8.0f;
+  std::string shown = text;
+  const bool cut = ImGui::CalcTextSize(text.c_str()).x > room;
+  if (cut) {
+    while (!shown.empty() && ImGui::CalcTextSize((shown + "...").c_str()).x > room) shown.pop_back();
+    shown += "...";
+  }
+  draw->PushClipRect(tile.headerMin, headerMax, true);
+  draw->AddText(ImVec2(tile.headerMin.x + 4.0f, textY), IM_COL32(235, 235, 235, 255), shown.c_str());
   draw->PopClipRect();
+  if (cut && ImGui::IsMouseHoveringRect(tile.headerMin, headerMax)) ImGui::SetTooltip("%s", text.c_str());
 }
 
 // The texture of a debug view: the renderer's, or the accuracy panel's for `error`.
@@ -95,8 +106,17 @@ void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& sl
     draw->PushClipRect(ImVec2(min.x, max.y), ImVec2(min.x + slotW, max.y + labelH + 2), true);
     draw->AddText(ImVec2(min.x, max.y + 1), enlarged ? kHighlight : IM_COL32(200, 200, 200, 255), name.c_str());
     draw->PopClipRect();
-    if (hovered)
-      ImGui::SetTooltip("%s: click to %s", name.c_str(), enlarged ? "show the colour image again" : "enlarge");
+    const ColourKey* key = viewColourKey(name);
+    if (key && state.showColourKeys) drawCompactColourKey(draw, *key, min, max);
+    if (hovered) {
+      ImGui::BeginTooltip();
+      ImGui::Text("%s: click to %s", name.c_str(), enlarged ? "show the colour image again" : "enlarge");
+      if (key) {
+        ImGui::Separator();
+        colourKeyTooltipBody(*key);
+      }
+      ImGui::EndTooltip();
+    }
     if (clicked) slot.enlargedView = enlarged ? "" : name;
   }
 }
@@ -174,6 +194,8 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
       draw->AddText(ImVec2(tile.imageMin.x + 10, tile.imageMin.y + 10), IM_COL32(255, 120, 120, 255),
                     "not rendered (see the error in the side panel)");
     }
+    if (const ColourKey* key = viewColourKey(slot.enlargedView); key && state.showColourKeys)
+      drawColourKey(draw, *key, tile.imageMin, imageMax);
     if (i == state.hoveredViewport || hovered)
       draw->AddRect(ImVec2(tile.imageMin.x - 1, tile.imageMin.y - 1), ImVec2(imageMax.x + 1, imageMax.y + 1),
                     state.looking ? kHighlight : IM_COL32(90, 90, 100, 255));

@@ -4,7 +4,7 @@
 
 #include "explorer/explorer_state.h"
 #include "gl/shader_library.h"
-#include "render/colour_key.h"
+#include "render/view_keys.h"
 #include "render/renderer.h"
 
 #include <algorithm>
@@ -47,14 +47,20 @@ std::vector<Panel> panelsOf(const TourStep& s) {
   return panels;
 }
 
+// The view's key when it is a gradient (a categorical key has no bar to draw under a panel).
+const ColourKey* gradientKey(const std::string& view) {
+  const ColourKey* key = viewColourKey(view);
+  return key && !key->stops.empty() ? key : nullptr;
+}
+
 FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const FigureFonts& fonts,
                     const FigureOptions& o) {
   FigureLayout l;
   l.panelW = o.panelWidth, l.panelH = o.panelHeight;
   l.cols = static_cast<int>(panels.size());
   l.rows = static_cast<int>(s.frames.size());
-  const bool anyKey = std::any_of(panels.begin(), panels.end(),
-                                  [](const Panel& p) { return !p.view.empty() && viewColourKey(p.view).valid(); });
+  const bool anyKey =
+      std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return !p.view.empty() && gradientKey(p.view); });
   const int body = fonts.lineHeight(FigureFonts::Style::Body);
   l.keyH = anyKey ? 4 + kKeyBar + body : 0;
   l.cellW = l.panelW + l.margin;
@@ -68,12 +74,14 @@ FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const F
 }
 
 void drawColourKey(RgbaImage& img, const FigureFonts& fonts, const ColourKey& key, int x, int y, int w) {
-  for (int i = 0; i < w; ++i) img.fillRect(x + i, y, 1, kKeyBar, key.sample(w > 1 ? float(i) / float(w - 1) : 0.0f));
+  for (int i = 0; i < w; ++i)
+    img.fillRect(x + i, y, 1, kKeyBar, sampleColourKey(key, w > 1 ? float(i) / float(w - 1) : 0.0f));
   const int ty = y + kKeyBar + 2;
-  for (const auto& [at, text] : key.labels) {
-    const int tw = fonts.width(text, FigureFonts::Style::Body);
-    const int tx = std::clamp(x + static_cast<int>(at * float(w)) - tw / 2, x, x + w - tw);
-    fonts.draw(img, tx, ty, text, FigureFonts::Style::Body, kDimText);
+  for (const ColourStop& stop : key.stops) {
+    if (stop.label.empty()) continue;
+    const int tw = fonts.width(stop.label, FigureFonts::Style::Body);
+    const int tx = std::clamp(x + static_cast<int>(stop.position * float(w)) - tw / 2, x, x + w - tw);
+    fonts.draw(img, tx, ty, stop.label, FigureFonts::Style::Body, kDimText);
   }
 }
 
@@ -103,8 +111,8 @@ void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fon
     out.image.blitBottomUp(tex->readRgba8(), l.panelW, l.panelH, x, iy);
     ++out.panels;
     if (!p.view.empty()) {
-      const ColourKey key = viewColourKey(p.view);
-      if (key.valid()) drawColourKey(out.image, fonts, key, x, iy + l.panelH + 4, l.panelW);
+      if (const ColourKey* key = gradientKey(p.view))
+        drawColourKey(out.image, fonts, *key, x, iy + l.panelH + 4, l.panelW);
     }
   }
   for (const auto& vp : vps) {

@@ -4,8 +4,14 @@
 uniform sampler2D u_gPosition;
 out vec4 o_color;
 
-vec3 heat(float t) {  // t in [-1, 1]: blue .. green .. red
-  return t < 0.0 ? mix(vec3(0.1, 0.8, 0.2), vec3(0.1, 0.3, 1.0), -t) : mix(vec3(0.1, 0.8, 0.2), vec3(1.0, 0.1, 0.05), t);
+// t in [0, 1]: blue .. cyan .. green .. yellow .. red. The same stops as the on-screen key
+// (app/render/view_keys.cpp, "aliasing"): five so that a map far too small still shows gradation.
+vec3 aliasingHeat(float t) {
+  const vec3 stops[5] = vec3[5](vec3(0.10, 0.30, 1.00), vec3(0.10, 0.75, 0.90), vec3(0.10, 0.80, 0.20),
+                                vec3(0.95, 0.85, 0.10), vec3(1.00, 0.10, 0.05));
+  float x = clamp(t, 0.0, 1.0) * 4.0;
+  int i = min(int(floor(x)), 3);
+  return mix(stops[i], stops[i + 1], x - float(i));
 }
 
 void main() {
@@ -24,7 +30,8 @@ void main() {
   vec2 dy = layoutShadowCoordIn(Py.xyz, view).uv * u_shadowMapSize - t;
   float texelsPerPixel = abs(dx.x * dy.y - dx.y * dy.x);  // area of one pixel in texels
   float pixelsPerTexel = 1.0 / max(texelsPerPixel, 1e-8);
-  // log4 scale: 16 pixels per texel = full red, 16 texels per pixel = full blue.
-  float t01 = clamp(log2(pixelsPerTexel) / 4.0, -1.0, 1.0);
-  o_color = vec4(heat(t01), 1.0);
+  // log2 scale over [-12, 12] (kAliasingLog2Range): 4096 pixels per texel = red, 4096 texels
+  // per pixel = blue, one texel per pixel = green; wide enough that a 128-texel map still grades.
+  float t01 = 0.5 + 0.5 * clamp(log2(pixelsPerTexel) / 12.0, -1.0, 1.0);
+  o_color = vec4(aliasingHeat(t01), 1.0);
 }

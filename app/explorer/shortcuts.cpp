@@ -1,0 +1,111 @@
+#include "explorer/shortcuts.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+const std::vector<Shortcut>& explorerShortcuts() {
+  static const std::vector<Shortcut> table = {
+      {"F1  or  ?", "show / hide this help", "Window"},
+      {"Ctrl + =  /  Ctrl + -", "larger / smaller UI (for a projector)", "Window"},
+      {"Ctrl + 0", "UI back to 100 %", "Window"},
+      {"1  2  4", "one, two or four viewports", "Window"},
+      {"Tab  /  Shift + Tab", "cycle the big images: colour, then each debug view", "Window"},
+      {"K", "show / hide the colour keys over the debug views", "Window"},
+      {"F12  or  Ctrl + S", "screenshot of the whole window", "Window"},
+      {"Shift + F12", "clean images of each viewport (no UI)", "Window"},
+      {"P", "pause / resume scene time (animation)", "Time"},
+      {"F", "freeze frames (render nothing new)", "Time"},
+      {"N  or  .", "step: render exactly one frame (freezes first)", "Time"},
+      {"right-drag", "look around (mouse over a viewport)", "Camera"},
+      {"W A S D", "move forward / left / back / right", "Camera"},
+      {"Q  /  E", "down / up", "Camera"},
+      {"Shift", "move 4x faster", "Camera"},
+      {"mouse wheel", "camera speed (x1.25 per notch; also a slider in Camera)", "Camera"},
+      {"hold M", "magnifier: 8x, unfiltered pixels", "Tools"},
+      {"hold V", "visibility vs receiver depth under the mouse (pre-filtered maps)", "Tools"},
+      {"click a thumbnail", "enlarge that debug view; click again for the colour image", "Tools"},
+  };
+  return table;
+}
+
+float steppedUiScale(float scale, int steps) {
+  const float stepped = std::round(scale / kUiScaleStep) * kUiScaleStep + float(steps) * kUiScaleStep;
+  return std::clamp(stepped, kMinUiScale, kMaxUiScale);
+}
+
+namespace {
+
+bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
+
+}  // namespace
+
+void handleShortcuts(ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+  bool question = false;
+  for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
+  if (pressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
+  if (ctrl && (pressed(GLFW_KEY_EQUAL) || pressed(GLFW_KEY_KP_ADD))) state.uiScale = steppedUiScale(state.uiScale, 1);
+  if (ctrl && (pressed(GLFW_KEY_MINUS) || pressed(GLFW_KEY_KP_SUBTRACT)))
+    state.uiScale = steppedUiScale(state.uiScale, -1);
+  if (ctrl && pressed(GLFW_KEY_0)) state.uiScale = 1.0f;
+  if (pressed(GLFW_KEY_F12) || (ctrl && pressed(GLFW_KEY_S))) {
+    if (shift)
+      state.viewportShotsRequested = true;
+    else
+      state.screenshotRequested = true;
+  }
+  if (ctrl) return;  // the rest are plain keys
+  if (pressed(GLFW_KEY_1)) state.viewportCount = 1;
+  if (pressed(GLFW_KEY_2)) state.viewportCount = 2;
+  if (pressed(GLFW_KEY_4)) state.viewportCount = 4;
+  if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, shift ? -1 : 1);
+  if (pressed(GLFW_KEY_P)) state.paused = !state.paused;
+  if (pressed(GLFW_KEY_K)) state.showColourKeys = !state.showColourKeys;
+  if (pressed(GLFW_KEY_F)) state.frozen = !state.frozen;
+  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) {
+    state.frozen = true;
+    state.stepRequested = true;
+  }
+}
+
+void drawHelpWindow(ExplorerState& state) {
+  if (!state.showHelp) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.94f);
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
+  if (!ImGui::Begin("Keys and mouse (F1)", &state.showHelp, flags)) {
+    ImGui::End();
+    return;
+  }
+  std::string group;
+  if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+    for (const Shortcut& s : explorerShortcuts()) {
+      if (s.group != group) {
+        group = s.group;
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", group.c_str());
+      }
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(s.keys.c_str());
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextUnformatted(s.action.c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Keys act when no text field is being edited. Camera keys need the mouse over a viewport.");
+  ImGui::End();
+}
+
+}  // namespace sl

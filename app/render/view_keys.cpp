@@ -1,0 +1,134 @@
+#include "render/view_keys.h"
+
+#include <algorithm>
+#include <map>
+
+namespace sl {
+
+namespace {
+
+// Background of the views that read the G-buffer (no geometry there).
+const SpecialColour kSky{{0.10f, 0.10f, 0.12f}, "no geometry (sky)"};
+const SpecialColour kBlackSky{{0.0f, 0.0f, 0.0f}, "black: no geometry (sky)"};
+
+std::map<std::string, ColourKey> makeKeys() {
+  std::map<std::string, ColourKey> keys;
+  // shaders/views/aliasing.frag: aliasingHeat().
+  keys["aliasing"] = {"screen pixels per shadow-map texel",
+                      "px/texel",
+                      {{0.0f, {0.10f, 0.30f, 1.00f}, "1/4096"},
+                       {0.25f, {0.10f, 0.75f, 0.90f}, "1/64"},
+                       {0.5f, {0.10f, 0.80f, 0.20f}, "1"},
+                       {0.75f, {0.95f, 0.85f, 0.10f}, "64"},
+                       {1.0f, {1.00f, 0.10f, 0.05f}, "4096"}},
+                      {kSky},
+                      "log scale: red = blocky (undersampled), blue = texels wasted"};
+  // shaders/views/shadowmap.frag: normalised to the depths present in each layer.
+  keys["shadowmap"] = {"light-space depth (per layer, stretched to its min..max)",
+                       "",
+                       {{0.0f, {1.0f, 1.0f, 1.0f}, "near"}, {1.0f, {0.1f, 0.1f, 0.1f}, "far"}},
+                       {{{0.0f, 0.0f, 0.0f}, "black: empty (cleared, nothing drawn)"}},
+                       ""};
+  keys["visibility"] = {"visibility (shadow term)",
+                        "",
+                        {{0.0f, {0.0f, 0.0f, 0.0f}, "0 shadow"}, {1.0f, {1.0f, 1.0f, 1.0f}, "1 lit"}},
+                        {{{1.0f, 0.0f, 1.0f}, "magenta: NaN/Inf"}, {{0.2f, 0.2f, 0.25f}, "no geometry"}},
+                        ""};
+  keys["texels"] = {"shadow-map texels (checkerboard)",
+                    "",
+                    {},
+                    {{{0.95f, 0.75f, 0.30f}, "even texel"},
+                     {{0.25f, 0.35f, 0.75f}, "odd texel"},
+                     {{0.62f, 0.55f, 0.52f}, "texel < 2 px: averaged"},
+                     {{0.30f, 0.30f, 0.30f}, "outside the map"},
+                     kSky},
+                    "big squares = one texel over many pixels"};
+  // shaders/accumulation/views_confidence.frag.
+  keys["confidence"] = {"shadow-test confidence (1 at a texel centre)",
+                        "",
+                        {{0.0f, {0.0f, 0.0f, 0.0f}, "0"}, {1.0f, {0.7f, 0.7f, 0.7f}, "1"}},
+                        {{{1.0f, 0.55f, 0.0f}, "orange: update weight conf^m"}, kBlackSky},
+                        "averaged over a pixel where texels are smaller than pixels"};
+  keys["history"] = {"reprojected history s(n-1)",
+                     "",
+                     {{0.0f, {0.1f, 0.1f, 0.1f}, "0 shadow"}, {1.0f, {0.95f, 0.95f, 0.95f}, "1 lit"}},
+                     {{{0.15f, 0.35f, 0.95f}, "blue: no history (cut, off-screen)"},
+                      {{0.95f, 0.85f, 0.10f}, "yellow: replaced (moving caster)"},
+                      kBlackSky},
+                     ""};
+  keys["disocclusion"] = {"why a pixel has no usable history",
+                          "",
+                          {},
+                          {{{0.35f, 0.35f, 0.35f}, "grey: history used"},
+                           {{0.6f, 0.2f, 0.8f}, "purple: none (after a cut)"},
+                           {{0.15f, 0.35f, 0.95f}, "blue: off-screen last frame"},
+                           {{1.0f, 0.5f, 0.0f}, "orange: disoccluded"},
+                           {{0.95f, 0.85f, 0.1f}, "yellow: rejected (pc.reject)"},
+                           kBlackSky},
+                          ""};
+  // app/render/debug_views.cpp: the lightspace overview's line colours.
+  keys["lightspace"] = {"overview: camera and light frusta",
+                        "",
+                        {},
+                        {{{1.0f, 0.85f, 0.1f}, "yellow: camera frustum"},
+                         {{0.2f, 0.9f, 1.0f}, "cyan: light view"},
+                         {{1.0f, 1.0f, 1.0f}, "white: camera (with cascades)"},
+                         {{0.90f, 0.30f, 0.25f}, "red, yellow, green..: cascades"}},
+                        ""};
+  keys["cascades"] = {"which light view (split) a pixel reads",
+                      "",
+                      {},
+                      {{{0.90f, 0.30f, 0.25f}, "split 1"},
+                       {{0.95f, 0.75f, 0.20f}, "split 2"},
+                       {{0.35f, 0.75f, 0.30f}, "split 3"},
+                       {{0.25f, 0.55f, 0.90f}, "split 4"},
+                       {{0.65f, 0.40f, 0.85f}, "split 5+"}},
+                      "mixed, hatched: blend band"};
+  // app/metrics/metrics.cpp: errorImage().
+  keys["error"] = {"difference to the ray-traced reference",
+                   "",
+                   {},
+                   {{{0.5f, 0.5f, 0.5f}, "grey: agrees (reference, half bright)"},
+                    {{0.90f, 0.47f, 0.0f}, "orange: false shadow"},
+                    {{0.16f, 0.47f, 1.0f}, "blue: false light"},
+                    {{1.0f, 0.0f, 1.0f}, "magenta: NaN/Inf"},
+                    {{0.0f, 0.0f, 0.0f}, "black: no geometry / no reference"}},
+                   "needs a resting camera"};
+  return keys;
+}
+
+const std::map<std::string, ColourKey>& allKeys() {
+  static const std::map<std::string, ColourKey> keys = makeKeys();
+  return keys;
+}
+
+}  // namespace
+
+const ColourKey* viewColourKey(const std::string& viewName) {
+  const auto& keys = allKeys();
+  auto it = keys.find(viewName);
+  return it == keys.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> viewsWithColourKeys() {
+  std::vector<std::string> names;
+  for (const auto& [name, key] : allKeys()) names.push_back(name);
+  return names;
+}
+
+glm::vec3 sampleColourKey(const ColourKey& key, float t) {
+  if (key.stops.empty()) return glm::vec3(0.0f);
+  t = std::clamp(t, 0.0f, 1.0f);
+  if (t <= key.stops.front().position) return key.stops.front().colour;
+  for (size_t i = 1; i < key.stops.size(); ++i) {
+    const ColourStop& a = key.stops[i - 1];
+    const ColourStop& b = key.stops[i];
+    if (t <= b.position) {
+      const float span = std::max(b.position - a.position, 1e-6f);
+      return glm::mix(a.colour, b.colour, (t - a.position) / span);
+    }
+  }
+  return key.stops.back().colour;
+}
+
+}  // namespace sl
