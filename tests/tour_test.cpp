@@ -100,11 +100,11 @@ TEST(TourParse, StructuralErrors) {
 TEST(TourParse, PlannedTechniqueMarksTheStepNotBuilt) {
   const Tour t = parseTour(
       tourWith(
-          R"({"title": "a", "caption": "exact", "requires": ["alias-free"], "viewports": ["alias-free", "standard"]})"),
+          R"({"title": "a", "caption": "exact", "requires": ["planned-only"], "viewports": ["planned-only", "standard"]})"),
       "lecture.json");
   ASSERT_FALSE(t.steps[0].built());
-  EXPECT_EQ(t.steps[0].missing, std::vector<std::string>{"alias-free"});
-  EXPECT_NE(t.steps[0].shownCaption().find("Not built yet (alias-free)"), std::string::npos);
+  EXPECT_EQ(t.steps[0].missing, std::vector<std::string>{"planned-only"});
+  EXPECT_NE(t.steps[0].shownCaption().find("Not built yet (planned-only)"), std::string::npos);
   EXPECT_NE(t.steps[0].shownCaption().find("exact"), std::string::npos);
   // Listed as planned but present: validated as usual.
   expectMessage(parseError(tourWith(
