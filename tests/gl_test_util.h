@@ -3,6 +3,7 @@
 
 #include "gl/gl_util.h"
 #include "gl/headless_context.h"
+#include "metrics/metrics.h"
 #include "reference/reference.h"
 #include "render/renderer.h"
 
@@ -45,6 +46,17 @@ struct Frame {
   std::vector<uint32_t> surface;  // 4 channels: instance + 1, triangle, packed facet, 0
   GBufferView gbuffer() const { return GBufferView{width, height, position.data(), normal.data(), surface.data()}; }
   float at(int x, int y) const { return visibility[2 * (static_cast<size_t>(y) * width + x)]; }
+  // The visibility channel alone, and 1 where the G-buffer covers the pixel (the metrics' mask).
+  std::vector<float> visibilityChannel() const {
+    std::vector<float> v(visibility.size() / 2);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = visibility[2 * i];
+    return v;
+  }
+  std::vector<uint8_t> covered() const {
+    std::vector<uint8_t> c(position.size() / 4);
+    for (size_t i = 0; i < c.size(); ++i) c[i] = position[4 * i + 3] > 0.5f;
+    return c;
+  }
   long long nonfinite() const {
     long long n = 0;
     for (size_t i = 0; i < visibility.size(); i += 2) n += std::isfinite(visibility[i]) ? 0 : 1;
@@ -61,6 +73,20 @@ inline Frame readFrame(const Renderer& r, const Viewport& vp, int w, int h) {
   f.normal = r.gNormal().readFloats(4);
   f.surface = r.gSurface().readUints(4);
   return f;
+}
+
+// The frame's visibility against the ray-traced reference at the same G-buffer points.
+inline ErrorMetrics visibilityError(const ReferenceTracer& tracer, const Frame& f,
+                                    const ReferenceOptions& options = {}) {
+  const std::vector<float> ref = tracer.visibility(f.gbuffer(), options);
+  const std::vector<float> vis = f.visibilityChannel();
+  const std::vector<uint8_t> valid = f.covered();
+  return compareVisibility(vis.data(), ref.data(), valid.data(), vis.size());
+}
+inline ErrorMetrics visibilityError(const Scene& scene, const Frame& f, double time = 0.0) {
+  ReferenceOptions options;
+  options.time = time;
+  return visibilityError(ReferenceTracer(scene, time), f, options);
 }
 
 // One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.

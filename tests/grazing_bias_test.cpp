@@ -21,16 +21,7 @@ ErrorMetrics errorOf(test::GlHarness& h, const Scene& scene, const std::string& 
   h.renderer.render(in, {&vp});
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
   const test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
-  ReferenceTracer tracer(scene, 0.0);
-  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
-  const size_t n = static_cast<size_t>(f.width) * f.height;
-  std::vector<float> vis(n);
-  std::vector<uint8_t> valid(n);
-  for (size_t i = 0; i < n; ++i) {
-    vis[i] = f.visibility[2 * i];
-    valid[i] = f.position[4 * i + 3] > 0.5f;
-  }
-  ErrorMetrics m = compareVisibility(vis.data(), ref.data(), valid.data(), n);
+  ErrorMetrics m = test::visibilityError(scene, f);
   m.nonfinite = f.nonfinite();
   return m;
 }

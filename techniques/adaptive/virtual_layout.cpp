@@ -1,4 +1,5 @@
 #include "adaptive/virtual_layout.h"
+#include "part_view.h"
 
 #include "adaptive/page_allocator.h"
 #include "gl/gl_util.h"
@@ -178,21 +179,9 @@ class VirtualState : public LayoutState {
     Texture2D* target = it->second;
     const std::string res = std::string("view.") + kViewNames[view] + ctx.viewportTag;
     graph.add({res, {"gbuffer", pagesRes}, {res}, [ctx, target, view] {
-                 ProgramSpec spec{
-                     std::string("view ") + kViewNames[view],
-                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/virtual.frag"}},
-                     "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n" + ctx.techniquePrelude};
-                 Program& p = ctx.shaders->get(spec);
-                 if (!p.valid()) return;
-                 Framebuffer fbo(std::string("view.") + kViewNames[view]);
-                 fbo.attach({target}, nullptr);
-                 fbo.bind();
-                 glViewport(0, 0, target->width(), target->height());
-                 p.use();
-                 TextureUnits units;
-                 ctx.bindTechnique(p, units);
-                 ctx.bindGBuffer(p, units);
-                 ctx.drawFullscreen();
+                 drawPartView(
+                     ctx, target, "views/virtual.frag",
+                     {.defines = "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n", .withGBuffer = true});
                }});
     graph.requestSink(res);
   }

@@ -1,4 +1,5 @@
 #include "deep/deep_state.h"
+#include "part_view.h"
 
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
@@ -203,22 +204,7 @@ std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   graph.add({fragments, {}, {fragments}, [this, ctx] { fragmentsPass(ctx); }});
   graph.add({deep, {ctx.shadowMap, fragments}, {deep}, [this, ctx] { compressPass(ctx); }});
   if (target) {
-    graph.add({resource, {deep}, {resource}, [ctx, target] {
-                 ProgramSpec spec{
-                     "view deep-nodes",
-                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/deep_nodes.frag"}},
-                     ctx.techniquePrelude};
-                 Program& p = ctx.shaders->get(spec);
-                 if (!p.valid()) return;
-                 Framebuffer fbo("view target");
-                 fbo.attach({target}, nullptr);
-                 fbo.bind();
-                 p.use();
-                 TextureUnits units;
-                 ctx.bindTechnique(p, units);
-                 p.set("u_viewSize", glm::vec2(target->width(), target->height()));
-                 ctx.drawFullscreen();
-               }});
+    graph.add({resource, {deep}, {resource}, [ctx, target] { drawPartView(ctx, target, "views/deep_nodes.frag"); }});
     graph.requestSink(resource);
   }
   return deep;

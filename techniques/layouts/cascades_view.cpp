@@ -1,6 +1,7 @@
 // The `cascades` debug view: which split's map each pixel reads, for teaching where the texel
 // density steps and where the blend bands hide the steps.
 #include "gl/gl_util.h"
+#include "part_view.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "layouts/cascaded.h"
@@ -14,21 +15,7 @@ void addCascadesViewPass(FrameGraph& graph, const PartContext& ctx) {
   Texture2D* target = it->second;
   const std::string res = "view.cascades" + ctx.viewportTag;
   graph.add({res, {"gbuffer"}, {res}, [ctx, target] {
-               ProgramSpec spec{
-                   "view cascades",
-                   {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/cascades.frag"}},
-                   ctx.techniquePrelude};
-               Program& p = ctx.shaders->get(spec);
-               if (!p.valid()) return;
-               Framebuffer fbo("view.cascades");
-               fbo.attach({target}, nullptr);
-               fbo.bind();
-               glViewport(0, 0, target->width(), target->height());
-               p.use();
-               TextureUnits units;
-               ctx.bindTechnique(p, units);
-               ctx.bindGBuffer(p, units);
-               ctx.drawFullscreen();
+               drawPartView(ctx, target, "views/cascades.frag", {.withGBuffer = true});
              }});
   graph.requestSink(res);
 }

@@ -1,4 +1,5 @@
 #include "prefiltered/moment_views.h"
+#include "part_view.h"
 
 #include "gl/gl_util.h"
 #include "gl/texture_units.h"
@@ -26,20 +27,7 @@ void addMomentViewPasses(FrameGraph& graph, const PartContext& ctx, const std::s
                           : name == "fourier" ? "#define SL_VIEW_SIGNED\n"
                                               : "";
     graph.add({resource, {moments}, {resource}, [ctx, target, defines] {
-                 ProgramSpec spec{
-                     "view moments " + defines,
-                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "views/moments.frag"}},
-                     defines + ctx.techniquePrelude};
-                 Program& p = ctx.shaders->get(spec);
-                 if (!p.valid()) return;
-                 Framebuffer fbo("view target");
-                 fbo.attach({target}, nullptr);
-                 fbo.bind();
-                 p.use();
-                 TextureUnits units;
-                 ctx.bindTechnique(p, units);
-                 p.set("u_viewSize", glm::vec2(target->width(), target->height()));
-                 ctx.drawFullscreen();
+                 drawPartView(ctx, target, "views/moments.frag", {.defines = defines});
                }});
     graph.requestSink(resource);
   }

@@ -13,18 +13,7 @@
 namespace sl {
 namespace {
 
-double wrongPct(const Scene& scene, const test::Frame& f) {
-  ReferenceTracer tracer(scene, 0.0);
-  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
-  const size_t n = static_cast<size_t>(f.width) * f.height;
-  std::vector<float> vis(n);
-  std::vector<uint8_t> valid(n);
-  for (size_t i = 0; i < n; ++i) {
-    vis[i] = f.visibility[2 * i];
-    valid[i] = f.position[4 * i + 3] > 0.5f;
-  }
-  return compareVisibility(vis.data(), ref.data(), valid.data(), n).wrongPixelPct;
-}
+double wrongPct(const Scene& scene, const test::Frame& f) { return test::visibilityError(scene, f).wrongPixelPct; }
 
 void expectSane(const test::Frame& f, const std::string& what) {
   EXPECT_EQ(f.nonfinite(), 0) << what;

@@ -1,4 +1,5 @@
 #include "reconstruction/silhouette_state.h"
+#include "part_view.h"
 
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
@@ -76,23 +77,7 @@ std::string SilhouetteMapState::addPasses(FrameGraph& graph, const PartContext& 
   if (it != ctx.viewTargets.end() && it->second) {
     Texture2D* target = it->second;
     const std::string res = "view.silhouette-points" + ctx.viewportTag;
-    graph.add({res, {out}, {res}, [ctx, target] {
-                 ProgramSpec spec{"view silhouette points",
-                                  {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
-                                   {GL_FRAGMENT_SHADER, "views/silhouette_points.frag"}},
-                                  ctx.techniquePrelude};
-                 Program& p = ctx.shaders->get(spec);
-                 if (!p.valid()) return;
-                 Framebuffer fbo("view target");
-                 fbo.attach({target}, nullptr);
-                 fbo.bind();
-                 glViewport(0, 0, target->width(), target->height());
-                 p.use();
-                 TextureUnits units;
-                 ctx.bindTechnique(p, units);
-                 p.set("u_viewSize", glm::vec2(target->width(), target->height()));
-                 ctx.drawFullscreen();
-               }});
+    graph.add({res, {out}, {res}, [ctx, target] { drawPartView(ctx, target, "views/silhouette_points.frag"); }});
     graph.requestSink(res);
   }
   return out;

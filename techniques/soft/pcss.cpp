@@ -5,6 +5,7 @@
 // filters with a rotated Poisson disk of that size in the view it tests. Without an area light
 // (light.radius = 0) no search pass is added and the test is a minimum-kernel PCF.
 #include "soft/pcss.h"
+#include "part_view.h"
 
 #include "depth/depth_map_state.h"
 #include "gl/gl_util.h"
@@ -96,19 +97,7 @@ class PcssState : public DepthMapState {
       std::vector<std::string> reads;
       if (!blocker.empty()) reads.push_back(blocker);
       graph.add({resource, reads, {resource}, [ctx, target, defines] {
-                   ProgramSpec spec{"view pcss " + defines,
-                                    {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
-                                     {GL_FRAGMENT_SHADER, "representations/soft/pcss_view.frag"}},
-                                    defines + ctx.techniquePrelude};
-                   Program& p = ctx.shaders->get(spec);
-                   if (!p.valid()) return;
-                   Framebuffer fbo("view target");
-                   fbo.attach({target}, nullptr);
-                   fbo.bind();
-                   p.use();
-                   TextureUnits units;
-                   ctx.bindTechnique(p, units);
-                   ctx.drawFullscreen();
+                   drawPartView(ctx, target, "representations/soft/pcss_view.frag", {.defines = defines});
                  }});
       graph.requestSink(resource);
     }

@@ -35,18 +35,7 @@ Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
   return test::readFrame(h.renderer, vp, w, hgt);
 }
 
-ErrorMetrics compare(const Scene& scene, const Frame& f) {
-  ReferenceTracer tracer(scene, 0.0);
-  const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
-  const size_t n = static_cast<size_t>(f.width) * f.height;
-  std::vector<float> vis(n);
-  std::vector<uint8_t> valid(n);
-  for (size_t i = 0; i < n; ++i) {
-    vis[i] = f.visibility[2 * i];
-    valid[i] = f.position[4 * i + 3] > 0.5f;
-  }
-  return compareVisibility(vis.data(), ref.data(), valid.data(), n);
-}
+ErrorMetrics compare(const Scene& scene, const Frame& f) { return test::visibilityError(scene, f); }
 
 TEST(PcssGl, BlockerSearchPassOnlyUnderAnAreaLight) {
   GlHarness h;

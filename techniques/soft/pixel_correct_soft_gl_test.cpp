@@ -58,17 +58,7 @@ TEST(PixelCorrectSoft, ConvergesBelowPcssOnContact) {
   h.renderer.setScene(scene);
   const int w = 160, hgt = 90;
   ReferenceTracer tracer(scene, 0.0);
-  auto rmse = [&](const Frame& f) {
-    const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
-    const size_t n = static_cast<size_t>(w) * hgt;
-    std::vector<float> vis(n);
-    std::vector<uint8_t> valid(n);
-    for (size_t i = 0; i < n; ++i) {
-      vis[i] = f.visibility[2 * i];
-      valid[i] = f.position[4 * i + 3] > 0.5f;
-    }
-    return compareVisibility(vis.data(), ref.data(), valid.data(), n).rmse;
-  };
+  auto rmse = [&](const Frame& f) { return test::visibilityError(tracer, f).rmse; };
   FrameInput in;
   in.camera = scene.cameras.front();
   in.width = w;

@@ -44,16 +44,12 @@ Judged judge(test::GlHarness& h, const Scene& scene, const std::string& preset, 
   const test::Frame f = test::renderOnce(h, scene, preset, sets, w, hgt);
   ReferenceTracer tracer(scene, 0.0);
   const std::vector<float> ref = tracer.visibility(f.gbuffer(), ReferenceOptions{});
-  const size_t n = static_cast<size_t>(w) * hgt;
-  std::vector<float> vis(n);
-  std::vector<uint8_t> valid(n);
+  const std::vector<float> vis = f.visibilityChannel();
+  const std::vector<uint8_t> valid = f.covered();
   Judged j;
-  for (size_t i = 0; i < n; ++i) {
-    vis[i] = f.visibility[2 * i];
-    valid[i] = f.position[4 * i + 3] > 0.5f;
-    if (!(vis[i] >= 0.0f && vis[i] <= 1.0f)) ++j.outside;  // NaN counts
-  }
-  j.wrongPct = compareVisibility(vis.data(), ref.data(), valid.data(), n).wrongPixelPct;
+  for (float v : vis)
+    if (!(v >= 0.0f && v <= 1.0f)) ++j.outside;  // NaN counts
+  j.wrongPct = compareVisibility(vis.data(), ref.data(), valid.data(), vis.size()).wrongPixelPct;
   for (int y = 2; y < hgt - 2; ++y)
     for (int x = 2; x < w - 2; ++x) {
       bool allDark = true, allLit = true;
