@@ -3,6 +3,7 @@
 #include "gl/texture_units.h"
 #include "prefiltered/moment_views.h"
 #include "render/frame_graph.h"
+#include "scene/scene_effects.h"
 
 #include <cmath>
 
@@ -88,6 +89,7 @@ void MomentMapState::beginShadowLayer(int layer) {
 }
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
+  status_ = ctx.scene ? hardShadowNote(sceneEffects(*ctx.scene)) : "";
   std::string out = ctx.shadowMap;
   if (config_.width > 1 || config_.method != FilterMethod::Blur) {
     out = "moments.filtered" + ctx.viewportTag;

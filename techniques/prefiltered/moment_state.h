@@ -42,6 +42,8 @@ class MomentMapState : public RepresentationState {
   std::vector<std::string> views() const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;
+  // A fixed filter width is no penumbra: in an area-light scene it says it ignores the radius.
+  std::string status() const override { return status_; }
 
   // Runs the filter passes now (blur or mips), as the frame graph's pass does.
   void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
@@ -57,6 +59,7 @@ class MomentMapState : public RepresentationState {
   MomentConfig config_;
   std::vector<float> clear_;
   std::string defines_;
+  std::string status_;
   float logExponent_ = 0.0f;
   GLuint sampler_ = 0;
   Texture2D depth_;
