@@ -105,6 +105,8 @@ class Viewport {
   // GPU texels the parts' targets hold (shadow map, page tables, moments, histories): the
   // memory side of a technique's cost, `shadow_texels` in `render --stats` and the bench.
   long long shadowTexels() const;
+  // The debug views shown this frame (shownViews that exist) and the targets they are drawn into.
+  std::map<std::string, Texture2D*> shownViewTargets();
   // The parts' status lines joined ("" when none has one).
   std::string status() const;
   void setTechnique(Technique t);  // keeps targets, resets history
@@ -176,6 +178,9 @@ class Renderer {
   void bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const;
   PartContext partContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
                           const std::string& prelude);
+  AccumulationContext accumulationContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
+                                          const std::string& prelude, const std::string& shadowMap,
+                                          const ProgramSetup& bindInputs);
   void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                      const FrameInput& in);
   void drawFullscreen();
