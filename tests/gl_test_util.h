@@ -64,6 +64,22 @@ struct Frame {
   }
 };
 
+// A technique from parts (presets fix the layout; these must work under every layout).
+inline Technique compose(const std::string& layout, const std::string& representation, const std::string& accumulation,
+                         const std::vector<std::string>& sets) {
+  Technique t;
+  t.presetId = representation;
+  t.layout = findLayout(layout);
+  t.representation = findRepresentation(representation);
+  t.accumulation = findAccumulation(accumulation);
+  std::vector<ParamDecl> decls = commonParams();
+  for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
+    decls.insert(decls.end(), part.begin(), part.end());
+  t.params = ParamSet(std::move(decls));
+  for (const auto& s : sets) t.params.setAssignment(s);
+  return t;
+}
+
 inline Frame readFrame(const Renderer& r, const Viewport& vp, int w, int h) {
   Frame f;
   f.width = w;

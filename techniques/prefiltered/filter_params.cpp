@@ -3,6 +3,19 @@
 
 namespace sl {
 
+namespace {
+
+ParamDecl viewChannelParam() {
+  return {.key = "view.channel",
+          .type = ParamType::Int,
+          .min = 0,
+          .max = 31,
+          .defaultValue = 0,
+          .help = "moments and fourier views: the stored channel shown (Fourier: 2k-2 = sin, 2k-1 = cos of term k)"};
+}
+
+}  // namespace
+
 std::vector<ParamDecl> filterParams(bool withSat) {
   std::vector<std::string> methods = {"blur", "mipmap"};
   if (withSat) methods.push_back("sat");
@@ -27,14 +40,11 @@ std::vector<ParamDecl> filterParams(bool withSat) {
        .defaultValue = 5,
        .unit = "texels",
        .help = "width of the box the moments are averaged over (1 = bilinear lookups only)"},
-      {.key = "view.channel",
-       .type = ParamType::Int,
-       .min = 0,
-       .max = 31,
-       .defaultValue = 0,
-       .help = "moments and fourier views: the stored channel shown (Fourier: 2k-2 = sin, 2k-1 = cos of term k)"},
+      viewChannelParam(),
   };
 }
+
+std::vector<ParamDecl> softFilterParams() { return {viewChannelParam()}; }
 
 int formatBits(const ParamSet& params) { return params.i("filter.format") == 0 ? 16 : 32; }
 

@@ -27,11 +27,17 @@ struct MomentSpec {
   // images (signed).
   bool hasVariance = false;
   bool fourier = false;
+  // Non-empty: a soft representation of that name (prefiltered/soft_moments.glsl), which sizes
+  // its box per pixel from the area light and so always filters by summed-area table (32-bit),
+  // with no filter.method / filter.width of its own.
+  std::string softName;
 };
 
 // Parameters every pre-filtered representation has (storage format, filter method and width).
 // withSat: summed-area tables are offered (not for ESM, whose log-space average is no sum).
 std::vector<ParamDecl> filterParams(bool withSat);
+// What the soft ones have of those: the channel their debug views show.
+std::vector<ParamDecl> softFilterParams();
 // Bits per stored float of the `filter.format` parameter: 16 or 32.
 int formatBits(const ParamSet& params);
 // The largest exponent c for which exp(c)^2 stays finite in the storage format: what EVSM's

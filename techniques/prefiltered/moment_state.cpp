@@ -6,6 +6,7 @@
 #include "scene/scene_effects.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace sl {
 
@@ -22,6 +23,15 @@ int mipLevels(int size) { return static_cast<int>(std::floor(std::log2(static_ca
 
 }  // namespace
 
+std::string MomentMapState::statusIn(const SceneEffects& fx, const ParamSet& params) const {
+  if (spec_.softName.empty()) return hardShadowNote(fx);
+  if (!fx.areaLight) return spec_.softName + ": point light (radius 0): no blocker estimate, minimum-kernel box";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s: light radius %g x %g", spec_.softName.c_str(), fx.lightRadius,
+                params.get("pcss.light_scale"));
+  return buf;
+}
+
 MomentMapState::~MomentMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
 }
@@ -29,10 +39,11 @@ MomentMapState::~MomentMapState() {
 void MomentMapState::configure(const ParamSet& params) {
   MomentConfig c;
   c.channels = spec_.channels(params);
-  c.method = static_cast<FilterMethod>(params.i("filter.method"));
+  const bool soft = !spec_.softName.empty();
+  c.method = soft ? FilterMethod::Sat : static_cast<FilterMethod>(params.i("filter.method"));
   // Summed-area tables need 32-bit sums whatever the format asked for.
   c.bits = c.method == FilterMethod::Sat ? 32 : formatBits(params);
-  c.width = params.i("filter.width");
+  c.width = soft ? 1 : params.i("filter.width");
   if (c.channels < 1 || c.channels > 32)
     throw ParamError("pre-filtered representation stores " + std::to_string(c.channels) +
                      " floats per texel (1 to 32 fit in 8 targets)");
@@ -89,7 +100,7 @@ void MomentMapState::beginShadowLayer(int layer) {
 }
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
-  status_ = ctx.scene ? hardShadowNote(sceneEffects(*ctx.scene)) : "";
+  status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene), *ctx.params) : "";
   std::string out = ctx.shadowMap;
   if (config_.width > 1 || config_.method != FilterMethod::Blur) {
     out = "moments.filtered" + ctx.viewportTag;

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 #include "prefiltered/moment_spec.h"
+#include "scene/scene_effects.h"
 #include "technique.h"
 
 #include <functional>
@@ -54,6 +55,7 @@ class MomentMapState : public RepresentationState {
 
  private:
   void allocate(int size, int layers);
+  std::string statusIn(const SceneEffects& fx, const ParamSet& params) const;
   void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
   const MomentSpec& spec_;
   MomentConfig config_;

@@ -6,6 +6,7 @@
 // (light.radius = 0) no search pass is added and the test is a minimum-kernel PCF.
 #include "soft/pcss.h"
 #include "part_view.h"
+#include "soft/penumbra_params.h"
 
 #include "depth/depth_map_state.h"
 #include "gl/gl_util.h"
@@ -118,14 +119,8 @@ class PcssRepresentation : public Representation {
   }
   std::string glslModule() const override { return "representations/soft/pcss.glsl"; }
   std::vector<ParamDecl> params() const override {
-    return {
-        {.key = "pcss.light_scale",
-         .type = ParamType::Float,
-         .min = 0,
-         .max = 8,
-         .defaultValue = 1,
-         .unit = "x light.radius",
-         .help = "light size used for search region and penumbra, as a multiple of the scene's light.radius"},
+    std::vector<ParamDecl> decls = penumbraParams();
+    const std::vector<ParamDecl> own = {
         {.key = "pcss.blocker_samples",
          .type = ParamType::Int,
          .min = 4,
@@ -144,14 +139,9 @@ class PcssRepresentation : public Representation {
          .type = ParamType::Bool,
          .defaultValue = 1,
          .help = "rotate both Poisson disks per pixel (noise instead of banding)"},
-        {.key = "pcss.max_radius",
-         .type = ParamType::Float,
-         .min = 1,
-         .max = 128,
-         .defaultValue = 32,
-         .unit = "texels",
-         .help = "largest search region and filter radius (bounds the cost where a light is huge)"},
     };
+    decls.insert(decls.end(), own.begin(), own.end());
+    return decls;
   }
   std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<PcssState>(); }
 };

@@ -4,7 +4,11 @@
 // and includes this file, which samples the filtered moment targets (bilinear, or trilinear at
 // the mip level as wide as filter.width) and gives representationVisibility.
 // SL_MOMENT_TARGETS, SL_MOMENT_FLOAT_BITS and SL_MOMENT_MIPMAP come from MomentMapState.
+#ifdef SL_MOMENT_SOFT
+const float u_filter_width = 1.0;  // soft ones size their boxes per pixel; views read single texels
+#else
 uniform float u_filter_width;
+#endif
 uniform sampler2DArray u_moments0;
 #if SL_MOMENT_TARGETS > 1
 uniform sampler2DArray u_moments1;
@@ -59,14 +63,14 @@ vec4 satAt(sampler2DArray table, vec2 P, vec2 n, float layer) {
   return textureLod(table, vec3((P - 0.5) / n, layer), 0.0);
 }
 
-// Mean over the filter.width box centred on uv: four reads, whatever the width. Corners are
-// clamped to [1, n] texels (the table has no zero row or column), which shrinks boxes touching
-// the map's first row or column by up to a texel.
-vec4 satBox(sampler2DArray table, vec4 offset, vec3 uvLayer) {
+// Mean over the box `width` texels wide centred on uv: four reads, whatever the width. Corners
+// are clamped to [1, n] texels (the table has no zero row or column), which shrinks boxes
+// touching the map's first row or column by up to a texel.
+vec4 satBox(sampler2DArray table, vec4 offset, vec3 uvLayer, float width) {
   vec2 n = vec2(textureSize(table, 0).xy);
   vec2 c = uvLayer.xy * n;
-  vec2 lo = clamp(c - 0.5 * u_filter_width, vec2(1.0), n);
-  vec2 hi = clamp(c + 0.5 * u_filter_width, vec2(1.0), n);
+  vec2 lo = clamp(c - 0.5 * width, vec2(1.0), n);
+  vec2 hi = clamp(c + 0.5 * width, vec2(1.0), n);
   vec4 sum = satAt(table, hi, n, uvLayer.z) - satAt(table, vec2(lo.x, hi.y), n, uvLayer.z) -
              satAt(table, vec2(hi.x, lo.y), n, uvLayer.z) + satAt(table, lo, n, uvLayer.z);
   vec2 extent = hi - lo;
@@ -74,17 +78,19 @@ vec4 satBox(sampler2DArray table, vec4 offset, vec3 uvLayer) {
 }
 #endif
 
-void momentsAt(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) {
+// The moments averaged over a box `width` texels wide (filter.width for the hard
+// representations, a per-pixel width for the soft ones, which always filter by table).
+void momentsInBox(vec3 uvLayer, float width, out vec4 m[SL_MOMENT_TARGETS]) {
 #ifdef SL_MOMENT_MIPMAP
   // The level whose texels are filter.width texels of level 0 wide: every filter method then
   // averages over the same footprint (an explicit level: the visibility code is not in
   // uniform control flow, where screen-space derivatives would be undefined).
-  float lod = log2(max(u_filter_width, 1.0));
+  float lod = log2(max(width, 1.0));
 #else
   float lod = 0.0;
 #endif
 #ifdef SL_MOMENT_SAT
-#define SL_MOMENT_FETCH(table, offset) satBox(table, offset, uvLayer)
+#define SL_MOMENT_FETCH(table, offset) satBox(table, offset, uvLayer, width)
 #else
 #define SL_MOMENT_FETCH(table, offset) textureLod(table, uvLayer, lod)
 #endif
@@ -112,6 +118,11 @@ void momentsAt(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) {
 #endif
 }
 
+void momentsAt(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) { momentsInBox(uvLayer, max(u_filter_width, 1.0), m); }
+
+// The soft representations (prefiltered/soft_moments.glsl) size the box per pixel and define
+// these two themselves.
+#ifndef SL_MOMENT_SOFT
 float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec4 m[SL_MOMENT_TARGETS];
   momentsAt(uvLayer, m);
@@ -125,3 +136,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 // across the kernel, as for PCF (the Gaussian CDF reads a receiver at its own mean depth as
 // half shadowed without it).
 float representationFilterRadius() { return 0.5 * max(u_filter_width, 1.0); }
+#endif

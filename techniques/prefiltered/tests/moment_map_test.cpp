@@ -10,21 +10,7 @@ namespace {
 
 using test::GlHarness;
 
-// A technique from parts (presets fix the layout; these must work under every layout).
-Technique compose(const std::string& layout, const std::string& representation, const std::string& accumulation,
-                  const std::vector<std::string>& sets) {
-  Technique t;
-  t.presetId = representation;
-  t.layout = findLayout(layout);
-  t.representation = findRepresentation(representation);
-  t.accumulation = findAccumulation(accumulation);
-  std::vector<ParamDecl> decls = commonParams();
-  for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
-    decls.insert(decls.end(), part.begin(), part.end());
-  t.params = ParamSet(std::move(decls));
-  for (const auto& s : sets) t.params.setAssignment(s);
-  return t;
-}
+using test::compose;
 
 struct Map {
   std::unique_ptr<RepresentationState> base;
@@ -232,18 +218,23 @@ TEST(MomentMap, BlurDropsNonFiniteTexels) {
 TEST(MomentMap, ClearValueIsTheMomentsOfTheFarPlane) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
+  std::vector<std::pair<std::string, std::string>> cases;
   for (const std::string preset :
        {"vsm", "esm", "evsm2", "evsm4", "convolution", "gaussian", "ewgf", "msm", "msm16", "lvsm"})
-    for (const std::string extra : {"filter.format=float32", "convolution.terms=7"}) {
-      if (extra.rfind("convolution", 0) == 0 && preset != "convolution") continue;
-      Map m = momentMap(preset, {extra}, 8);
-      const std::vector<float> want = m.state->clearValue();
-      const std::vector<float> got = probe.moments(preset, {extra}, 1.0f);
-      ASSERT_EQ(got.size(), want.size()) << preset;
-      for (size_t i = 0; i < got.size(); ++i)
-        if (static_cast<int>(i % 4) < m.state->config().channelsOf(static_cast<int>(i / 4)))
-          EXPECT_NEAR(got[i], want[i], 1e-4f * std::max(1.0f, std::abs(want[i]))) << preset << " channel " << i;
-    }
+    cases.push_back({preset, "filter.format=float32"});
+  cases.push_back({"convolution", "convolution.terms=7"});
+  // The soft ones (always 32-bit summed-area tables): CSM-Z's 4M + 1 channels up to 8 targets.
+  cases.push_back({"vssm", "vssm.bleed=0"});
+  for (const std::string terms : {"1", "4", "7"}) cases.push_back({"convolution-soft", "csmz.terms=" + terms});
+  for (const auto& [preset, extra] : cases) {
+    Map m = momentMap(preset, {extra}, 8);
+    const std::vector<float> want = m.state->clearValue();
+    const std::vector<float> got = probe.moments(preset, {extra}, 1.0f);
+    ASSERT_EQ(got.size(), want.size()) << preset;
+    for (size_t i = 0; i < got.size(); ++i)
+      if (static_cast<int>(i % 4) < m.state->config().channelsOf(static_cast<int>(i / 4)))
+        EXPECT_NEAR(got[i], want[i], 1e-4f * std::max(1.0f, std::abs(want[i]))) << preset << " channel " << i;
+  }
 }
 
 long long outsideUnit(const test::Frame& f) {

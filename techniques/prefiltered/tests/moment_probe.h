@@ -24,14 +24,30 @@ class MomentProbe {
   // Visibility of every case for the technique `preset` with `sets` overrides.
   std::vector<float> visibility(const std::string& preset, const std::vector<std::string>& sets,
                                 const std::vector<MomentCase>& cases) {
+    std::vector<float> rgba = run(preset, sets, cases, "probe_moments.frag"), out;
+    for (size_t i = 0; i < rgba.size(); i += 4) out.push_back(rgba[i]);
+    return out;
+  }
+
+  // A soft representation's representationBlocker of every case: (fraction, depth) pairs.
+  std::vector<std::pair<float, float>> blocker(const std::string& preset, const std::vector<std::string>& sets,
+                                               const std::vector<MomentCase>& cases) {
+    std::vector<float> rgba = run(preset, sets, cases, "probe_blocker.frag");
+    std::vector<std::pair<float, float>> out;
+    for (size_t i = 0; i < rgba.size(); i += 4) out.emplace_back(rgba[i], rgba[i + 1]);
+    return out;
+  }
+
+ private:
+  std::vector<float> run(const std::string& preset, const std::vector<std::string>& sets,
+                         const std::vector<MomentCase>& cases, const std::string& fragment) {
     Technique t = makeTechnique(preset, sets);
     auto state = t.representation->createState();
     state->configure(t.params);
     const std::string prelude = state->defines() + "#include \"" + t.representation->glslModule() + "\"\n";
-    Program& p =
-        h_.shaders.get({"moment probe " + preset,
-                        {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_moments.frag"}},
-                        prelude});
+    Program& p = h_.shaders.get({"moment probe " + fragment + " " + preset,
+                                 {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, fragment}},
+                                 prelude});
     EXPECT_TRUE(p.valid()) << p.error();
     if (!p.valid()) return {};
     const int w = static_cast<int>(cases.size());
@@ -48,11 +64,10 @@ class MomentProbe {
       units.bind(p, "u_cases", input.id());
       drawPoint();
     }
-    std::vector<float> rgba = target.readFloats(4), out;
-    for (size_t i = 0; i < rgba.size(); i += 4) out.push_back(rgba[i]);
-    return out;
+    return target.readFloats(4);
   }
 
+ public:
   // representationMoments(z) of every target, 4 floats each.
   std::vector<float> moments(const std::string& preset, const std::vector<std::string>& sets, float z) {
     Technique t = makeTechnique(preset, sets);
@@ -90,7 +105,8 @@ void main() {
 )";
   }
 
-  static std::string probeSource() {
+  // result: what the probe writes from the filtered moments m of case c.
+  static std::string probeSource(const std::string& result = "vec4(representationFromMoments(m, c.w), 0.0, 0.0, 1.0)") {
     return R"(// Probe of a pre-filtered representation (techniques/prefiltered/tests/moment_probe.h).
 uniform sampler2D u_cases;
 layout(location = 0) out vec4 o_result;
@@ -120,7 +136,8 @@ void main() {
 #endif
     m[t] = quantize(m[t]);
   }
-  o_result = vec4(representationFromMoments(m, c.w), 0.0, 0.0, 1.0);
+  o_result = )" +
+           result + R"(;
 }
 )";
   }
@@ -145,6 +162,8 @@ inline std::string probeShaderDir() {
   const std::string dir = copyShaders(std::string("moment_probe_") + (info ? info->name() : "none"));
   std::ofstream(std::filesystem::path(dir) / "probe_moments.frag") << MomentProbe::probeSource();
   std::ofstream(std::filesystem::path(dir) / "probe_write.frag") << MomentProbe::writeSource();
+  std::ofstream(std::filesystem::path(dir) / "probe_blocker.frag")
+      << MomentProbe::probeSource("vec4(representationBlocker(m, c.w), 0.0, 1.0)");
   // The filtered lookup (momentsAt) at every texel centre of layer 0: target 0.
   std::ofstream(std::filesystem::path(dir) / "probe_lookup.frag") << R"(uniform vec2 u_probeSize;
 layout(location = 0) out vec4 o_result;

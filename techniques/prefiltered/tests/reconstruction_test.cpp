@@ -73,6 +73,59 @@ TEST(PrefilteredReconstruction, FiniteAndWithinUnitIntervalInTheHardCases) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The soft ones' hard reconstruction and blocker estimate over the same cases (their moments are
+// always 32-bit sums; CSM-Z for every number of terms its 8 targets hold).
+TEST(PrefilteredReconstruction, SoftFiniteAndWithinUnitIntervalInTheHardCases) {
+  test::GlHarness h(test::probeShaderDir());
+  test::MomentProbe probe(h);
+  const std::vector<MomentCase> cases = hardCases();
+  std::vector<std::pair<std::string, std::string>> runs = {{"vssm", "vssm.bleed=0"}, {"vssm", "vssm.bleed=0.5"}};
+  for (int m = 1; m <= 7; ++m) runs.push_back({"convolution-soft", "csmz.terms=" + std::to_string(m)});
+  for (const auto& [preset, set] : runs) {
+    expectFiniteUnit(probe.visibility(preset, {set}, cases), cases, preset + " " + set);
+    const auto b = probe.blocker(preset, {set}, cases);
+    ASSERT_EQ(b.size(), cases.size());
+    int bad = 0;
+    for (size_t i = 0; i < b.size(); ++i) {
+      if (std::isfinite(b[i].first) && std::isfinite(b[i].second) && b[i].first >= 0.0f && b[i].first <= 1.0f) continue;
+      if (++bad <= 3)
+        ADD_FAILURE() << preset << " " << set << ": blocker (" << b[i].first << ", " << b[i].second << ") for z1 "
+                      << cases[i].z1 << " z2 " << cases[i].z2 << " fraction " << cases[i].fraction << " receiver "
+                      << cases[i].receiver;
+    }
+    EXPECT_EQ(bad, 0) << preset << " " << set;
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// One planar blocker at depth a over a fraction p of the search box, the rest the planar receiver
+// at depth b: Yang et al.'s estimate is exact; CSM-Z with its receiver weight taken out has the
+// fraction within 0.04 (it only decides whether anything blocks) and the depth within
+// 0.015 of the blocker's depth at 4 terms (the uncorrected ratio reads 0.32 for a = 0.2, b = 0.7).
+TEST(PrefilteredReconstruction, SoftBlockerDepthOfOnePlanarBlockerOverAPlanarReceiver) {
+  test::GlHarness h(test::probeShaderDir());
+  test::MomentProbe probe(h);
+  std::vector<MomentCase> cases;
+  for (float a : {0.1f, 0.2f, 0.3f})
+    for (float b : {0.7f, 0.9f})
+      for (float p : {0.25f, 0.5f, 0.75f}) cases.push_back({a, b, p, b});
+  const auto vssm = probe.blocker("vssm", {"vssm.min_variance=0"}, cases);
+  const auto csmz = probe.blocker("convolution-soft", {"csmz.terms=4", "convolution.offset=0.04"}, cases);
+  ASSERT_EQ(vssm.size(), cases.size());
+  ASSERT_EQ(csmz.size(), cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const MomentCase& c = cases[i];
+    EXPECT_NEAR(vssm[i].first, c.fraction, 1e-3f) << "vssm blocker " << c.z1 << " receiver " << c.z2;
+    EXPECT_NEAR(vssm[i].second, c.z1, 1e-3f) << "vssm blocker " << c.z1 << " receiver " << c.z2;
+    EXPECT_NEAR(csmz[i].first, c.fraction, 0.04f) << "csm-z blocker " << c.z1 << " receiver " << c.z2;
+    EXPECT_NEAR(csmz[i].second, c.z1, 0.015f) << "csm-z blocker " << c.z1 << " receiver " << c.z2;
+  }
+  // Nothing nearer than the receiver: no blocker, whatever the receiver's own depth.
+  const std::vector<MomentCase> lit = {{0.5f, 0.5f, 1.0f, 0.5f}, {0.9f, 0.3f, 0.5f, 0.3f}};
+  for (const auto& r : {probe.blocker("vssm", {}, lit), probe.blocker("convolution-soft", {}, lit)})
+    for (const auto& [fraction, depth] : r) EXPECT_LT(fraction, 0.02f);
+}
+
 TEST(PrefilteredReconstruction, ExponentsAtAndBeyondWhatTheFormatHolds) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);

@@ -1,0 +1,60 @@
+// Soft shadows from a pre-filtered map, in the steps of PCSS (Fernando 2005) with both filters
+// read from the summed-area table (any box width at the cost of four reads per target):
+//   1. the moments over the region that can hold the receiver's blockers (the penumbra model's
+//      search radius, representations/soft/penumbra.glsl);
+//   2. from them, the fraction of that region nearer than the receiver and its mean depth
+//      (representationBlocker: CSM-Z for convolution-soft, Yang et al. 2010's estimate for vssm);
+//   3. the penumbra width from that depth by similar triangles;
+//   4. the moments over the penumbra box, reconstructed (representationSoftVisibility).
+// No search pass and no Poisson taps: the whole search is one box read, which is what these
+// papers are for. The module including this file defines, before it:
+//   vec2  representationBlocker(vec4 m[SL_MOMENT_TARGETS], float receiverDepth)
+//         x: fraction of the box nearer than the receiver, y: their mean stored depth
+//   float representationSoftVisibility(vec4 m[SL_MOMENT_TARGETS], float receiverDepth, float gap)
+//         gap: receiver-to-blocker distance along the light (world units)
+// Without an area light (SL_AREA_LIGHT undefined) the lookup is the hard reconstruction over a
+// box of the minimum kernel.
+#define SL_MOMENT_SOFT
+#include "representations/prefiltered/moment_maps.glsl"
+#include "representations/soft/penumbra.glsl"
+
+// A smaller blocker fraction counts as none: the reconstructions' ringing and rounding leave a
+// few per cent where nothing blocks, and their mean depth is then noise.
+const float kSoftMinBlockerFraction = 0.02;
+
+// x: blocker fraction of the search box, y: their mean stored depth, z: penumbra radius and w:
+// search radius (texels of the view read).
+vec4 softMomentPenumbra(vec3 uvLayer, float receiverDepth) {
+  int view = int(uvLayer.z + 0.5);
+  float dR = pcssLinear(receiverDepth, view);
+  float search = pcssSearchTexels(view, dR);
+  vec4 m[SL_MOMENT_TARGETS];
+  momentsInBox(uvLayer, 2.0 * search, m);
+  vec2 b = representationBlocker(m, receiverDepth);
+  // NaN fails every comparison: a broken estimate reads as no blocker.
+  if (!(b.x >= kSoftMinBlockerFraction)) return vec4(0.0, receiverDepth, kPcssMinRadius, search);
+  float blocker = clamp(b.y, 0.0, receiverDepth);
+  float r = pcssPenumbraWorld(dR, pcssLinear(blocker, view)) / pcssTexelWorld(view, dR);
+  r = isnan(r) ? kPcssMinRadius : clamp(r, kPcssMinRadius, u_pcss_max_radius);
+  return vec4(min(b.x, 1.0), blocker, r, search);
+}
+
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  vec4 m[SL_MOMENT_TARGETS];
+#ifdef SL_AREA_LIGHT
+  vec4 p = softMomentPenumbra(uvLayer, receiverDepth);
+  if (p.x < kSoftMinBlockerFraction) return 1.0;  // nothing in the region that sees the light
+  momentsInBox(uvLayer, 2.0 * p.z, m);
+  int view = int(uvLayer.z + 0.5);
+  float gap = pcssLinear(receiverDepth, view) - pcssLinear(p.y, view);
+  float v = representationSoftVisibility(m, receiverDepth, gap);
+#else
+  momentsInBox(uvLayer, 2.0 * kPcssMinRadius, m);
+  float v = representationFromMoments(m, receiverDepth);
+#endif
+  return isnan(v) ? 1.0 : clamp(v, 0.0, 1.0);
+}
+
+// Moment reconstructions read a planar receiver under its own box as lit (its mean is its
+// depth), so the slope bias needs only the minimum kernel's reach.
+float representationFilterRadius() { return kPcssMinRadius; }
