@@ -8,7 +8,7 @@ bench() { "${SHADOWLAB:-build/shadowlab}" bench "$@"; }
 out=docs/bench/soft
 mkdir -p "$out"
 for scene in contact soft sponza-sun-disk; do
-  bench --scene "$scene" --techniques standard,pcf,poisson,pcss,pcss-cascaded,pixel-correct-soft --camera default \
+  bench --scene "$scene" --techniques standard,pcf,poisson,pcss,pcss-cascaded,pixel-correct-soft,vssm,convolution-soft --camera default \
     --size 320x180 --frames 60 --warmup 0 --json "$out/$scene.json"
   # pixel-correct-soft after 1 and 20 still frames (error of the last measured frame).
   for n in 1 20; do

@@ -1,5 +1,5 @@
 // The pre-filtered soft representations (vssm, convolution-soft) on llvmpipe: finite and in [0,1]
-// from a point light to a huge disk and over cascades, a status naming the light they model, no
+// from a point light to a huge disk, over cascades and under the pixel-correct history, a status naming the light they model, no
 // pass beyond the map's own table, and on `contact` closer to the area-light reference than
 // fixed-width PCF.
 #include "tests/gl_test_util.h"
@@ -38,16 +38,17 @@ TEST(MomentSoftGl, FiniteAndInRangeFromPointToHugeLights) {
     if (c.radius >= 0) scene.light.radius = c.radius;
     h.renderer.setScene(scene);
     for (const char* preset : kSoftMomentPresets)
-      for (const std::string layout : {"focused", "cascaded"}) {
+      for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
+               {"focused", "none"}, {"cascaded", "none"}, {"uniform", "pixel-correct"}}) {
         // The preset's representation and overrides over each layout.
         const Preset* p = findPreset(preset);
         std::vector<std::string> sets = p->overrides;
         sets.push_back("shadowmap.size=128");
-        Viewport vp(test::compose(layout, p->representation, "none", sets));
+        Viewport vp(test::compose(layout, p->representation, accumulation, sets));
         vp.shownViews = vp.availableViews();
         const Frame f = render(h, scene, vp, 64, 40);
         const std::string what =
-            std::string(c.scene) + " radius " + std::to_string(c.radius) + " " + preset + " " + layout;
+            std::string(c.scene) + " radius " + std::to_string(c.radius) + " " + preset + " " + layout + " " + accumulation;
         EXPECT_EQ(f.nonfinite(), 0) << what;
         float lo = 1, hi = 0;
         for (size_t i = 0; i < f.visibility.size(); i += 2) {
