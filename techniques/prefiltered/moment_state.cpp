@@ -135,7 +135,9 @@ std::string MomentMapState::defines() const {
   return d + defines_;
 }
 
-std::vector<std::string> MomentMapState::views() const { return momentViewNames(spec_.hasVariance, spec_.fourier); }
+std::vector<std::string> MomentMapState::views() const {
+  return momentViewNames(spec_.hasVariance, spec_.fourier, !spec_.softName.empty());
+}
 
 long long MomentMapState::texels() const {
   long long perLayer = static_cast<long long>(depth_.width()) * depth_.height();

@@ -1,6 +1,7 @@
 // Debug views of the moment maps, drawn as passes after the filter: `moments` (one stored
 // channel, selected by view.channel), `variance` (sigma^2 per texel on a log colour scale with
-// its key), `fourier` (one basis image of the convolution representation, signed colour map).
+// its key), `fourier` (one basis image of the convolution representation, signed colour map),
+// and for the soft ones `blocker-depth` and `penumbra` (their blocker estimate per pixel).
 #pragma once
 
 #include "technique.h"
@@ -10,7 +11,7 @@ namespace sl {
 class FrameGraph;
 
 // The views this representation can draw (has a variance: two-moment and four-moment ones).
-std::vector<std::string> momentViewNames(bool hasVariance, bool fourier);
+std::vector<std::string> momentViewNames(bool hasVariance, bool fourier, bool soft);
 // Adds a pass for each of `names` that the viewport shows, reading `moments`.
 void addMomentViewPasses(FrameGraph& graph, const PartContext& ctx, const std::string& moments,
                          const std::vector<std::string>& names);

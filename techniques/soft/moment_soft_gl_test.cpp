@@ -1,7 +1,6 @@
 // The pre-filtered soft representations (vssm, convolution-soft) on llvmpipe: finite and in [0,1]
-// from a point light to a huge disk, over cascades and under the pixel-correct history, a status naming the light they model, no
-// pass beyond the map's own table, and on `contact` closer to the area-light reference than
-// fixed-width PCF.
+// from a point light to a huge disk, over cascades and under the pixel-correct history, a status naming the light they
+// model, no pass beyond the map's own table, and on `contact` closer to the area-light reference than fixed-width PCF.
 #include "tests/gl_test_util.h"
 
 #include <algorithm>
@@ -47,8 +46,8 @@ TEST(MomentSoftGl, FiniteAndInRangeFromPointToHugeLights) {
         Viewport vp(test::compose(layout, p->representation, accumulation, sets));
         vp.shownViews = vp.availableViews();
         const Frame f = render(h, scene, vp, 64, 40);
-        const std::string what =
-            std::string(c.scene) + " radius " + std::to_string(c.radius) + " " + preset + " " + layout + " " + accumulation;
+        const std::string what = std::string(c.scene) + " radius " + std::to_string(c.radius) + " " + preset + " " +
+                                 layout + " " + accumulation;
         EXPECT_EQ(f.nonfinite(), 0) << what;
         float lo = 1, hi = 0;
         for (size_t i = 0; i < f.visibility.size(); i += 2) {
@@ -82,6 +81,45 @@ TEST(MomentSoftGl, StatusNamesTheLightAndTheTableIsTheOnlyExtraPass) {
     EXPECT_EQ(vp.representation->status(),
               std::string(preset) + ": point light (radius 0): no blocker estimate, minimum-kernel box");
   }
+}
+
+// The `penumbra` view shows where each soft technique found blockers (coloured) and where not
+// (black: lit; grey: not searched). On `contact` the three estimates (pcss's taps, vssm's
+// moments, CSM-Z's basis) find blockers over about the same pixels: the shadow of the pole.
+TEST(MomentSoftGl, PenumbraViewsFindTheBlockersPcssFinds) {
+  GlHarness h;
+  const Scene scene = loadScene("contact", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  auto found = [&](const char* preset) {
+    Viewport vp(makeTechnique(preset, {"shadowmap.size=512"}));
+    vp.shownViews = {"penumbra", "blocker-depth"};
+    render(h, scene, vp, 160, 90);
+    const std::vector<unsigned char> px = vp.viewTexture("penumbra")->readRgba8();
+    std::vector<bool> mask;
+    for (size_t i = 0; i < px.size(); i += 4) {
+      const int r = px[i], g = px[i + 1], b = px[i + 2];
+      const bool black = r < 8 && g < 8 && b < 8,
+                 grey = std::abs(r - 64) < 4 && std::abs(g - 64) < 4 && std::abs(b - 64) < 4;
+      mask.push_back(!black && !grey);
+    }
+    return mask;
+  };
+  const std::vector<bool> pcss = found("pcss");
+  const int pcssCount = static_cast<int>(std::count(pcss.begin(), pcss.end(), true));
+  ASSERT_GT(pcssCount, 100);
+  for (const char* preset : kSoftMomentPresets) {
+    const std::vector<bool> other = found(preset);
+    ASSERT_EQ(other.size(), pcss.size());
+    int both = 0, either = 0;
+    for (size_t i = 0; i < pcss.size(); ++i) {
+      both += pcss[i] && other[i];
+      either += pcss[i] || other[i];
+    }
+    // Intersection over union of the two blocker masks.
+    EXPECT_GT(double(both) / either, 0.6)
+        << preset << ": " << both << " of " << either << " (pcss " << pcssCount << ")";
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
 // The aim the soft family shares: at most half of fixed-width PCF's rmse against the area-light
