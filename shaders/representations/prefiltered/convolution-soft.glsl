@@ -26,7 +26,7 @@ float representationFromMoments(vec4 m[SL_MOMENT_TARGETS], float receiverDepth) 
 
 // CSM-Z: E[(1 - f) u] / E[1 - f] / 0.9 is the blockers' mean depth, with
 // E[(1 - f) u] = E[u] / 2 - (the series over the basis-times-u channels). The truncated series
-// also gives the receiver's own (lit) texels a weight w = 1 - f(offset), 0.2 to 0.4 at few terms,
+// also gives the receiver's own (lit) texels a weight w = 1 - f(offset), 0.3 to 0.45 at four terms,
 // which pulls that mean toward the receiver and makes every lit pixel find "blockers". Beyond the
 // paper: that weight is known (the series at the offset), so the blocked fraction is
 // a = (E[1 - f] - w) / (1 - w) and the lit share's part, (1 - a) w u_receiver, is taken out of the
