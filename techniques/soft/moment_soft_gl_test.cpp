@@ -1,7 +1,7 @@
 // The pre-filtered soft representations (vssm, convolution-soft) on llvmpipe: finite and in [0,1]
 // from a point light to a huge disk, over cascades and under the pixel-correct history, a status naming the light they
 // model, no pass beyond the map's own table, and on `contact` closer to the area-light reference than fixed-width PCF.
-#include "tests/gl_test_util.h"
+#include "soft/soft_gl_test_util.h"
 
 #include <algorithm>
 
@@ -12,29 +12,15 @@ using test::Frame;
 using test::GlHarness;
 
 Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = w;
-  in.height = hgt;
-  in.cut = true;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return test::readFrame(h.renderer, vp, w, hgt);
+  return test::renderSoft(h, scene, vp, w, hgt);
 }
 
 const char* kSoftMomentPresets[] = {"vssm", "convolution-soft"};
 
 TEST(MomentSoftGl, FiniteAndInRangeFromPointToHugeLights) {
   GlHarness h;
-  struct Case {
-    const char* scene;
-    float radius;  // < 0: the scene's own
-  };
-  const Case cases[] = {{"basic", -1},      {"soft", -1},        {"contact", -1},     {"soft", 5.0f},
-                        {"contact", 1e-6f}, {"spotlight", 0.4f}, {"spotlight", 50.0f}};
-  for (const Case& c : cases) {
-    Scene scene = loadScene(c.scene, defaultAssetsDir());
-    if (c.radius >= 0) scene.light.radius = c.radius;
+  for (const test::LightCase& c : test::softLightCases()) {
+    const Scene scene = test::loadLightCase(c);
     h.renderer.setScene(scene);
     for (const char* preset : kSoftMomentPresets)
       for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
@@ -45,20 +31,9 @@ TEST(MomentSoftGl, FiniteAndInRangeFromPointToHugeLights) {
         sets.push_back("shadowmap.size=128");
         Viewport vp(test::compose(layout, p->representation, accumulation, sets));
         vp.shownViews = vp.availableViews();
-        const Frame f = render(h, scene, vp, 64, 40);
-        const std::string what = std::string(c.scene) + " radius " + std::to_string(c.radius) + " " + preset + " " +
-                                 layout + " " + accumulation;
-        EXPECT_EQ(f.nonfinite(), 0) << what;
-        float lo = 1, hi = 0;
-        for (size_t i = 0; i < f.visibility.size(); i += 2) {
-          lo = std::min(lo, f.visibility[i]);
-          hi = std::max(hi, f.visibility[i]);
-        }
-        EXPECT_GE(lo, 0.0f) << what;
-        EXPECT_LE(hi, 1.0f) << what;
-        // Every scene here has a shadow in view and lit ground.
-        EXPECT_LT(lo, 0.5f) << what;
-        EXPECT_GT(hi, 0.5f) << what;
+        test::expectFiniteShadowAndLight(render(h, scene, vp, 64, 40), std::string(c.scene) + " radius " +
+                                                                           std::to_string(c.radius) + " " + preset +
+                                                                           " " + layout + " " + accumulation);
       }
   }
   EXPECT_EQ(glDebugErrorCount(), 0);

@@ -5,7 +5,7 @@
 #include "metrics/metrics.h"
 #include "reference/reference.h"
 #include "scene/scene_effects.h"
-#include "tests/gl_test_util.h"
+#include "soft/soft_gl_test_util.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -25,14 +25,7 @@ std::vector<std::string> passNames(const Renderer& r) {
 }
 
 Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = w;
-  in.height = hgt;
-  in.cut = true;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return test::readFrame(h.renderer, vp, w, hgt);
+  return test::renderSoft(h, scene, vp, w, hgt);
 }
 
 ErrorMetrics compare(const Scene& scene, const Frame& f) { return test::visibilityError(scene, f); }
@@ -89,32 +82,16 @@ TEST(PcssGl, HardTechniquesSayTheyIgnoreTheRadius) {
 
 TEST(PcssGl, FiniteAndInRangeFromPointToHugeLights) {
   GlHarness h;
-  struct Case {
-    const char* scene;
-    float radius;  // < 0: the scene's own
-  };
-  const Case cases[] = {{"basic", -1},      {"soft", -1},        {"contact", -1},     {"soft", 5.0f},
-                        {"contact", 1e-6f}, {"spotlight", 0.4f}, {"spotlight", 50.0f}};
-  for (const Case& c : cases) {
-    Scene scene = loadScene(c.scene, defaultAssetsDir());
-    if (c.radius >= 0) scene.light.radius = c.radius;
+  for (const test::LightCase& c : test::softLightCases()) {
+    const Scene scene = test::loadLightCase(c);
     h.renderer.setScene(scene);
     for (const char* preset : {"pcss", "pcss-cascaded"}) {
       for (const char* rotate : {"pcss.rotate=on", "pcss.rotate=off"}) {
         Viewport vp(makeTechnique(preset, {"shadowmap.size=256", rotate}));
         vp.shownViews = vp.availableViews();
-        const Frame f = render(h, scene, vp, 64, 40);
-        EXPECT_EQ(f.nonfinite(), 0) << c.scene << " " << c.radius << " " << preset;
-        float lo = 1, hi = 0;
-        for (size_t i = 0; i < f.visibility.size(); i += 2) {
-          lo = std::min(lo, f.visibility[i]);
-          hi = std::max(hi, f.visibility[i]);
-        }
-        EXPECT_GE(lo, 0.0f) << c.scene << " " << preset;
-        EXPECT_LE(hi, 1.0f) << c.scene << " " << preset;
-        // Every scene here has a shadow in view and lit ground.
-        EXPECT_LT(lo, 0.5f) << c.scene << " " << c.radius << " " << preset;
-        EXPECT_GT(hi, 0.5f) << c.scene << " " << c.radius << " " << preset;
+        test::expectFiniteShadowAndLight(
+            render(h, scene, vp, 64, 40),
+            std::string(c.scene) + " " + std::to_string(c.radius) + " " + preset + " " + rotate);
       }
     }
   }
