@@ -35,11 +35,13 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
   echo "== AddressSanitizer + UBSan build (build-asan/) =="
   asan=0
   if cmake --preset asan >/dev/null && cmake --build --preset asan -j"$(nproc)"; then
-    # The preset sets LP_NUM_THREADS=0: llvmpipe rasterizes in the calling thread. With its worker
-    # threads alive at exit, LeakSanitizer's own thread tracer crashed ("Tracer caught signal 11",
-    # no leak reported) in one or two GL tests or explorer runs of most suite runs, a different
-    # one each time. Rerun at -j2, the two it hit last crashed it in 3 of 3 runs with the
-    # threads and in 0 of 4 without them.
+    # The preset sets LP_NUM_THREADS=0 and MESA_SHADER_CACHE_DISABLE=true: llvmpipe rasterizes
+    # in the calling thread and no shader-cache thread starts. With either kind of Mesa thread
+    # alive at exit, LeakSanitizer's own thread tracer crashed ("Tracer caught signal 11", no
+    # leak reported) in one or two GL tests or explorer runs of most suite runs, a different one
+    # each time. Measured on the tests it hit: DeepGl.TexelCurveFollowsTheReference crashed it in
+    # 4 of 4 runs without rasterizer threads but with the cache thread, 0 of 4 without both; two
+    # others in 3 of 3 runs with rasterizer threads, 0 of 4 without.
     ctest --preset asan "$@" 2>&1 | tee "$logs/asan.txt" || asan=$?
   else
     echo "asan: configure or build failed" | tee "$logs/asan.txt"
