@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loaders with libFuzzer: scripts/fuzz.sh [SECONDS per target, default 30].
-# Builds fuzz/ with clang, ASan and UBSan into build-fuzz/ (-DSHADOWLAB_FUZZ=ON: only the scene
-# module), then runs each target for SECONDS from a corpus of the repository's scenes, the real
+# Fuzzes the scene and tour loaders with libFuzzer: scripts/fuzz.sh [SECONDS per target, default 30].
+# Builds fuzz/ with clang, ASan and UBSan into build-fuzz/ (-DSHADOWLAB_FUZZ=ON: the
+# loaders), then runs each target for SECONDS from a corpus of the repository's scenes, the real
 # glTF files under $SHADOWLAB_SHARED/scenes-real (../shared by default, when present) and
 # tests/fuzz-regressions/. A crash, sanitizer report, leak, or an input slower than 10 s fails;
 # the input is kept under build-fuzz/artifacts/ (add it to tests/fuzz-regressions/<target>/ and a
@@ -20,8 +20,7 @@ cmake --build build-fuzz -j2
 
 shared="${SHADOWLAB_SHARED:-../shared}/scenes-real"
 mkdir -p build-fuzz/artifacts
-# target:extension of its seeds in the repository; the tour target goes here too (fuzz/CMakeLists.txt).
-TARGETS="scene_json_fuzz gltf_fuzz"
+TARGETS="scene_json_fuzz gltf_fuzz tour_fuzz"
 failed=""
 for target in $TARGETS; do
   corpus="build-fuzz/corpus/$target"
@@ -29,6 +28,7 @@ for target in $TARGETS; do
   seeds=()
   case "$target" in
     scene_json_fuzz) cp assets/scenes/*.json "$corpus"/ ;;
+    tour_fuzz) cp tours/*.json "$corpus"/ ;;
     gltf_fuzz)
       if [ -d "$shared" ]; then
         for f in "$shared"/*/*.gltf; do [ -f "$f" ] && cp "$f" "$corpus"/; done
