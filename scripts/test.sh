@@ -41,8 +41,13 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
     # leak reported) in one or two GL tests or explorer runs of most suite runs, a different one
     # each time. Measured on the tests it hit: DeepGl.TexelCurveFollowsTheReference crashed it in
     # 4 of 4 runs without rasterizer threads but with the cache thread, 0 of 4 without both; two
-    # others in 3 of 3 runs with rasterizer threads, 0 of 4 without.
+    # others in 3 of 3 runs with rasterizer threads, 0 of 4 without. It still strikes
+    # ReferenceIndependentReal.EngineAgreesWithTheGridCaster every time (Embree's threads, it
+    # seems; cause not found), hence scripts/asan-tracer-check.py below.
     ctest --preset asan "$@" 2>&1 | tee "$logs/asan.txt" || asan=$?
+    # Where every failure is a test that passed and then crashed LeakSanitizer's tracer (no
+    # report of any sanitizer), the run counts as passed and says so for each such test.
+    if [ "$asan" != 0 ] && scripts/asan-tracer-check.py build-asan | tee "$logs/asan-tracer.txt"; then asan=0; fi
   else
     echo "asan: configure or build failed" | tee "$logs/asan.txt"
     asan=1
@@ -59,6 +64,7 @@ if [ "$asan" = skipped ]; then
 else
   summary "$logs/asan.txt"
   grep -q 'tests passed, ' "$logs/asan.txt" || cat "$logs/asan.txt"
+  [ ! -s "$logs/asan-tracer.txt" ] || cat "$logs/asan-tracer.txt"
 fi
 echo "== libFuzzer (build-fuzz/) =="
 if [ "$fuzz" = skipped ]; then echo "skipped (SHADOWLAB_SKIP_FUZZ=1)"; else tail -n 1 "$logs/fuzz.txt"; fi
