@@ -31,6 +31,7 @@ struct MomentSpec {
   // its box per pixel from the area light and so always filters by summed-area table (32-bit),
   // with no filter.method / filter.width of its own.
   std::string softName;
+  bool soft() const { return !softName.empty(); }
 };
 
 // Parameters every pre-filtered representation has (storage format, filter method and width).

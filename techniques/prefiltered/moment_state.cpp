@@ -4,9 +4,9 @@
 #include "prefiltered/moment_views.h"
 #include "render/frame_graph.h"
 #include "scene/scene_effects.h"
+#include "soft/penumbra_params.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace sl {
 
@@ -24,12 +24,9 @@ int mipLevels(int size) { return static_cast<int>(std::floor(std::log2(static_ca
 }  // namespace
 
 std::string MomentMapState::statusIn(const SceneEffects& fx, const ParamSet& params) const {
-  if (spec_.softName.empty()) return hardShadowNote(fx);
+  if (!spec_.soft()) return hardShadowNote(fx);
   if (!fx.areaLight) return spec_.softName + ": point light (radius 0): no blocker estimate, minimum-kernel box";
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%s: light radius %g x %g", spec_.softName.c_str(), fx.lightRadius,
-                params.get("pcss.light_scale"));
-  return buf;
+  return softLightStatus(spec_.softName, fx, params);
 }
 
 MomentMapState::~MomentMapState() {
@@ -39,7 +36,7 @@ MomentMapState::~MomentMapState() {
 void MomentMapState::configure(const ParamSet& params) {
   MomentConfig c;
   c.channels = spec_.channels(params);
-  const bool soft = !spec_.softName.empty();
+  const bool soft = spec_.soft();
   c.method = soft ? FilterMethod::Sat : static_cast<FilterMethod>(params.i("filter.method"));
   // Summed-area tables need 32-bit sums whatever the format asked for.
   c.bits = c.method == FilterMethod::Sat ? 32 : formatBits(params);
@@ -136,7 +133,7 @@ std::string MomentMapState::defines() const {
 }
 
 std::vector<std::string> MomentMapState::views() const {
-  return momentViewNames(spec_.hasVariance, spec_.fourier, !spec_.softName.empty());
+  return momentViewNames(spec_.hasVariance, spec_.fourier, spec_.soft());
 }
 
 long long MomentMapState::texels() const {

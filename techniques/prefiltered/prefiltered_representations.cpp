@@ -22,7 +22,7 @@ class PrefilteredRepresentation : public Representation {
   PrefilteredRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> own,
                             MomentSpec spec)
       : id_(std::move(id)), help_(std::move(help)), module_(std::move(module)), spec_(std::move(spec)) {
-    if (spec_.softName.empty()) {
+    if (!spec_.soft()) {
       params_ = filterParams(!spec_.logFilter);
     } else {
       params_ = softFilterParams();
@@ -125,18 +125,23 @@ MomentSpec msmSpec() {
   return s;
 }
 
+// sin(c_k u), cos(c_k u) of u = 0.9 z for k = 1..terms: the basis images at depth z
+// (convolution_series.glsl's convolutionBasis), what convolution and CSM-Z store first.
+std::vector<float> convolutionBasisAt(int terms, double z) {
+  std::vector<float> v;
+  const double u = kConvolutionSpan * z;
+  for (int k = 1; k <= terms; ++k) {
+    const double ck = kPi * (2 * k - 1);
+    v.push_back(float(std::sin(ck * u)));
+    v.push_back(float(std::cos(ck * u)));
+  }
+  return v;
+}
+
 MomentSpec convolutionSpec() {
   MomentSpec s;
   s.channels = [](const ParamSet& p) { return 2 * p.i("convolution.terms"); };
-  s.clearValue = [](const ParamSet& p) {
-    std::vector<float> v;
-    for (int k = 1; k <= p.i("convolution.terms"); ++k) {
-      const double ck = kPi * (2 * k - 1);
-      v.push_back(float(std::sin(ck * kConvolutionSpan)));
-      v.push_back(float(std::cos(ck * kConvolutionSpan)));
-    }
-    return v;
-  };
+  s.clearValue = [](const ParamSet& p) { return convolutionBasisAt(p.i("convolution.terms"), 1.0); };
   s.defines = [](const ParamSet& p) {
     return "#define SL_CONVOLUTION_TERMS " + std::to_string(p.i("convolution.terms")) + "\n";
   };
@@ -256,20 +261,13 @@ std::vector<ParamDecl> convolutionSoftParams() {
   return decls;
 }
 
-// CSM-Z's channels at depth z (convolution_soft.glsl): the basis, the basis times u = 0.9 z, u.
+// CSM-Z's channels at depth z (convolution-soft.glsl): the basis, the basis times u = 0.9 z, u.
 std::vector<float> convolutionSoftMoments(int terms, double z) {
-  std::vector<float> basis, weighted;
-  const double u = kConvolutionSpan * z;
-  for (int k = 1; k <= terms; ++k) {
-    const double ck = kPi * (2 * k - 1);
-    basis.push_back(float(std::sin(ck * u)));
-    basis.push_back(float(std::cos(ck * u)));
-    weighted.push_back(float(u * std::sin(ck * u)));
-    weighted.push_back(float(u * std::cos(ck * u)));
-  }
-  basis.insert(basis.end(), weighted.begin(), weighted.end());
-  basis.push_back(float(u));
-  return basis;
+  std::vector<float> channels = convolutionBasisAt(terms, z);
+  const float u = float(kConvolutionSpan * z);
+  for (int c = 0; c < 2 * terms; ++c) channels.push_back(u * channels[static_cast<size_t>(c)]);
+  channels.push_back(u);
+  return channels;
 }
 
 MomentSpec convolutionSoftSpec() {

@@ -103,10 +103,7 @@ TEST(MomentSoftGl, VssmOnContactHalvesPcfError) {
   GlHarness h;
   const Scene scene = loadScene("contact", defaultAssetsDir());
   h.renderer.setScene(scene);
-  auto rmse = [&](const char* preset) {
-    Viewport vp(makeTechnique(preset));
-    return test::visibilityError(scene, render(h, scene, vp, 192, 108)).rmse;
-  };
+  auto rmse = [&](const char* preset) { return test::softRmse(h, scene, preset, 192, 108); };
   const double pcf = rmse("pcf"), vssm = rmse("vssm"), csmz = rmse("convolution-soft");
   EXPECT_GT(pcf, 0.02);
   EXPECT_LT(vssm, 0.5 * pcf) << "vssm " << vssm << " pcf " << pcf;

@@ -14,7 +14,6 @@
 #include "render/frame_graph.h"
 #include "scene/scene_effects.h"
 
-#include <cstdio>
 #include <memory>
 
 namespace sl {
@@ -35,9 +34,7 @@ class PcssState : public DepthMapState {
       addViewPasses(graph, ctx, {});
       return ctx.shadowMap;
     }
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "pcss: light radius %g x %g", fx.lightRadius, ctx.params->get("pcss.light_scale"));
-    status_ = buf;
+    status_ = softLightStatus("pcss", fx, *ctx.params);
     ensureTarget(ctx.width, ctx.height);
     const std::string resource = "pcss.blocker" + ctx.viewportTag;
     // The pass includes the technique's modules; SL_PCSS_SEARCH_PASS keeps the representation

@@ -28,8 +28,6 @@ Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
   return test::renderSoft(h, scene, vp, w, hgt);
 }
 
-ErrorMetrics compare(const Scene& scene, const Frame& f) { return test::visibilityError(scene, f); }
-
 TEST(PcssGl, BlockerSearchPassOnlyUnderAnAreaLight) {
   GlHarness h;
   const Scene soft = loadScene("soft", defaultAssetsDir());
@@ -125,10 +123,7 @@ TEST(PcssGl, ContactPenumbraHalvesPcfError) {
   GlHarness h;
   const Scene scene = loadScene("contact", defaultAssetsDir());
   h.renderer.setScene(scene);
-  auto rmse = [&](const char* preset) {
-    Viewport vp(makeTechnique(preset));
-    return compare(scene, render(h, scene, vp, 192, 108)).rmse;
-  };
+  auto rmse = [&](const char* preset) { return test::softRmse(h, scene, preset, 192, 108); };
   const double pcf = rmse("pcf"), pcss = rmse("pcss"), cascaded = rmse("pcss-cascaded");
   EXPECT_GT(pcf, 0.02);  // the scene does call for soft shadows
   EXPECT_LT(pcss, 0.5 * pcf) << "pcss " << pcss << " pcf " << pcf;

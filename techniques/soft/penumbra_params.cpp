@@ -2,6 +2,8 @@
 // penumbra model uses and the largest region it may search and filter.
 #include "soft/penumbra_params.h"
 
+#include <cstdio>
+
 namespace sl {
 
 std::vector<ParamDecl> penumbraParams() {
@@ -21,6 +23,13 @@ std::vector<ParamDecl> penumbraParams() {
        .unit = "texels",
        .help = "largest search region and filter radius (bounds the cost where a light is huge)"},
   };
+}
+
+std::string softLightStatus(const std::string& name, const SceneEffects& fx, const ParamSet& params) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%s: light radius %g x %g", name.c_str(), fx.lightRadius,
+                params.get("pcss.light_scale"));
+  return buf;
 }
 
 }  // namespace sl

@@ -22,6 +22,12 @@ inline Frame renderSoft(GlHarness& h, const Scene& scene, Viewport& vp, int w, i
   return readFrame(h.renderer, vp, w, hgt);
 }
 
+// rmse against the area-light reference of `preset` at its defaults, from the scene's first camera.
+inline double softRmse(GlHarness& h, const Scene& scene, const std::string& preset, int w, int hgt) {
+  Viewport vp(makeTechnique(preset));
+  return visibilityError(scene, renderSoft(h, scene, vp, w, hgt)).rmse;
+}
+
 struct LightCase {
   const char* scene;
   float radius;  // < 0: the scene's own
