@@ -16,7 +16,8 @@ const char* kUsage =
     "shadowlab - explore, compare and measure shadow-mapping techniques\n"
     "\n"
     "  shadowlab [--scene S] [--technique T] [--set key=value]... [--camera NAME] [--size WxH]\n"
-    "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--light AZ,EL]\n"
+    "            [--compare T2]... [--view NAME]... [--magnifier] [--visibility-plot] [--dpds-plot]\n"
+    "            [--light AZ,EL]\n"
     "            [--enlarge VIEW]... [--ui-scale S] [--show-help] [--settings FILE | --no-settings]\n"
     "            [--save-to DIR] [--save-on-exit]               (captures: window, each viewport, CSV, SVG)\n"
     "            [--soak SECONDS]                               (unattended reliability run: scripts/soak.sh)\n"
@@ -39,7 +40,8 @@ int runExplorerCommand(int argc, char** argv) {
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
                  "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step", "--settings", "--enlarge",
                  "--ui-scale", "--soak", "--save-to"},
-                {"--magnifier", "--visibility-plot", "--presenter", "--no-settings", "--show-help", "--save-on-exit"});
+                {"--magnifier", "--visibility-plot", "--dpds-plot", "--presenter", "--no-settings", "--show-help",
+                 "--save-on-exit"});
   sl::ExplorerOptions o;
   o.scene = args.get("--scene", o.scene);
   o.technique = args.get("--technique", o.technique);
@@ -53,6 +55,7 @@ int runExplorerCommand(int argc, char** argv) {
   o.debugViews = args.all("--view");
   o.magnifier = args.has("--magnifier");
   o.visibilityPlot = args.has("--visibility-plot");
+  o.dpdsPlot = args.has("--dpds-plot");
   o.tour = args.get("--tour");  // its steps replace --scene, --technique and the views
   o.tourStep = args.getInt("--tour-step", 1);
   o.presenter = args.has("--presenter");

@@ -212,3 +212,43 @@ TEST(ExplorerSmoke, ShortSoakRecoversFromABrokenShaderAndReportsMemory) {
   EXPECT_EQ(restored, original) << "the soak left the shader copy broken";
   fs::remove_all(dir);
 }
+
+// Real X key events (xdotool through the XTEST extension) into the real window: the shortcuts
+// act on what a lecturer sees. Each key is a quick tap, shorter than one llvmpipe frame, which
+// ImGui 1.86's key state alone would miss (explorer/shortcuts.h). The program prints what the
+// keys left behind when it ends (Ctrl+Q) and F12 writes the window into --save-to.
+TEST(ExplorerSmoke, RealKeyEventsDriveShortcutsAndTourStages) {
+  if (!onPath("xvfb-run") || !onPath("xdotool"))
+    GTEST_SKIP() << "xvfb-run or xdotool is not on PATH (apt install xvfb xdotool); explorer not run";
+  const std::string dir = testing::TempDir() + "shadowlab-keys-" + std::to_string(getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string log = dir + "/explorer.log";
+  // Step 4 of the pixel-correct tour captures 1, 20, 40 and 60 still frames: PageDown goes from
+  // the first count to the second before it would leave the step.
+  const std::string explorer = shellQuote(SHADOWLAB_BINARY) + " --tour tours/pixel-correct.json --tour-step 4" +
+                               " --size 800x450 --frames 100000 --no-settings --save-to " + shellQuote(dir) + " >" +
+                               shellQuote(log) + " 2>&1 &";
+  const std::string keys =
+      "pid=$!; wid=$(timeout 60 xdotool search --sync --onlyvisible --name 'shadowlab explorer' | head -n1); "
+      "[ -n \"$wid\" ] || { echo 'no explorer window'; kill $pid; exit 1; }; "
+      "xdotool mousemove --window \"$wid\" 600 150; xdotool windowfocus --sync \"$wid\" || true; sleep 2; "
+      "for k in 4 ctrl+equal k p F1 Next F12; do xdotool key \"$k\"; sleep 1; done; "
+      "sleep 1; xdotool key ctrl+q; wait $pid; echo \"explorer exit $?\"";
+  const CommandResult r =
+      runCommand("timeout 240 xvfb-run -a -s '-screen 0 1280x720x24' sh -c " + shellQuote(explorer + " " + keys));
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  sl::test::expectNoSanitizerReport(output, "explorer under xdotool");
+  ASSERT_NE(r.output.find("explorer exit 0"), std::string::npos) << r.output << output;
+  const size_t at = output.find("explorer: state ");
+  ASSERT_NE(at, std::string::npos) << output;
+  const std::string state = output.substr(at, output.find('\n', at) - at);
+  for (const char* expected :
+       {"viewports=4", "ui_scale=1.125", "paused=1", "colour_keys=0", "help=1", "tour_step=4", "tour_frames=20"})
+    EXPECT_NE(state.find(expected), std::string::npos) << expected << " not in: " << state;
+  bool windowShot = false;  // F12: the window (Shift+F12, not pressed, would add one PNG per viewport)
+  for (const auto& e : std::filesystem::directory_iterator(dir)) windowShot |= e.path().extension() == ".png";
+  EXPECT_TRUE(windowShot) << "F12 wrote no window PNG into " << dir;
+  std::filesystem::remove_all(dir);
+}

@@ -1,6 +1,7 @@
 // `shadowlab figure` as a user meets it, and the explorer's tour player applying steps to the
 // window's state (no window needed: the player drives the same state the panels do).
 #include "explorer/explorer_state.h"
+#include "explorer/shortcuts.h"
 #include "explorer/tour_player.h"
 #include "gl_test_util.h"
 #include "sanitizer_report.h"
@@ -123,7 +124,7 @@ TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
   ImGui::DestroyContext();
 }
 
-// The keys a presenter uses, through ImGui's key state as the GLFW backend fills it.
+// The keys a presenter uses, recorded as GLFW's key callback records them (explorer/shortcuts.h).
 TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
   test::GlHarness h;
   ExplorerState state;
@@ -142,15 +143,14 @@ TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
   io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &hgt);
   TourPlayer player;
   ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
-  // One frame with the key down after one with it up: pressed once.
+  // One press recorded before a frame, as a tap between two polls.
   auto press = [&](int key) {
-    ImGui::NewFrame();
-    ImGui::EndFrame();
-    io.KeysDown[key] = true;
+    clearKeyPresses();
+    recordKeyPress(key, 0);
     ImGui::NewFrame();
     player.handleKeys(state, h.renderer);
     ImGui::EndFrame();
-    io.KeysDown[key] = false;
+    clearKeyPresses();
   };
   press(267);  // GLFW_KEY_PAGE_DOWN
   EXPECT_EQ(player.step(), 1u);
@@ -167,6 +167,60 @@ TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
   EXPECT_GT(io.FontGlobalScale, 1.5f);
   press(294);
   EXPECT_FALSE(player.presenter());
+  ImGui::DestroyContext();
+}
+
+// A step with still-frame counts plays like a slide with builds: it freezes at each count in
+// turn before "next" leaves it, and "previous" re-renders an earlier count from a cut.
+TEST(TourPlayer, StepFramesFreezeAtEachCountBeforeTheNextStep) {
+  test::GlHarness h;
+  ExplorerState state;
+  state.assetsDir = defaultAssetsDir();
+  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
+  h.renderer.setScene(*state.scene);
+  const std::string tour = writeTour("frames.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
+    {"title": "b", "viewports": ["pixel-correct"], "frames": [1, 5, 9]}, {"title": "c", "viewports": ["vsm"]}]})");
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  TourPlayer player;
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
+  EXPECT_EQ(state.freezeAtFrame, 0);  // a step of one frame runs live
+  // What the frame loop does: render until frozen, counting frames since the cut.
+  auto runUntilFrozen = [&] {
+    for (int i = 0; i < 50 && !state.frozen; ++i) {
+      countRenderedFrame(state, state.cutPending);
+      state.cutPending = false;
+    }
+  };
+  player.next(state, h.renderer);
+  ASSERT_EQ(player.step(), 1u);
+  EXPECT_EQ(player.stageFrames(), 1);
+  runUntilFrozen();
+  EXPECT_TRUE(state.frozen);
+  EXPECT_EQ(state.framesSinceCut, 1);
+  player.next(state, h.renderer);  // same step, on to 5 frames without a cut
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_FALSE(state.frozen);
+  EXPECT_FALSE(state.cutPending);
+  runUntilFrozen();
+  EXPECT_EQ(state.framesSinceCut, 5);
+  player.next(state, h.renderer);
+  runUntilFrozen();
+  EXPECT_EQ(state.framesSinceCut, 9);
+  EXPECT_EQ(player.stageFrames(), 9);
+  player.previous(state, h.renderer);  // back to 5 frames: from a cut
+  EXPECT_TRUE(state.cutPending);
+  runUntilFrozen();
+  EXPECT_EQ(state.framesSinceCut, 5);
+  player.next(state, h.renderer);
+  runUntilFrozen();
+  player.next(state, h.renderer);  // past the last count: the next step, which runs live
+  EXPECT_EQ(player.step(), 2u);
+  EXPECT_FALSE(state.frozen);
+  EXPECT_EQ(state.freezeAtFrame, 0);
+  player.previous(state, h.renderer);  // back onto the staged step: its first count again
+  EXPECT_EQ(player.step(), 1u);
+  EXPECT_EQ(player.stageFrames(), 1);
   ImGui::DestroyContext();
 }
 

@@ -1,5 +1,5 @@
 // `shadowlab figure`: renders tour steps headless as figures (tour/figure.h), one PNG per step,
-// plus an SVG beside it for a step with a plot (made by `shadowlab plot` on the step's scene).
+// plus an SVG beside it for a step with a plot (the plot drawn under the panels, tour/step_plot.h).
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "gl/gl_util.h"
@@ -21,42 +21,8 @@ const char* kFigureUsage =
     "usage: shadowlab figure --tour T.json (--step N --out F.png | --all --out DIR) [--size WxH]\n"
     "  renders tour steps headless: every viewport and its debug views side by side (a row per\n"
     "  frame count of the step), title and caption burnt in. N counts from 1; --size is one panel\n"
-    "  (default 480x270). --all writes DIR/step-01.png ...; a step with a plot also writes F.svg.\n";
-
-struct PlotJob {
-  std::vector<std::string> args;
-};
-
-// The `shadowlab plot` command line of a step's plot, writing `svg`.
-PlotJob plotJob(const Tour& tour, size_t step, const std::string& svg, int w, int h) {
-  const TourStep& s = tour.steps[step];
-  PlotJob job;
-  job.args = {"shadowlab", "plot"};
-  if (s.plot.kind == TourPlot::Kind::Dpds) job.args.push_back("dpds");
-  job.args.insert(job.args.end(), {"--scene", stepScenePath(tour, step), "--size",
-                                   std::to_string(w) + "x" + std::to_string(h), "--out", svg});
-  if (s.camera.kind == TourCamera::Kind::Scene && !s.camera.name.empty())
-    job.args.insert(job.args.end(), {"--camera", s.camera.name});
-  std::string list;
-  for (const auto& t : s.plot.techniques) list += (list.empty() ? "" : ",") + t;
-  if (!list.empty()) job.args.insert(job.args.end(), {"--techniques", list});
-  // Overrides every viewport shares (a filter width, say) hold for the plotted techniques too.
-  if (s.plot.kind == TourPlot::Kind::Visibility && !s.viewports.empty())
-    for (const auto& o : s.viewports.front().overrides)
-      if (std::all_of(s.viewports.begin(), s.viewports.end(), [&](const TourViewport& v) {
-            return std::find(v.overrides.begin(), v.overrides.end(), o) != v.overrides.end();
-          }))
-        job.args.insert(job.args.end(), {"--set", o});
-  if (s.plot.pixel.x >= 0)
-    job.args.insert(job.args.end(), {"--pixel", std::to_string(s.plot.pixel.x) + "," + std::to_string(s.plot.pixel.y)});
-  return job;
-}
-
-int runPlot(PlotJob& job) {
-  std::vector<char*> argv;
-  for (auto& a : job.args) argv.push_back(a.data());
-  return runPlotCommand(static_cast<int>(argv.size()), argv.data());
-}
+    "  (default 480x270). --all writes DIR/step-01.png ...; a step with a plot draws it under the\n"
+    "  panels and also writes it as F.svg.\n";
 
 }  // namespace
 
@@ -90,7 +56,6 @@ int runFigureCommand(int argc, char** argv) {
       jobs.emplace_back(size_t(n - 1), args.get("--out"));
     }
 
-    std::vector<PlotJob> plots;
     long long nonfinite = 0;
     std::vector<std::string> errors;
     {
@@ -110,16 +75,11 @@ int runFigureCommand(int argc, char** argv) {
         nonfinite += r.nonfinitePixels;
         std::cout << "figure: " << png << " (" << describeStep(tour, step) << ", " << r.panels << " panels"
                   << (tour.steps[step].built() ? "" : ", not built yet") << ")\n";
-        if (tour.steps[step].plot.kind != TourPlot::Kind::None)
-          plots.push_back(plotJob(tour, step, fs::path(png).replace_extension(".svg").string(), options.panelWidth,
-                                  options.panelHeight));
+        if (!r.plot.empty()) writePlotSvg(r.plot, fs::path(png).replace_extension(".svg").string());
       }
       errors = shaders.errors();
     }
     for (const auto& e : errors) std::cerr << e;
-    // After the figures' context is gone: `plot` opens its own.
-    for (auto& p : plots)
-      if (int rc = runPlot(p); rc != 0) return rc;
     if (!errors.empty()) return 3;
     if (nonfinite > 0) {
       std::cerr << "figure: " << nonfinite << " non-finite visibility pixels\n";

@@ -44,7 +44,7 @@ int runPlotDpdsCommand(int argc, char** argv) {
       techniques.push_back(t);
     }
     const auto curves = dpdsCurves(scene, *cam, width, height, techniques);
-    std::ofstream(args.get("--out")) << dpdsSvg(curves, "dp/ds on '" + scene.name + "', camera '" + cam->name + "'");
+    writePlotSvg(dpdsPlot(curves, "dp/ds on '" + scene.name + "', camera '" + cam->name + "'"), args.get("--out"));
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "plot: " << e.what() << "\n";

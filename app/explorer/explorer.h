@@ -23,6 +23,7 @@ struct ExplorerOptions {
   std::vector<std::string> debugViews;                     // debug views shown as thumbnails from the start
   bool magnifier = false;                                  // lens on without holding M
   bool visibilityPlot = false;                             // visibility-vs-depth plot on without holding V
+  bool dpdsPlot = false;                                   // the live dp/ds window open at start
   std::vector<std::string> enlargedViews;                  // per viewport: debug view in the big image ("" = colour)
   std::vector<std::vector<std::string>> compareOverrides;  // "key=value" per compared viewport
   bool setLight = false;                                   // replace the scene's light direction by lightAngles

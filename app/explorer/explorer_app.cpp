@@ -5,6 +5,7 @@
 #include "explorer/error_panel.h"
 #include "explorer/explorer_state.h"
 #include "explorer/magnifier.h"
+#include "explorer/plot_window.h"
 #include "explorer/visibility_plot.h"
 #include "explorer/screenshot.h"
 #include "explorer/session_files.h"
@@ -80,6 +81,7 @@ void setUpImGui(GLFWwindow* window, float uiScale) {
   style.ItemSpacing = ImVec2(8, 5);
   style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.62f, 0.95f, 1.0f);  // timing bars
 
+  installKeyPressRecorder(window);  // first: the backend chains to the callback it finds
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
   applyUiScale(uiScale);  // loads the font (16 px x scale)
@@ -156,6 +158,7 @@ bool renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLay
   try {
     renderer.render(in, shownViewports(state));
     state.cutPending = false;
+    countRenderedFrame(state, in.cut);
     state.renderError.clear();
     return true;
   } catch (const std::exception& e) {
@@ -204,6 +207,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   }
   state.magnifierPinned = state.options.magnifier;
   state.plotPinned = state.options.visibilityPlot;
+  state.showDpdsPlot = state.options.dpdsPlot;
   state.cutPending = true;
   TourPlayer tour;
   if (!state.options.tour.empty() &&
@@ -219,6 +223,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   std::vector<std::string> printedShaderErrors;
   float appliedUiScale = state.uiScale;
   for (int frame = 0;; ++frame) {
+    clearKeyPresses();
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
     const bool lastFrame =
@@ -255,6 +260,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleShortcuts(state);
+    if (state.quitRequested) glfwSetWindowShouldClose(window, GLFW_TRUE);  // seen at the next frame's start
     tour.handleKeys(state, renderer);
     if (soak) soak->beforeFrame(state, renderer, shaders, now);
     if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
@@ -280,6 +286,10 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     const MainAreaResult area = drawMainArea(layout, state);
     state.hoveredViewport = area.hoveredViewport;
     tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
+    tour.drawPlot(ImVec2(panelWidth, 0),
+                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()));
+    drawDpdsWindow(state, layout.renderWidth, layout.renderHeight, ImVec2(panelWidth, 0),
+                   ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
     const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
     if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
       drawMagnifier(area.hoveredImage, io.MousePos);
@@ -319,6 +329,14 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     std::printf("explorer: %zu frames timed, median frame %.1f ms (%.1f fps), window %dx%d, %s\n", frameSeconds.size(),
                 frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
                 glRendererName().c_str());
+    // What the keys and panels left behind, for scripts and the window tests (tests/explorer_keys_test.cpp).
+    std::printf(
+        "explorer: state viewports=%d ui_scale=%.3f paused=%d frozen=%d frames_since_cut=%d colour_keys=%d "
+        "help=%d dpds_plot=%d enlarged=%s tour_step=%zu tour_frames=%d\n",
+        state.viewportCount, state.uiScale, int(state.paused), int(state.frozen), state.framesSinceCut,
+        int(state.showColourKeys), int(state.showHelp), int(state.showDpdsPlot),
+        state.slots.empty() || state.slots[0].enlargedView.empty() ? "-" : state.slots[0].enlargedView.c_str(),
+        tour.active() ? tour.step() + 1 : 0, tour.active() ? tour.stageFrames() : 0);
   }
   if (soak) return soak->finish();
   // In --frames mode a failing renderer must not look like success to scripts and tests.

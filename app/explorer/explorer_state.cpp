@@ -14,6 +14,28 @@ float sceneDiagonal(const Scene& scene) {
   return b.empty() ? 10.0f : glm::length(b.extent());
 }
 
+void countRenderedFrame(ExplorerState& state, bool cut) {
+  state.framesSinceCut = cut ? 1 : state.framesSinceCut + 1;
+  if (state.freezeAtFrame > 0 && state.framesSinceCut >= state.freezeAtFrame) {
+    state.frozen = true;
+    state.freezeAtFrame = 0;
+  }
+}
+
+void runStillFramesTo(ExplorerState& state, int frames) {
+  if (state.cutPending || state.framesSinceCut > frames) {
+    state.cutPending = true;
+    state.framesSinceCut = 0;
+  }
+  if (state.framesSinceCut == frames) {  // already there
+    state.frozen = true;
+    state.freezeAtFrame = 0;
+    return;
+  }
+  state.frozen = false;
+  state.freezeAtFrame = frames;
+}
+
 bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& idOrPath) {
   std::unique_ptr<Scene> loaded;
   try {

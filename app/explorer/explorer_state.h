@@ -40,6 +40,10 @@ struct ExplorerState {
   // step renders exactly one, so a lecturer can watch accumulating techniques converge.
   bool frozen = false;
   bool stepRequested = false;
+  // Still frames rendered since the last cut, and the count at which to freeze (0 = none): a
+  // tour step's "frames" [1, 20, 40, 60] stops at each count in turn.
+  int framesSinceCut = 0;
+  int freezeAtFrame = 0;
 
   // Camera. `cutPending` tells the renderer that history from earlier frames is invalid.
   FlyCamera camera;
@@ -57,6 +61,7 @@ struct ExplorerState {
   // Tools and status.
   bool magnifierPinned = false;         // checkbox; holding M shows it too
   bool plotPinned = false;              // checkbox; holding V shows the visibility plot too
+  bool showDpdsPlot = false;            // the live dp/ds window (explorer/plot_window.h)
   bool screenshotRequested = false;     // the whole window, UI included
   bool viewportShotsRequested = false;  // each viewport's image alone, no UI
   std::string screenshotDir;            // where screenshots and exports go (see exportDir)
@@ -65,6 +70,7 @@ struct ExplorerState {
   // Lecture settings: UI size (fonts rebuilt at 16 px x uiScale), help window, linked parameters.
   float uiScale = 1.0f;
   bool showHelp = false;
+  bool quitRequested = false;          // Ctrl+Q: the loop closes the window after this frame
   bool showColourKeys = true;          // each heat-map view's key over its image (K toggles)
   bool linkAllParams = false;          // every parameter edit goes to every viewport declaring it
   std::set<std::string> linkedParams;  // keys linked one by one (the chain button beside a widget)
@@ -76,6 +82,13 @@ struct ExplorerState {
   // Accuracy panel and `error` view (owned by the frame loop; null outside it).
   ErrorPanel* errorPanel = nullptr;
 };
+
+// After a frame was rendered: counts it (a cut restarts the count at 1) and freezes when the
+// count reaches freezeAtFrame.
+void countRenderedFrame(ExplorerState& state, bool cut);
+// Renders still frames until `frames` have been rendered since a cut, then freezes: continues
+// the current run when it has not passed `frames` yet, else cuts and starts again.
+void runStillFramesTo(ExplorerState& state, int frames);
 
 // Loads a scene (id or path) and hands it to the renderer; on failure the current scene stays
 // and the message goes to state.sceneError. Returns true on success.

@@ -19,6 +19,7 @@ const std::vector<Shortcut>& explorerShortcuts() {
       {"K", "show / hide the colour keys over the debug views", "Window"},
       {"F12  or  Ctrl + S", "screenshot of the whole window", "Window"},
       {"Shift + F12", "clean images of each viewport (no UI)", "Window"},
+      {"Ctrl + Q", "quit (settings are saved)", "Window"},
       {"P", "pause / resume scene time (animation)", "Time"},
       {"F", "freeze frames (render nothing new)", "Time"},
       {"N  or  .", "step: render exactly one frame (freezes first)", "Time"},
@@ -41,32 +42,62 @@ float steppedUiScale(float scale, int steps) {
 
 namespace {
 
-bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
+struct KeyPress {
+  int key, mods;
+};
+std::vector<KeyPress> g_presses;  // since the last clearKeyPresses (one window per process)
+GLFWkeyfun g_previousKeyCallback = nullptr;
+
+void recordKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (action == GLFW_PRESS) recordKeyPress(key, mods);
+  if (g_previousKeyCallback) g_previousKeyCallback(window, key, scancode, action, mods);
+}
+
+bool pressed(int key) { return keyPressed(key, false); }
 
 }  // namespace
+
+void installKeyPressRecorder(GLFWwindow* window) { g_previousKeyCallback = glfwSetKeyCallback(window, recordKey); }
+
+void clearKeyPresses() { g_presses.clear(); }
+
+void recordKeyPress(int key, int mods) { g_presses.push_back({key, mods}); }
+
+int keyPressMods(int key) {
+  for (const KeyPress& p : g_presses)
+    if (p.key == key) return p.mods;
+  return -1;
+}
+
+bool keyPressed(int key, bool ctrl) {
+  const int mods = keyPressMods(key);
+  return mods >= 0 && ((mods & GLFW_MOD_CONTROL) != 0) == ctrl;
+}
 
 void handleShortcuts(ExplorerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
-  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
   bool question = false;
   for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
-  if (pressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
-  if (ctrl && (pressed(GLFW_KEY_EQUAL) || pressed(GLFW_KEY_KP_ADD))) state.uiScale = steppedUiScale(state.uiScale, 1);
-  if (ctrl && (pressed(GLFW_KEY_MINUS) || pressed(GLFW_KEY_KP_SUBTRACT)))
+  if (keyPressMods(GLFW_KEY_F1) >= 0 || question) state.showHelp = !state.showHelp;
+  if (keyPressed(GLFW_KEY_EQUAL, true) || keyPressed(GLFW_KEY_KP_ADD, true))
+    state.uiScale = steppedUiScale(state.uiScale, 1);
+  if (keyPressed(GLFW_KEY_MINUS, true) || keyPressed(GLFW_KEY_KP_SUBTRACT, true))
     state.uiScale = steppedUiScale(state.uiScale, -1);
-  if (ctrl && pressed(GLFW_KEY_0)) state.uiScale = 1.0f;
-  if (pressed(GLFW_KEY_F12) || (ctrl && pressed(GLFW_KEY_S))) {
-    if (shift)
+  if (keyPressed(GLFW_KEY_0, true)) state.uiScale = 1.0f;
+  if (keyPressed(GLFW_KEY_Q, true)) state.quitRequested = true;
+  const int shotMods = keyPressMods(GLFW_KEY_F12) >= 0 ? keyPressMods(GLFW_KEY_F12) : keyPressMods(GLFW_KEY_S);
+  if (keyPressMods(GLFW_KEY_F12) >= 0 || keyPressed(GLFW_KEY_S, true)) {
+    if (shotMods & GLFW_MOD_SHIFT)
       state.viewportShotsRequested = true;
     else
       state.screenshotRequested = true;
   }
-  if (ctrl) return;  // the rest are plain keys
+  const bool shift = io.KeyShift;
   if (pressed(GLFW_KEY_1)) state.viewportCount = 1;
   if (pressed(GLFW_KEY_2)) state.viewportCount = 2;
   if (pressed(GLFW_KEY_4)) state.viewportCount = 4;
-  if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, shift ? -1 : 1);
+  if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, (keyPressMods(GLFW_KEY_TAB) & GLFW_MOD_SHIFT) || shift ? -1 : 1);
   if (pressed(GLFW_KEY_P)) state.paused = !state.paused;
   if (pressed(GLFW_KEY_K)) state.showColourKeys = !state.showColourKeys;
   if (pressed(GLFW_KEY_F)) state.frozen = !state.frozen;

@@ -277,6 +277,7 @@ void drawToolsPanel(ExplorerState& state) {
   ImGui::Separator();
   ImGui::Checkbox("Magnifier (hold M)", &state.magnifierPinned);
   ImGui::Checkbox("Visibility plot (hold V)", &state.plotPinned);
+  ImGui::Checkbox("dp/ds plot (perspective aliasing)", &state.showDpdsPlot);
   // UI size for the room: fonts are rebuilt at the new size (Ctrl+= / Ctrl+-).
   ImGui::Text("UI size %.0f %%", state.uiScale * 100.0f);
   ImGui::SameLine();

@@ -2,7 +2,13 @@
 // actions the side panel uses, so a step looks as if the lecturer had clicked it together.
 #include "explorer/tour_player.h"
 
+#include "explorer/plot_window.h"
+#include "explorer/shortcuts.h"
 #include "render/renderer.h"
+#include "tour/step_plot.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -13,10 +19,8 @@ namespace {
 
 constexpr float kPresenterScale = 1.75f;  // text readable from the back of a lecture hall
 constexpr float kCaptionLines = 5.0f;     // title, panel names, three lines of caption
-
-// ImGui 1.86 indexes io.KeysDown by the GLFW key codes the backend receives.
-constexpr int kKeyRight = 262, kKeyLeft = 263, kKeyDown = 264, kKeyUp = 265, kKeyPageUp = 266, kKeyPageDown = 267,
-              kKeyF5 = 294;
+// The frame a step's plot is made at (the figures' default panel; the plot's pixel is its centre).
+constexpr int kPlotFrameWidth = 480, kPlotFrameHeight = 270;
 
 void applyViewports(ExplorerState& state, const TourStep& s) {
   state.slots.resize(kMaxViewports);
@@ -38,23 +42,6 @@ void applyViewports(ExplorerState& state, const TourStep& s) {
   state.viewportCount = n <= 1 ? 1 : n == 2 ? 2 : 4;
   ensureViewportSlots(state);
   applySelectedViews(state);
-}
-
-// Captions use Greek letters, arrows and maths (α, →, ∞, √) that the explorer's font lacks: merge
-// those ranges of the same font in before the backend builds the font texture (first frame).
-void addCaptionGlyphs() {
-  static const ImWchar ranges[] = {0x0370, 0x03FF, 0x2010, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
-  ImFontAtlas* atlas = ImGui::GetIO().Fonts;
-  if (atlas->IsBuilt() || atlas->ConfigData.empty()) return;
-  const ImFontConfig& base = atlas->ConfigData.back();
-  if (base.FontDataOwnedByAtlas == false || base.FontData == nullptr || base.SizePixels <= 0.0f) return;
-  for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
-    if (!std::filesystem::exists(path)) continue;
-    ImFontConfig cfg;
-    cfg.MergeMode = true;
-    atlas->AddFontFromFileTTF(path, base.SizePixels, &cfg, ranges);
-    return;
-  }
 }
 
 // "1: n = z_n   2: n_opt": the tour's panel names and stand-ins, which the tiles' headers do not show.
@@ -84,7 +71,6 @@ bool TourPlayer::start(ExplorerState& state, Renderer& renderer, const std::stri
               << "\n";
     return false;
   }
-  addCaptionGlyphs();
   setPresenter(presenter);
   show(state, renderer, size_t(firstStep - 1));
   return true;
@@ -98,6 +84,7 @@ void TourPlayer::setPresenter(bool on) {
 void TourPlayer::show(ExplorerState& state, Renderer& renderer, size_t index) {
   if (!tour_) return;
   step_ = std::min(index, tour_->steps.size() - 1);
+  frameStage_ = 0;
   const TourStep& s = tour_->steps[step_];
   error_.clear();
   try {
@@ -113,26 +100,74 @@ void TourPlayer::show(ExplorerState& state, Renderer& renderer, size_t index) {
     if (!state.playingPath) jumpToCamera(state, stepCamera(*tour_, step_, *state.scene));
     applyViewports(state, s);
     state.frozen = false;
+    state.freezeAtFrame = 0;
     state.cutPending = true;
+    if (staged()) showFrameStage(state, 0);
   } catch (const std::exception& e) {
     error_ = e.what();
+  }
+  makePlot(state, renderer);
+}
+
+int TourPlayer::stageFrames() const { return tour_ ? tour_->steps[step_].frames[frameStage_] : 0; }
+
+bool TourPlayer::staged() const {
+  if (!tour_) return false;
+  const std::vector<int>& frames = tour_->steps[step_].frames;
+  return frames.size() > 1 || (frames.size() == 1 && frames[0] > 1);
+}
+
+void TourPlayer::showFrameStage(ExplorerState& state, size_t stage) {
+  frameStage_ = std::min(stage, tour_->steps[step_].frames.size() - 1);
+  runStillFramesTo(state, tour_->steps[step_].frames[frameStage_]);
+}
+
+void TourPlayer::next(ExplorerState& state, Renderer& renderer) {
+  if (!tour_) return;
+  if (staged() && frameStage_ + 1 < tour_->steps[step_].frames.size())
+    showFrameStage(state, frameStage_ + 1);
+  else if (step_ + 1 < tour_->steps.size())
+    show(state, renderer, step_ + 1);
+}
+
+void TourPlayer::previous(ExplorerState& state, Renderer& renderer) {
+  if (!tour_) return;
+  if (staged() && frameStage_ > 0)
+    showFrameStage(state, frameStage_ - 1);
+  else if (step_ > 0)
+    show(state, renderer, step_ - 1);
+}
+
+// The plot is made once, with the step's camera (as the figure makes it); a visibility plot
+// renders a frame per technique, a dp/ds plot is computed on the CPU.
+void TourPlayer::makePlot(ExplorerState& state, Renderer& renderer) {
+  plot_ = {};
+  plotError_.clear();
+  const TourStep& s = tour_->steps[step_];
+  if (s.plot.kind == TourPlot::Kind::None || !error_.empty() || !state.scene) return;
+  try {
+    plot_ = stepPlot(*tour_, step_, *state.scene, stepCamera(*tour_, step_, *state.scene), renderer.shaders(),
+                     kPlotFrameWidth, kPlotFrameHeight);
+  } catch (const std::exception& e) {
+    plotError_ = e.what();
   }
 }
 
 void TourPlayer::handleKeys(ExplorerState& state, Renderer& renderer) {
   if (!tour_ || ImGui::GetIO().WantTextInput) return;
-  const bool next =
-      ImGui::IsKeyPressed(kKeyRight) || ImGui::IsKeyPressed(kKeyDown) || ImGui::IsKeyPressed(kKeyPageDown);
-  const bool previous = ImGui::IsKeyPressed(kKeyLeft) || ImGui::IsKeyPressed(kKeyUp) || ImGui::IsKeyPressed(kKeyPageUp);
-  if (next && step_ + 1 < tour_->steps.size()) show(state, renderer, step_ + 1);
-  if (previous && step_ > 0) show(state, renderer, step_ - 1);
-  if (ImGui::IsKeyPressed(kKeyF5, false)) setPresenter(!presenter_);
+  // Presses recorded from GLFW (explorer/shortcuts.h): a clicker's short tap is never lost.
+  const bool next = keyPressed(GLFW_KEY_RIGHT) || keyPressed(GLFW_KEY_DOWN) || keyPressed(GLFW_KEY_PAGE_DOWN);
+  const bool previous = keyPressed(GLFW_KEY_LEFT) || keyPressed(GLFW_KEY_UP) || keyPressed(GLFW_KEY_PAGE_UP);
+  if (next) this->next(state, renderer);
+  if (previous) this->previous(state, renderer);
+  if (keyPressed(GLFW_KEY_F5)) setPresenter(!presenter_);
 }
 
 float TourPlayer::captionHeight() const {
   if (!tour_) return 0.0f;
   const ImGuiStyle& style = ImGui::GetStyle();
-  return ImGui::GetFontSize() * kCaptionLines * 1.25f + style.WindowPadding.y * 2.0f;
+  const float lines = kCaptionLines + (staged() ? 1.0f : 0.0f);  // the still-frame buttons' row
+  return ImGui::GetFontSize() * lines * 1.25f + style.WindowPadding.y * 2.0f;
 }
 
 void TourPlayer::drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize) {
@@ -145,10 +180,9 @@ void TourPlayer::drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 ar
   ImGui::Begin("##tour caption", nullptr, flags);
   const TourStep& s = tour_->steps[step_];
   if (!presenter_) {
-    if (ImGui::ArrowButton("##previous", ImGuiDir_Left) && step_ > 0) show(state, renderer, step_ - 1);
+    if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) previous(state, renderer);
     ImGui::SameLine();
-    if (ImGui::ArrowButton("##next", ImGuiDir_Right) && step_ + 1 < tour_->steps.size())
-      show(state, renderer, step_ + 1);
+    if (ImGui::ArrowButton("##next", ImGuiDir_Right)) next(state, renderer);
     ImGui::SameLine();
     bool p = presenter_;
     if (ImGui::Checkbox("presenter (F5)", &p)) setPresenter(p);
@@ -157,11 +191,49 @@ void TourPlayer::drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 ar
   ImGui::TextDisabled("%zu/%zu", step_ + 1, tour_->steps.size());
   ImGui::SameLine();
   ImGui::TextUnformatted(s.title.c_str());
+  if (staged()) drawFrameButtons(state);
   if (const std::string labels = viewportLabels(s); !labels.empty()) ImGui::TextDisabled("%s", labels.c_str());
   if (!s.built()) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
   ImGui::TextWrapped("%s", s.shownCaption().c_str());
   if (!s.built()) ImGui::PopStyleColor();
   if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
+  if (!plotError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", plotError_.c_str());
+  ImGui::End();
+}
+
+// "frames: [1] 20 40 60 · frame 7": the step's still-frame counts as buttons (the shown one
+// highlighted) and the frames rendered since the cut.
+void TourPlayer::drawFrameButtons(ExplorerState& state) {
+  const std::vector<int>& frames = tour_->steps[step_].frames;
+  ImGui::TextDisabled("still frames (next / previous step through them):");
+  for (size_t i = 0; i < frames.size(); ++i) {
+    ImGui::SameLine();
+    const bool current = i == frameStage_;
+    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    ImGui::PushID(int(i));
+    if (ImGui::SmallButton(std::to_string(frames[i]).c_str())) showFrameStage(state, i);
+    ImGui::PopID();
+    if (current) ImGui::PopStyleColor();
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("(now %d%s)", state.framesSinceCut, state.frozen ? ", frozen" : "");
+}
+
+void TourPlayer::drawPlot(ImVec2 areaMin, ImVec2 areaSize) {
+  if (!tour_ || plot_.empty()) return;
+  const float line = ImGui::GetTextLineHeight();
+  const ImVec2 size(std::min(line * 34.0f, areaSize.x * 0.45f), std::min(line * 15.0f, areaSize.y * 0.4f));
+  const float windowW = size.x + ImGui::GetStyle().WindowPadding.x * 2.0f;
+  ImGui::SetNextWindowPos(ImVec2(areaMin.x + areaSize.x - windowW - line * 0.5f, areaMin.y + line * 0.5f),
+                          ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing;
+  // Collapsible from its title bar (the triangle) when it hides a viewport.
+  if (ImGui::Begin(("step plot: " + plot_.title + "###tour plot").c_str(), nullptr, flags)) {
+    drawPlotWidget(plot_, size);
+    drawPlotCaption(plot_.x.label + "; y: " + plot_.y.label + (plot_.note.empty() ? "" : "; " + plot_.note), size.x);
+  }
   ImGui::End();
 }
 

@@ -2,10 +2,14 @@
 // camera, light, viewports and debug views; Right/Down/PageDown go to the next step and
 // Left/Up/PageUp to the previous one (presenter clickers send PageUp/PageDown), F5 toggles
 // presenter mode (no side panel, large text, viewports filling the window). The caption sits in
-// a strip under the viewports.
+// a strip under the viewports. A step with several still-frame counts ("frames": [1, 20, 40,
+// 60]) is played like a slide with builds: it freezes after 1 frame, and each "next" renders on
+// to the next count before the next step comes; "previous" goes back a count (re-rendered from a
+// cut). A step's plot is made when the step is shown and drawn in a window beside the caption.
 #pragma once
 
 #include "explorer/explorer_state.h"
+#include "plot/plot.h"
 #include "tour/tour.h"
 
 #include <imgui.h>
@@ -30,13 +34,28 @@ class TourPlayer {
   float captionHeight() const;
   // The caption strip (title, caption, step buttons) over the bottom `captionHeight()` of the area.
   void drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize);
+  // The step's plot window (nothing for a step without a plot), at the top right of the area.
+  void drawPlot(ImVec2 areaMin, ImVec2 areaSize);
   // Shows step `index` (0-based); a step that fails to apply keeps the window with its message.
   void show(ExplorerState& state, Renderer& renderer, size_t index);
+  // Forward and back through the steps and, within a step, its still-frame counts.
+  void next(ExplorerState& state, Renderer& renderer);
+  void previous(ExplorerState& state, Renderer& renderer);
+  // Index into the current step's frames of the count shown (0 for a step with one).
+  size_t frameStage() const { return frameStage_; }
+  int stageFrames() const;  // the still-frame count of that stage
 
  private:
   void setPresenter(bool on);
+  bool staged() const;  // the current step has more than one frame count, or one above 1
+  void showFrameStage(ExplorerState& state, size_t stage);
+  void drawFrameButtons(ExplorerState& state);
+  void makePlot(ExplorerState& state, Renderer& renderer);
   std::optional<Tour> tour_;
   size_t step_ = 0;
+  size_t frameStage_ = 0;
+  Plot plot_;
+  std::string plotError_;
   bool presenter_ = false;
   std::string error_;  // why the current step could not be shown
 };

@@ -8,6 +8,12 @@
 
 namespace sl {
 
+namespace {
+// Latin-1 and what captions, help texts and units use: Greek (α, σ), punctuation (— …), arrows
+// (→ ↔) and maths (≈ ≤ ∞ √). The same ranges as the figures' font (tour/figure_image.cpp).
+const ImWchar kUiGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+}  // namespace
+
 void applyUiScale(float scale) {
   static std::optional<ImGuiStyle> baseStyle;
   if (!baseStyle) baseStyle = ImGui::GetStyle();
@@ -15,7 +21,8 @@ void applyUiScale(float scale) {
   io.Fonts->Clear();
   bool loaded = false;
   for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
-    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, kBaseFontPixels * scale)) {
+    if (std::filesystem::exists(path) &&
+        io.Fonts->AddFontFromFileTTF(path, kBaseFontPixels * scale, nullptr, kUiGlyphRanges)) {
       loaded = true;
       break;
     }

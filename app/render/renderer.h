@@ -141,6 +141,7 @@ struct FrameStats {
 class Renderer {
  public:
   explicit Renderer(ShaderLibrary& shaders);
+  ShaderLibrary& shaders() const { return shaders_; }
   ~Renderer();
   void setScene(const Scene& scene);  // uploads; throws std::runtime_error on GL failure
   const Scene* scene() const { return scene_; }

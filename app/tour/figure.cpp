@@ -6,6 +6,8 @@
 #include "gl/shader_library.h"
 #include "render/view_keys.h"
 #include "render/renderer.h"
+#include "tour/figure_plot.h"
+#include "tour/step_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +30,7 @@ struct Panel {
 
 struct FigureLayout {
   int margin = 12, panelW = 0, panelH = 0, cellW = 0, cellH = 0, headerH = 0, gridTop = 0, keyH = 0;
+  int plotW = 0, plotH = 0;  // the step's plot under the grid (0: none)
   int cols = 0, rows = 0, width = 0, height = 0;
   std::vector<std::string> captionLines;
 };
@@ -68,8 +71,14 @@ FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const F
   l.width = l.margin + l.cols * l.cellW;
   l.headerH = l.margin + fonts.lineHeight(FigureFonts::Style::Title);
   l.gridTop = l.headerH + l.margin / 2;
+  if (s.plot.kind != TourPlot::Kind::None) {  // at least 480 wide to be legible: a narrow figure widens
+    l.plotW = std::min(std::max(l.width - 2 * l.margin, 480), std::max(2 * l.panelW, 640));
+    l.plotH = std::max(l.panelH, 200) + 4 * body;
+    l.width = std::max(l.width, l.plotW + 2 * l.margin);
+  }
   l.captionLines = fonts.wrap(s.shownCaption(), l.width - 2 * l.margin, FigureFonts::Style::Body);
-  l.height = l.gridTop + l.rows * l.cellH + static_cast<int>(l.captionLines.size()) * body + l.margin;
+  l.height = l.gridTop + l.rows * l.cellH + (l.plotH > 0 ? l.plotH + l.margin : 0) +
+             static_cast<int>(l.captionLines.size()) * body + l.margin;
   return l;
 }
 
@@ -165,6 +174,11 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
   }
   const int body = fonts.lineHeight(FigureFonts::Style::Body);
   int y = l.gridTop + l.rows * l.cellH;
+  if (l.plotH > 0) {
+    out.plot = stepPlot(tour, step, scene, camera, shaders, l.panelW, l.panelH);
+    drawFigurePlot(out.image, fonts, out.plot, l.margin, y, l.plotW, l.plotH);
+    y += l.plotH + l.margin;
+  }
   for (const auto& line : l.captionLines) {
     fonts.draw(out.image, l.margin, y, line, FigureFonts::Style::Body, kText);
     y += body;

@@ -1,8 +1,10 @@
 // Headless figures of tour steps: each viewport's colour image and its debug views side by side
 // (a row per captured frame count), the step's title and caption and each panel's title burnt
-// in, a colour key under heat-map views; no UI chrome. Needs a current GL context (HeadlessContext).
+// in, a colour key under heat-map views, the step's plot under the panels; no UI chrome. Needs a current GL context
+// (HeadlessContext).
 #pragma once
 
+#include "plot/plot.h"
 #include "tour/figure_image.h"
 #include "tour/tour.h"
 
@@ -21,6 +23,7 @@ struct FigureResult {
   RgbaImage image;
   long long nonfinitePixels = 0;  // visibility pixels that were NaN/Inf, over every capture
   int panels = 0;                 // rendered images in the figure (placeholders not counted)
+  Plot plot;                      // the step's plot, drawn under the panels (empty: the step has none)
 };
 
 // Renders step `step` (0-based) of `tour`. A step that is not built yet gets placeholder panels

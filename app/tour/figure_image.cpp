@@ -45,6 +45,13 @@ void RgbaImage::fillRect(int x, int y, int w, int h, glm::vec3 colour) {
     }
 }
 
+void RgbaImage::blend(int x, int y, glm::vec3 colour, float alpha) {
+  if (x < 0 || y < 0 || x >= width || y >= height || !(alpha > 0.0f)) return;
+  uint8_t* d = &pixels[(size_t(y) * size_t(width) + size_t(x)) * 4];
+  const float a = std::min(alpha, 1.0f);
+  for (int ch = 0; ch < 3; ++ch) d[ch] = toByte(glm::mix(d[ch] / 255.0f, colour[ch], a));
+}
+
 void RgbaImage::blitBottomUp(const std::vector<unsigned char>& rgba, int w, int h, int x, int y) {
   for (int row = 0; row < h; ++row) {
     const int ty = y + row;

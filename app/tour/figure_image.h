@@ -21,6 +21,8 @@ struct RgbaImage {
   RgbaImage() = default;
   RgbaImage(int w, int h, glm::vec3 fill);
   void fillRect(int x, int y, int w, int h, glm::vec3 colour);
+  // Mixes `colour` into one pixel with weight `alpha` (clipped to the image).
+  void blend(int x, int y, glm::vec3 colour, float alpha);
   // Copies rows read back from GL (row 0 = bottom) of a w x h image to (x, y).
   void blitBottomUp(const std::vector<unsigned char>& rgba, int w, int h, int x, int y);
 };

@@ -39,6 +39,15 @@ glm::vec2 texelsAt(const LightView& v, int size, const glm::vec3& p, bool& insid
 
 std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int width, int height,
                                   const std::vector<std::string>& techniques, int samples) {
+  std::vector<Technique> made;
+  for (const std::string& spec : techniques) made.push_back(parseTechnique(spec));
+  std::vector<LabelledTechnique> labelled;
+  for (size_t i = 0; i < made.size(); ++i) labelled.push_back({techniques[i], &made[i]});
+  return dpdsCurves(scene, cam, width, height, labelled, samples);
+}
+
+std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int width, int height,
+                                  const std::vector<LabelledTechnique>& techniques, int samples) {
   const glm::mat4 view = cameraView(cam), proj = cameraProjection(cam, float(width) / float(height));
   const glm::vec3 eye = cam.position, dir = glm::normalize(cam.target - cam.position);
   const glm::vec3 L = glm::normalize(scene.light.direction);
@@ -50,8 +59,8 @@ std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int wid
   const float pixelPerDepth = 2.0f * std::tan(glm::radians(cam.fovDeg) * 0.5f) / static_cast<float>(height);
   std::vector<DpdsCurve> out;
   int firstSize = 0;
-  for (const std::string& spec : techniques) {
-    Technique t = parseTechnique(spec);
+  for (const LabelledTechnique& lt : techniques) {
+    const Technique& t = *lt.technique;
     LayoutInput in;
     in.scene = &scene;
     in.cameraView = view;
@@ -60,7 +69,7 @@ std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int wid
     const LightSpace ls = t.layout->compute(in);
     if (firstSize == 0) firstSize = ls.size;
     DpdsCurve c;
-    c.label = spec;
+    c.label = lt.label;
     for (int i = 0; i < samples; ++i) {
       const float z = cam.nearPlane * std::pow(zFar / cam.nearPlane, (i + 0.5f) / samples);
       const glm::vec3 p = eye + dir * z;
@@ -87,47 +96,18 @@ std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int wid
   return out;
 }
 
-std::string dpdsSvg(const std::vector<DpdsCurve>& curves, const std::string& title) {
-  const float W = 720, H = 420, left = 70, right = 220, top = 40, bottom = 50;
-  float zLo = 1e30f, zHi = -1e30f, rLo = 1e30f, rHi = -1e30f;
-  for (const auto& c : curves)
-    for (size_t i = 0; i < c.depth.size(); ++i) {
-      if (!std::isfinite(c.ratio[i]) || c.ratio[i] <= 0.0f) continue;
-      zLo = std::min(zLo, c.depth[i]);
-      zHi = std::max(zHi, c.depth[i]);
-      rLo = std::min(rLo, c.ratio[i]);
-      rHi = std::max(rHi, c.ratio[i]);
-    }
-  if (zLo >= zHi) zHi = zLo * 10.0f + 1.0f;
-  const float d0 = std::floor(std::log10(std::max(rLo, 1e-6f))),
-              d1 = std::ceil(std::log10(std::max(rHi, 1e-6f))) + (rLo >= rHi);
-  auto X = [&](float z) {
-    return left + (W - left - right) * (std::log10(z) - std::log10(zLo)) / (std::log10(zHi) - std::log10(zLo));
-  };
-  auto Y = [&](float r) { return H - bottom - (H - top - bottom) * (std::log10(r) - d0) / std::max(d1 - d0, 1.0f); };
-  static const char* colours[] = {"#d9412b", "#e8a317", "#3a9d3a", "#3b7dd8", "#8a5cc7", "#2bb0b0", "#666666"};
-  std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << left << "\" y=\"22\" font-size=\"14\">"
-    << title << "</text>\n";
-  for (float d = d0; d <= d1; d += 1.0f)  // decades of texel/pixel size
-    s << "<line x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << Y(std::pow(10.0f, d)) << "\" y2=\""
-      << Y(std::pow(10.0f, d)) << "\" stroke=\"#ddd\"/><text x=\"8\" y=\"" << Y(std::pow(10.0f, d)) + 4 << "\">1e"
-      << int(d) << "</text>\n";
-  s << "<text x=\"" << left << "\" y=\"" << H - 15 << "\">view depth z (log, " << zLo << " to " << zHi
-    << ") ; y: shadow-map texel / pixel size along the view direction (log; 1 = one texel per pixel)</text>\n";
+Plot dpdsPlot(const std::vector<DpdsCurve>& curves, const std::string& title) {
+  Plot plot;
+  plot.title = title;
+  plot.x = {.label = "view depth z (log)", .log = true};
+  plot.y = {.label = "shadow-map texel / pixel size along the view (log; 1 = one texel per pixel)", .log = true};
   for (size_t k = 0; k < curves.size(); ++k) {
-    const char* colour = colours[std::min(k, sizeof(colours) / sizeof(*colours) - 1)];
-    s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
-    for (size_t i = 0; i < curves[k].depth.size(); ++i)
-      if (std::isfinite(curves[k].ratio[i]) && curves[k].ratio[i] > 0.0f)
-        s << X(curves[k].depth[i]) << "," << Y(curves[k].ratio[i]) << " ";
-    s << "\"/>\n<text x=\"" << W - right + 10 << "\" y=\"" << top + 18 * (k + 1) << "\" fill=\"" << colour << "\">"
-      << curves[k].label << "</text>\n";
+    PlotSeries s{.label = curves[k].label, .colour = plotColour(k), .width = 2.0f};
+    for (size_t i = 0; i < curves[k].depth.size(); ++i) s.points.emplace_back(curves[k].depth[i], curves[k].ratio[i]);
+    plot.series.push_back(std::move(s));
   }
-  s << "</svg>\n";
-  return s.str();
+  if (!plot.series.empty()) plot.series.back().colour = glm::vec3(0.4f);  // the ideal curve: grey
+  return plot;
 }
 
 }  // namespace sl

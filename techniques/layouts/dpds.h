@@ -5,6 +5,7 @@
 // logarithmic parametrization with the same texels per side is flat.
 #pragma once
 
+#include "plot/plot.h"
 #include "technique.h"
 
 #include <string>
@@ -23,7 +24,16 @@ struct DpdsCurve {
 std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int width, int height,
                                   const std::vector<std::string>& techniques, int samples = 64);
 
-// A log-log SVG plot of the curves (view depth vs texel/pixel size).
-std::string dpdsSvg(const std::vector<DpdsCurve>& curves, const std::string& title);
+// The same for techniques already made (the explorer's viewports with their current parameters),
+// each with the label its curve gets.
+struct LabelledTechnique {
+  std::string label;
+  const Technique* technique = nullptr;
+};
+std::vector<DpdsCurve> dpdsCurves(const Scene& scene, const Camera& cam, int width, int height,
+                                  const std::vector<LabelledTechnique>& techniques, int samples = 64);
+
+// The curves as a log-log plot (view depth vs texel/pixel size); plotSvg draws it as a file.
+Plot dpdsPlot(const std::vector<DpdsCurve>& curves, const std::string& title);
 
 }  // namespace sl

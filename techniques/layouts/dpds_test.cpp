@@ -37,11 +37,11 @@ TEST(Dpds, FocusedFallsAsOneOverDepthWarpsFlattenCascadesSawIdealIsFlat) {
   for (size_t i = 1; i < curves[3].ratio.size(); ++i) jumps += curves[3].ratio[i] > 1.2f * curves[3].ratio[i - 1];
   EXPECT_EQ(jumps, 3);
   EXPECT_LT(spread(curves[4]), 1e-4f);
-  const std::string svg = dpdsSvg(curves, "test");
+  const std::string svg = plotSvg(dpdsPlot(curves, "test"));
   for (const auto& c : curves) EXPECT_NE(svg.find(">" + c.label + "<"), std::string::npos) << c.label;
-  size_t lines = 0;
+  size_t lines = 0;  // a curve leaving the map is drawn as several strokes
   for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++lines;
-  EXPECT_EQ(lines, curves.size());
+  EXPECT_GE(lines, curves.size());
 }
 
 }  // namespace

@@ -1,0 +1,123 @@
+// drawPlotWidget, the live dp/ds plot and its window (see plot_window.h).
+#include "explorer/plot_window.h"
+
+#include "layouts/dpds.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+namespace {
+
+ImU32 toImU32(glm::vec3 c) {
+  // Near-black curves (meant for white paper) are drawn white on the dark window.
+  if (glm::dot(c, glm::vec3(0.3f, 0.59f, 0.11f)) < 0.05f) c = glm::vec3(0.95f);
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+}
+
+// The reference layouts the survey's error-analysis slides compare.
+const std::vector<std::pair<std::string, Technique>>& referenceLayouts() {
+  static const std::vector<std::pair<std::string, Technique>> list = [] {
+    std::vector<std::pair<std::string, Technique>> out;
+    for (const char* id : {"uniform", "psm", "lispsm", "cascaded"}) out.emplace_back(id, makeTechnique(id));
+    return out;
+  }();
+  return list;
+}
+
+}  // namespace
+
+void drawPlotWidget(const Plot& plot, ImVec2 size) {
+  const PlotFrame f = resolvePlot(plot);
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float line = ImGui::GetTextLineHeight();
+  float legendW = 0.0f;
+  for (const PlotSeries& s : plot.series) legendW = std::max(legendW, ImGui::CalcTextSize(s.label.c_str()).x);
+  legendW = std::min(legendW + line * 2.0f, size.x * 0.4f);
+  const float left = origin.x + ImGui::CalcTextSize("0.001").x + 6.0f, right = origin.x + size.x - legendW;
+  const float top = origin.y + line * 0.5f, bottom = origin.y + size.y - line * 1.5f;
+  auto at = [&](glm::vec2 u) { return ImVec2(left + u.x * (right - left), bottom - u.y * (bottom - top)); };
+  const ImU32 grid = IM_COL32(60, 62, 70, 255), text = IM_COL32(180, 184, 190, 255);
+  list->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(20, 20, 24, 255));
+  for (const auto& t : f.yTicks) {
+    const ImVec2 p = at({0.0f, t.at});
+    list->AddLine(ImVec2(left, p.y), ImVec2(right, p.y), grid);
+    list->AddText(ImVec2(origin.x, p.y - line * 0.5f), text, t.label.c_str());
+  }
+  for (const auto& t : f.xTicks) {
+    const ImVec2 p = at({t.at, 0.0f});
+    const float w = ImGui::CalcTextSize(t.label.c_str()).x;
+    list->AddText(ImVec2(std::clamp(p.x - w * 0.5f, origin.x, origin.x + size.x - w), bottom + 2.0f), text,
+                  t.label.c_str());
+  }
+  for (float m : plot.markers) {
+    const float x = at(f.unit({m, f.yLo})).x;
+    for (float y = top; y < bottom; y += 7.0f)
+      list->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 4.0f, bottom)), IM_COL32(150, 150, 150, 255));
+  }
+  list->PushClipRect(ImVec2(left, top), ImVec2(right + 1.0f, bottom + 1.0f), true);
+  for (const PlotSeries& s : plot.series)
+    for (const auto& stroke : f.strokes(s)) {
+      std::vector<ImVec2> points;
+      for (glm::vec2 u : stroke) points.push_back(at(u));
+      list->AddPolyline(points.data(), int(points.size()), toImU32(s.colour), 0, s.width);
+    }
+  list->PopClipRect();
+  list->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(115, 117, 128, 255));
+  for (size_t k = 0; k < plot.series.size(); ++k) {
+    const ImVec2 p(right + line * 0.5f, top + float(k) * line);
+    const ImU32 c = toImU32(plot.series[k].colour);
+    list->AddLine(ImVec2(p.x, p.y + line * 0.5f), ImVec2(p.x + line, p.y + line * 0.5f), c, 2.0f);
+    list->AddText(ImVec2(p.x + line * 1.3f, p.y), c, plot.series[k].label.c_str());
+  }
+  ImGui::Dummy(size);
+}
+
+void drawPlotCaption(const std::string& text, float width) {
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+  ImGui::PopTextWrapPos();
+}
+
+Plot liveDpdsPlot(const ExplorerState& state, int width, int height) {
+  std::vector<LabelledTechnique> techniques;
+  std::vector<std::string> shownIds;
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
+    const Viewport* vp = state.slots[size_t(i)].viewport.get();
+    if (!vp) continue;
+    shownIds.push_back(vp->technique.presetId);
+    techniques.push_back({std::to_string(i + 1) + ": " + vp->technique.presetId, &vp->technique});
+  }
+  for (const auto& [id, t] : referenceLayouts())
+    if (std::find(shownIds.begin(), shownIds.end(), id) == shownIds.end()) techniques.push_back({id, &t});
+  if (!state.scene || width <= 0 || height <= 0) return {};
+  Plot plot = dpdsPlot(dpdsCurves(*state.scene, state.camera.camera(), width, height, techniques, 48),
+                       "dp/ds along the view, this camera");
+  return plot;
+}
+
+void drawDpdsWindow(ExplorerState& state, int renderWidth, int renderHeight, ImVec2 areaMin, ImVec2 areaSize) {
+  if (!state.showDpdsPlot) return;
+  const float line = ImGui::GetTextLineHeight();
+  const ImVec2 size(line * 34.0f, line * 16.0f);
+  const float windowW = size.x + ImGui::GetStyle().WindowPadding.x * 2.0f;
+  ImGui::SetNextWindowPos(ImVec2(areaMin.x + areaSize.x - windowW - line * 0.5f, areaMin.y + line * 0.5f),
+                          ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  if (!ImGui::Begin("dp/ds: texel size / pixel size along the view", &state.showDpdsPlot,
+                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::End();
+    return;
+  }
+  drawPlotWidget(liveDpdsPlot(state, renderWidth, renderHeight), size);
+  drawPlotCaption(
+      "x: view depth (log); y: texel / pixel size along the view (log), 1 = one texel per pixel; "
+      "grey: the ideal logarithmic map with viewport 1's texels",
+      size.x);
+  ImGui::End();
+}
+
+}  // namespace sl

@@ -1,0 +1,68 @@
+// visibilityPlot (see visibility_plot_data.h): each technique renders one frame with its own
+// renderer state; the first one's G-buffer finds the surface under the pixel.
+#include "plot/visibility_plot_data.h"
+
+#include "gl/shader_library.h"
+#include "prefiltered/visibility_curve.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace sl {
+
+Plot visibilityPlot(ShaderLibrary& shaders, const Scene& scene, const Camera& camera, const VisibilityPlotRequest& r) {
+  const int px = std::clamp(r.pixel.x < 0 ? r.width / 2 : r.pixel.x, 0, r.width - 1);
+  const int py = std::clamp(r.pixel.y < 0 ? r.height / 2 : r.pixel.y, 0, r.height - 1);
+  const std::string where = "pixel " + std::to_string(px) + "," + std::to_string(py);
+  Renderer renderer(shaders);
+  renderer.setScene(scene);
+  Plot plot;
+  plot.x = {.label = "receiver depth (light space, " + std::to_string(r.lo).substr(0, 4) + " to " +
+                     std::to_string(r.hi).substr(0, 4) + ")",
+            .lo = r.lo,
+            .hi = r.hi};
+  plot.y = {.label = "visibility", .lo = -0.2f, .hi = 1.2f, .ticks = {0.0f, 0.5f, 1.0f}};
+  glm::vec3 uvLayer(0.5f, 0.5f, 0.0f);
+  float receiver = 0.5f;
+  auto series = [&](std::string label, glm::vec3 colour, float width, const std::vector<float>& values) {
+    PlotSeries s{.label = std::move(label), .colour = colour, .width = width};
+    const size_t n = values.size();
+    for (size_t i = 0; i < n; ++i)
+      s.points.emplace_back(float(i) / float(std::max<size_t>(n - 1, 1)), std::clamp(values[i], -0.2f, 1.2f));
+    std::erase_if(s.points, [&](glm::vec2 p) { return p.x < r.lo || p.x > r.hi; });
+    plot.series.push_back(std::move(s));
+  };
+  for (const std::string& id : r.techniques) {
+    Viewport vp(makeTechnique(id, r.overrides));
+    FrameInput in;
+    in.camera = camera;
+    in.width = r.width;
+    in.height = r.height;
+    renderer.render(in, {&vp});
+    const auto* state = dynamic_cast<const MomentMapState*>(vp.representation.get());
+    if (!state)
+      throw std::runtime_error("technique '" + id + "' is not pre-filtered (its representation stores no moments)");
+    if (plot.series.empty()) {
+      const std::vector<float> pos = renderer.gPosition().readFloats(4);
+      const size_t i = (static_cast<size_t>(py) * size_t(r.width) + size_t(px)) * 4;
+      if (pos[i + 3] < 0.5f) throw std::runtime_error(where + " shows no surface");
+      if (!mapPointOf(glm::vec3(pos[i], pos[i + 1], pos[i + 2]), vp.lightSpace.primary(), uvLayer, receiver))
+        throw std::runtime_error(where + " is behind the light's view");
+      const int box = vp.technique.params.i("filter.width");
+      series("true (box of " + std::to_string(box) + " texels)", glm::vec3(0.0f), 2.5f,
+             trueCurve(*state->depthTexture(), uvLayer, box, r.samples));
+    }
+    series(id, plotColour(plot.series.size() - 1), 1.5f,
+           reconstructedCurve(shaders, vp.technique, *state, uvLayer, r.samples));
+  }
+  std::ostringstream title;
+  title << scene.name << ", " << where << ": visibility vs receiver depth at map uv " << uvLayer.x << ", " << uvLayer.y;
+  plot.title = title.str();
+  plot.markers = {receiver};
+  plot.note = "dashed: this pixel's receiver depth " + std::to_string(receiver).substr(0, 5);
+  return plot;
+}
+
+}  // namespace sl
