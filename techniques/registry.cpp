@@ -9,6 +9,7 @@
 #include "layouts/face_partitioned.h"
 #include "layouts/layouts.h"
 #include "layouts/lispsm.h"
+#include "layouts/logpsm.h"
 #include "prefiltered/prefiltered_representations.h"
 #include "layouts/psm.h"
 #include "layouts/tsm.h"
@@ -78,6 +79,7 @@ const std::vector<std::unique_ptr<Layout>>& allLayouts() {
     std::vector<std::unique_ptr<Layout>> v;
     registerBasicLayouts(v);
     registerWarpedLayouts(v);
+    registerLogLayouts(v);
     registerCascadedLayouts(v);
     registerTrapezoidalLayouts(v);
     registerPerspectiveLayouts(v);
@@ -155,6 +157,13 @@ const std::vector<Preset>& allPresets() {
          "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
          "nearest depth test",
          "psm",
+         "depth-nearest",
+         "none",
+         {}},
+        {"logpsm",
+         "logarithmic warp along the view (after Lloyd et al. 2008), casters tessellated within an error budget, "
+         "nearest depth test",
+         "logpsm",
          "depth-nearest",
          "none",
          {}},

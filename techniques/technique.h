@@ -20,6 +20,7 @@
 namespace sl {
 
 class FrameGraph;
+class Layout;
 class Program;
 struct ProgramSpec;
 class ShaderLibrary;
@@ -53,6 +54,9 @@ struct LightView {
   // Camera view depths this view serves (partitioned layouts pick a view per pixel by them) and
   // the width of the band, before splitFar, blended with the next view.
   float splitNear = 0.0f, splitFar = 1e30f, blendBand = 0.0f;
+  // > 0: a logarithmic warp of the map's y after the projection (LogPSM, layouts/logpsm.h):
+  // y in [-1, 1] -> 2 ln(1 + t/logDelta) / ln(1 + 1/logDelta) - 1 with t = (y + 1) / 2.
+  float logDelta = 0.0f;
 };
 
 constexpr int kMaxLightViews = 8;
@@ -93,6 +97,7 @@ struct PartContext {
   double time = 0.0;
   ShaderLibrary* shaders = nullptr;
   const ParamSet* params = nullptr;
+  const Layout* layout = nullptr;  // the technique's (its caster stages: casterStages in render/gpu_scene.h)
   const LightSpace* lightSpace = nullptr;
   glm::mat4 view{1.0f}, proj{1.0f};  // the camera
   int width = 0, height = 0;
@@ -167,6 +172,9 @@ class Layout {
   virtual std::string glslModule() const = 0;  // under shaders/, included by every pass using it
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual LightSpace compute(const LayoutInput& in) const = 0;
+  // True when casters must be drawn as patches (tessellation stages between shadow.vert and the
+  // fragment shader): a warp that is not a projective map (LogPSM) bends straight edges.
+  virtual bool tessellatesCasters() const { return false; }
   // Layouts with memory between frames or passes of their own return their own state.
   virtual std::unique_ptr<LayoutState> createState() const { return std::make_unique<LayoutState>(*this); }
 };

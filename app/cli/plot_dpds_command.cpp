@@ -15,7 +15,8 @@ static const char* kDpdsUsage =
     "usage: shadowlab plot dpds --scene S [--camera NAME] [--size WxH] [--techniques a,b:key=v;key=v,...]\n"
     "                           --out F.svg\n"
     "  Texel size over pixel size along the view direction for receivers on the camera's centre\n"
-    "  ray, per technique (default: uniform, standard, psm, lispsm, lispsm with n = z_n, cascaded),\n"
+    "  ray, per technique (default: uniform, standard, psm, lispsm, lispsm with n = z_n, logpsm,\n"
+    "  cascaded),\n"
     "  and the ideal logarithmic curve for the first technique's texels per side. Overrides of one\n"
     "  technique follow a ':' and are separated by ';'.\n";
 
@@ -37,7 +38,7 @@ int runPlotDpdsCommand(int argc, char** argv) {
     const Camera* cam = args.has("--camera") ? scene.findCamera(args.get("--camera")) : &scene.cameras.front();
     if (!cam) throw ArgError("no camera '" + args.get("--camera") + "' in the scene");
     std::vector<std::string> techniques;
-    std::stringstream list(args.get("--techniques", "uniform,standard,psm,lispsm,lispsm:lispsm.n=z_n,cascaded"));
+    std::stringstream list(args.get("--techniques", "uniform,standard,psm,lispsm,lispsm:lispsm.n=z_n,logpsm,cascaded"));
     for (std::string t; std::getline(list, t, ',');) {
       for (char& c : t)
         if (c == ';') c = ',';  // dpdsCurves separates one technique's overrides by ','

@@ -19,7 +19,7 @@ ImU32 toImU32(glm::vec3 c) {
 const std::vector<std::pair<std::string, Technique>>& referenceLayouts() {
   static const std::vector<std::pair<std::string, Technique>> list = [] {
     std::vector<std::pair<std::string, Technique>> out;
-    for (const char* id : {"uniform", "psm", "lispsm", "cascaded"}) out.emplace_back(id, makeTechnique(id));
+    for (const char* id : {"uniform", "psm", "lispsm", "logpsm", "cascaded"}) out.emplace_back(id, makeTechnique(id));
     return out;
   }();
   return list;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <cstring>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -107,8 +108,16 @@ std::string ShaderLibrary::assemble(const std::string& file, const std::string& 
                                     std::vector<std::string>& fileNames) const {
   std::set<std::string> included;
   // Modules can keep stage-specific code (gl_FragCoord, derivatives) behind these defines.
-  bool vertex = file.size() > 5 && file.compare(file.size() - 5, 5, ".vert") == 0;
-  std::string out = std::string("#version 450 core\n") + (vertex ? "#define SL_VERTEX\n" : "#define SL_FRAGMENT\n");
+  auto endsWith = [&file](const char* ext) {
+    const size_t n = std::strlen(ext);
+    return file.size() > n && file.compare(file.size() - n, n, ext) == 0;
+  };
+  const char* stage = endsWith(".vert")   ? "SL_VERTEX"
+                      : endsWith(".tesc") ? "SL_TESS_CONTROL"
+                      : endsWith(".tese") ? "SL_TESS_EVALUATION"
+                      : endsWith(".comp") ? "SL_COMPUTE"
+                                          : "SL_FRAGMENT";
+  std::string out = std::string("#version 450 core\n#define ") + stage + "\n";
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
 
   std::function<void(const std::string&, const std::string&, const std::string&)> expand =

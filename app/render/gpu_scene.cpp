@@ -74,6 +74,20 @@ std::string materialDefines(int variant) {
   return d;
 }
 
+std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment) {
+  if (!layout.tessellatesCasters()) return {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, fragment}};
+  return {{GL_VERTEX_SHADER, "passes/shadow.vert"},
+          {GL_TESS_CONTROL_SHADER, "passes/shadow_warp.tesc"},
+          {GL_TESS_EVALUATION_SHADER, "passes/shadow_warp.tese"},
+          {GL_FRAGMENT_SHADER, fragment}};
+}
+
+bool PassPrograms::patches() const {
+  for (const auto& stage : base_.stages)
+    if (stage.first == GL_TESS_EVALUATION_SHADER) return true;
+  return false;
+}
+
 const Program* PassPrograms::get(int variant) {
   if (!tried_[variant]) {
     tried_[variant] = true;
@@ -91,6 +105,8 @@ const Program* PassPrograms::get(int variant) {
 }
 
 void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only) const {
+  const GLenum mode = programs.patches() ? GL_PATCHES : GL_TRIANGLES;
+  if (mode == GL_PATCHES) glPatchParameteri(GL_PATCH_VERTICES, 3);
   for (int variant = 0; variant < 4; ++variant) {
     const Program* program = nullptr;
     bool asked = false;
@@ -120,7 +136,7 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
         glDisable(GL_CULL_FACE);
       }
       glBindVertexArray(g.vao);
-      glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+      glDrawElements(mode, g.indexCount, GL_UNSIGNED_INT, nullptr);
     }
   }
   glBindVertexArray(0);

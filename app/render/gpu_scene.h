@@ -4,6 +4,7 @@
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "scene/scene.h"
+#include "technique.h"
 
 #include <epoxy/gl.h>
 
@@ -24,6 +25,10 @@ struct GpuMesh {
 int materialVariant(const Material& m);
 std::string materialDefines(int variant);
 
+// The stages that draw casters into a shadow map of `layout`: passes/shadow.vert, the
+// tessellation stages when the layout bends edges (Layout::tessellatesCasters), `fragment`.
+std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment);
+
 // The programs one pass draws the scene with: `base` plus each variant's defines, built on
 // first use, then `setup` (the pass's uniforms and textures) runs once per program per pass.
 // The pass's texture units are shared by its programs, the materials' textures included.
@@ -32,6 +37,7 @@ class PassPrograms {
   PassPrograms(ShaderLibrary& shaders, ProgramSpec base, ProgramSetup setup)
       : shaders_(shaders), base_(std::move(base)), setup_(std::move(setup)) {}
   const Program* get(int variant);  // bound with glUseProgram; nullptr when it does not build
+  bool patches() const;             // tessellation stages: the scene is drawn as 3-vertex patches
   TextureUnits& units() { return units_; }
 
  private:

@@ -37,7 +37,7 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     std::memcpy(block.view[i], glm::value_ptr(v.view), sizeof(block.view[i]));
     std::memcpy(block.viewProj[i], glm::value_ptr(v.viewProj), sizeof(block.viewProj[i]));
     const float range[4] = {v.nearPlane, v.farPlane, v.texelWorldSize, v.perspective ? 1.0f : 0.0f};
-    const float split[4] = {v.splitNear, v.splitFar, v.blendBand, 0.0f};
+    const float split[4] = {v.splitNear, v.splitFar, v.blendBand, v.logDelta};
     std::memcpy(block.range[i], range, sizeof(range));
     std::memcpy(block.split[i], split, sizeof(split));
   }

@@ -15,10 +15,8 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
            const Technique& t = vp.technique;
            glEnable(GL_DEPTH_TEST);
            static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
-           const ProgramSpec spec{
-               "shadowmap " + t.layout->id() + "+" + t.representation->id(),
-               {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, t.representation->shadowMapFragment()}},
-               prelude};
+           const ProgramSpec spec{"shadowmap " + t.layout->id() + "+" + t.representation->id(),
+                                  casterStages(*t.layout, t.representation->shadowMapFragment()), prelude};
            const GLenum cull = culled[t.params.i("shadowmap.cull")];
            // A deep map draws its semi-transparent casters into its own fragment lists instead.
            const auto only = t.representation->opaqueShadowPass() ? GpuScene::Only::Opaque : GpuScene::Only::All;
@@ -59,6 +57,7 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.time = in.time;
   part.shaders = &shaders_;
   part.params = &vp.technique.params;
+  part.layout = vp.technique.layout;
   part.lightSpace = &vp.lightSpace;
   part.view = view_;
   part.proj = proj_;

@@ -9,7 +9,13 @@
 uniform float u_shadowMapSize;
 uniform int u_shadowView;  // the view the shadow pass rasterizes (passes/shadow.vert)
 
-vec4 layoutClipIn(vec3 worldPos, int view) { return lightViewProjMatrix[view] * vec4(worldPos, 1.0); }
+vec4 layoutClipIn(vec3 worldPos, int view) {
+  vec4 c = lightViewProjMatrix[view] * vec4(worldPos, 1.0);
+#ifdef SL_LOG_WARP
+  c.y = (2.0 * logWarp(c.y * 0.5 + 0.5, lightViewSplit[view].w) - 1.0) * c.w;  // layouts/logpsm.glsl
+#endif
+  return c;
+}
 
 float layoutDepthIn(vec3 worldPos, int view) {
   float z = -(lightViewMatrix[view] * vec4(worldPos, 1.0)).z;

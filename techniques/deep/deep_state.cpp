@@ -4,6 +4,7 @@
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "render/frame_graph.h"
+#include "render/gpu_scene.h"
 #include "scene/scene_effects.h"
 
 #include <algorithm>
@@ -145,8 +146,7 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
   glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_);
   glViewport(0, 0, deepSize_, deepSize_);
   glDisable(GL_DEPTH_TEST);
-  const ProgramSpec spec{"deep fragments",
-                         {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/deep_fragments.frag"}},
+  const ProgramSpec spec{"deep fragments", casterStages(*ctx.layout, "passes/deep_fragments.frag"),
                          ctx.techniquePrelude};
   for (int layer = 0; layer < layers_; ++layer) {
     ctx.drawSemiTransparent(spec, [&ctx, layer](const Program& p, TextureUnits& units) {

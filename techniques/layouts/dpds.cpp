@@ -1,6 +1,7 @@
 #include "layouts/dpds.h"
 
 #include "layouts/light_frame.h"
+#include "layouts/logpsm.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ const LightView* viewFor(const LightSpace& ls, float z) {
 }
 
 glm::vec2 texelsAt(const LightView& v, int size, const glm::vec3& p, bool& inside) {
-  const glm::vec4 c = v.viewProj * glm::vec4(p, 1.0f);
+  const glm::vec4 c = lightViewClip(v, p);  // the log warp (LogPSM) included
   inside = c.w > 1e-6f && std::abs(c.x) <= c.w && std::abs(c.y) <= c.w;
   return glm::vec2(c) / c.w * (0.5f * static_cast<float>(size));
 }

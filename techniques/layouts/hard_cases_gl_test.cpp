@@ -48,6 +48,7 @@ TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
     for (const auto& [preset, sets] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"lispsm", {"shadowmap.size=1024"}},
              {"psm", {"shadowmap.size=1024"}},
+             {"logpsm", {"shadowmap.size=1024"}},
              {"tsm", {"shadowmap.size=1024"}},
              {"face-partitioned", {"shadowmap.size=512"}},
              {"cascaded", {"shadowmap.size=512"}},

@@ -106,16 +106,18 @@ LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sin
 
 }  // namespace
 
-// The light view with -z along the light and +y along the view direction projected onto the
-// light's plane, turned toward the fixed basis (lightViewMatrix) by 1 - w near the fallback.
-static glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
-                           float roll) {
+glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
+                    float roll) {
   const glm::vec3 L = glm::normalize(light.direction);
-  glm::vec3 up = glm::normalize(viewDir - L * cosGamma);
+  const glm::vec3 projected = viewDir - L * cosGamma;
+  // Looking straight along the light the view has no direction on the light's plane (w is 0
+  // there): the fixed basis, not normalize(0) = NaN.
+  glm::vec3 up = glm::length(projected) > 1e-6f ? glm::normalize(projected) : glm::vec3(0.0f);
+  if (up == glm::vec3(0.0f)) w = 0.0f;
   if (w < 1.0f) {
     const glm::mat4 fixed = lightViewMatrix(light, 0.0f);
     const glm::vec3 fixedUp(fixed[0][1], fixed[1][1], fixed[2][1]);
-    const float angle = std::atan2(glm::dot(glm::cross(fixedUp, up), L), glm::dot(fixedUp, up));
+    const float angle = w > 0.0f ? std::atan2(glm::dot(glm::cross(fixedUp, up), L), glm::dot(fixedUp, up)) : 0.0f;
     up = glm::vec3(glm::rotate(glm::mat4(1.0f), angle * w, L) * glm::vec4(fixedUp, 0.0f));
   }
   glm::mat4 lightView = glm::lookAt(eye, eye + L, up);

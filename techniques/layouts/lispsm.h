@@ -18,6 +18,11 @@ struct LispsmN {
 };
 LispsmN lispsmN(const ParamSet& params);  // from lispsm.n and lispsm.n_scale
 std::vector<ParamDecl> lispsmParams();    // their declarations (lispsm and cascaded share them)
+// The light view with -z along the light and +y along the view direction projected onto the
+// light's plane, turned toward the fixed basis (lightViewMatrix) by 1 - w near the fallback
+// (w = 1: fully turned to the view). LiSPSM and LogPSM warp along its +y.
+glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
+                    float roll);
 LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
                      const std::vector<glm::vec3>& casters, const LispsmN& n, int size, const LayoutJitter& jitter);
 }  // namespace sl

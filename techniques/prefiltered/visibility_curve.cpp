@@ -1,5 +1,7 @@
 #include "prefiltered/visibility_curve.h"
 
+#include "layouts/logpsm.h"
+
 #include "gl/texture_units.h"
 #include "render/renderer.h"
 
@@ -63,7 +65,7 @@ std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, i
 }
 
 bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth) {
-  const glm::vec4 clip = view.viewProj * glm::vec4(world, 1.0f);
+  const glm::vec4 clip = lightViewClip(view, world);  // the log warp (LogPSM) included
   if (!(clip.w > 1e-6f)) return false;
   uvLayer = glm::vec3(glm::vec2(clip) / clip.w * 0.5f + 0.5f, 0.0f);
   depth = (-(view.view * glm::vec4(world, 1.0f)).z - view.nearPlane) / (view.farPlane - view.nearPlane);

@@ -1,0 +1,217 @@
+// The LogPSM layout (see logpsm.h).
+#include "layouts/logpsm.h"
+
+#include "layouts/light_frame.h"
+#include "layouts/lispsm.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+namespace sl {
+
+namespace {
+
+constexpr int kMaxTessLevel = 64;  // GL_MAX_TESS_GEN_LEVEL is at least 64
+// As LiSPSM: below kFallbackSinGamma the view looks along the light and no warp helps; up to
+// kFullWarpSinGamma δ shrinks smoothly from "no warp" and the basis turns to the view.
+constexpr float kFallbackSinGamma = 0.05f, kFullWarpSinGamma = 0.15f;
+constexpr float kNoWarpDelta = 1e6f;  // δ above this: the warp is the identity to float precision
+
+// The longest edge of any triangle in world units (instances' scales included), cached per
+// scene: it decides how fine the tessellation must be, hence how strong the warp may be.
+float longestCasterEdge(const Scene& scene) {
+  static std::mutex mutex;
+  static const Scene* cachedScene = nullptr;
+  static size_t cachedTriangles = 0;
+  static float cachedEdge = 0.0f;
+  size_t triangles = 0;
+  for (const Mesh& m : scene.meshes) triangles += m.indices.size();
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cachedScene == &scene && cachedTriangles == triangles) return cachedEdge;
+  std::vector<float> meshEdge(scene.meshes.size(), 0.0f);
+  for (size_t k = 0; k < scene.meshes.size(); ++k) {
+    const Mesh& m = scene.meshes[k];
+    for (size_t i = 0; i + 2 < m.indices.size(); i += 3)
+      for (int e = 0; e < 3; ++e)
+        meshEdge[k] =
+            std::max(meshEdge[k], glm::length(m.positions[m.indices[i + e]] - m.positions[m.indices[i + (e + 1) % 3]]));
+  }
+  float edge = 0.0f;
+  for (const Instance& inst : scene.instances) {
+    const glm::mat4 t = inst.transformAt(0.0);
+    const float scale =
+        std::max({glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])), glm::length(glm::vec3(t[2]))});
+    edge = std::max(edge, meshEdge[size_t(inst.mesh)] * scale);
+  }
+  cachedScene = &scene, cachedTriangles = triangles, cachedEdge = edge;
+  return edge;
+}
+
+}  // namespace
+
+float logWarp(float t, float delta) {
+  if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
+  const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ
+  return float(std::log1p(x) / std::log1p(1.0 / delta));
+}
+
+glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
+  glm::vec4 c = view.viewProj * glm::vec4(world, 1.0f);
+  if (view.logDelta > 0.0f) c.y = (2.0f * logWarp(c.y * 0.5f + 0.5f, view.logDelta) - 1.0f) * c.w;
+  return c;
+}
+
+// Linear interpolation of u(t) over [0, h] errs by at most h^2 max|u''| / 8, with
+// |u''| = 1 / (C (δ + t)^2) largest at t = 0 and C = ln(1 + 1/δ); u in [0, 1] spans `size` texels.
+float logChordErrorTexels(float delta, float span, int segments, int size) {
+  const double h = double(span) / std::max(segments, 1), c = std::log1p(1.0 / delta);
+  return float(double(size) * h * h / (8.0 * c * double(delta) * delta));
+}
+
+float logDeltaForError(float span, float maxErrorTexels, int size) {
+  double lo = 1e-6, hi = kNoWarpDelta;  // the error falls as δ grows: bisect in log space
+  for (int i = 0; i < 80; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    (logChordErrorTexels(float(mid), span, kMaxTessLevel, size) > maxErrorTexels ? lo : hi) = mid;
+  }
+  return float(hi);
+}
+
+namespace {
+
+struct LogFit {
+  LightSpace space;
+  float delta = 0.0f, deltaView = 0.0f, deltaBudget = 0.0f, span = 0.0f, errorTexels = 0.0f;
+  bool tessellated = true;
+};
+
+// The orthographic window around the receivers in the view-aligned light basis, casters along
+// the light, and δ from the viewer's distance to the window's near side.
+LogFit logFit(const LayoutInput& in) {
+  const FocusBody body = focusBody(in);
+  const Light light = layoutLight(in);
+  LogFit fit;
+  if (light.type == Light::Type::Spot) {  // the paper's warp for spot lights is not done here
+    fit.space = focusedMap(in, body);
+    return fit;
+  }
+  const glm::mat4 invView = glm::inverse(in.cameraView);
+  const glm::vec3 eye(invView[3]), viewDir = -glm::normalize(glm::vec3(invView[2]));
+  const float cosGamma = glm::dot(viewDir, glm::normalize(light.direction));
+  const float sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
+  const float s = std::clamp((sinGamma - kFallbackSinGamma) / (kFullWarpSinGamma - kFallbackSinGamma), 0.0f, 1.0f);
+  const float w = s * s * (3.0f - 2.0f * s);
+  const glm::mat4 lightView = warpBasis(light, eye, viewDir, cosGamma, w, in.jitter.rotationRad);
+
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  float zn = 1e30f;
+  for (const auto& p : body.receivers) {
+    const glm::vec3 q(lightView * glm::vec4(p, 1.0f));
+    lo = glm::min(lo, q), hi = glm::max(hi, q);
+    zn = std::min(zn, glm::dot(p - eye, viewDir));
+  }
+  float zMin = lo.z, zMax = hi.z;  // light-view z (toward the light = larger)
+  for (const auto& p : body.casters) {
+    const float z = (lightView * glm::vec4(p, 1.0f)).z;
+    zMin = std::min(zMin, z), zMax = std::max(zMax, z);
+  }
+  const glm::vec2 extent = glm::max(glm::vec2(hi - lo), glm::vec2(1e-4f));
+  const glm::vec2 jitter = in.jitter.offsetTexels * extent / float(body.size);
+  LightView v;
+  v.perspective = true;  // warped: depth written per fragment, texel sizes measured by the shaders
+  v.view = lightView;
+  v.windowMin = glm::vec2(lo) + jitter;
+  v.windowMax = glm::vec2(hi) + jitter;
+  const float margin = std::max(1e-3f, (zMax - zMin) * 1e-3f);
+  v.nearPlane = -zMax - margin;
+  v.farPlane = -zMin + margin;
+  v.proj = glm::ortho(v.windowMin.x, v.windowMax.x, v.windowMin.y, v.windowMax.y, v.nearPlane, v.farPlane);
+  v.viewProj = v.proj * v.view;
+  v.texelWorldSize = extent.x / float(body.size);  // at the near side; shaders measure the rest
+
+  // The viewer sits (lo.y - eye's y) before the window's near side, plus z_n sin(gamma) for the
+  // near plane; the logarithm's pole goes that far before t = 0, so u ~ ln(view distance).
+  const float eyeY = (lightView * glm::vec4(eye, 1.0f)).y;
+  const float distance = std::max(lo.y - eyeY, 0.0f) + std::max(zn, 1e-3f) * std::max(sinGamma, 1e-3f);
+  fit.deltaView = in.params->f("logpsm.delta_scale") * distance / extent.y / std::max(w, 1e-6f);
+  fit.span = std::min(longestCasterEdge(*in.scene) / extent.y, 1.0f);
+  fit.deltaBudget = logDeltaForError(fit.span, in.params->f("logpsm.max_error"), body.size);
+  fit.delta = std::max(fit.deltaView, fit.deltaBudget);
+  if (!std::isfinite(fit.delta)) fit.delta = kNoWarpDelta;  // a degenerate body: no warp rather than NaN
+  v.logDelta = fit.delta >= kNoWarpDelta ? 0.0f : fit.delta;
+  fit.tessellated = in.params->b("logpsm.tessellate");
+  fit.errorTexels = v.logDelta > 0.0f
+                        ? logChordErrorTexels(fit.delta, fit.span, fit.tessellated ? kMaxTessLevel : 1, body.size)
+                        : 0.0f;
+  fit.space = LightSpace::single(v, body.size);
+  return fit;
+}
+
+class LogPsmState : public LayoutState {
+ public:
+  using LayoutState::LayoutState;
+  LightSpace compute(const LayoutInput& in) override {
+    fit_ = logFit(in);
+    return fit_.space;
+  }
+  std::string status() const override {
+    if (fit_.delta <= 0.0f) return "logpsm: spot light, focused map (no warp)";
+    char text[200];
+    std::snprintf(text, sizeof text, "delta %.3g (%s); texel density near/far %.1fx; %s <= %.2f texels",
+                  double(fit_.delta), fit_.deltaBudget > fit_.deltaView ? "limited by the error budget" : "viewer",
+                  double(1.0f + 1.0f / fit_.delta),
+                  fit_.tessellated ? "chords" : "untessellated edges (tessellate off)", double(fit_.errorTexels));
+    return text;
+  }
+
+ private:
+  LogFit fit_;
+};
+
+class LogPsmLayout : public Layout {
+ public:
+  std::string id() const override { return "logpsm"; }
+  std::string help() const override {
+    return "logarithmic warp along the projected view direction (after Lloyd et al. 2008), casters tessellated "
+           "so the bent edges are drawn as chords within an error budget";
+  }
+  std::string glslModule() const override { return "layouts/logpsm.glsl"; }
+  bool tessellatesCasters() const override { return true; }
+  std::vector<ParamDecl> params() const override {
+    return {{.key = "logpsm.delta_scale",
+             .type = ParamType::Float,
+             .min = 0.05,
+             .max = 100,
+             .defaultValue = 1,
+             .unit = "x",
+             .help = "the logarithm's offset δ as a multiple of the viewer's distance to the map (small = stronger "
+                     "warp, more texels near the viewer; large = towards a uniform map)",
+             .logScale = true},
+            {.key = "logpsm.max_error",
+             .type = ParamType::Float,
+             .min = 0.05,
+             .max = 16,
+             .defaultValue = 0.5,
+             .unit = "texels",
+             .help = "largest distance between a tessellated caster edge and the true warped curve; the warp is "
+                     "weakened until the scene's longest edge meets it at the largest tessellation level",
+             .logScale = true},
+            {.key = "logpsm.tessellate",
+             .type = ParamType::Bool,
+             .defaultValue = 1,
+             .help = "subdivide casters before warping them (off: each triangle drawn straight between its warped "
+                     "corners, as a plain rasterizer would: bent shadow edges, for teaching)"}};
+  }
+  LightSpace compute(const LayoutInput& in) const override { return logFit(in).space; }
+  std::unique_ptr<LayoutState> createState() const override { return std::make_unique<LogPsmState>(*this); }
+};
+
+}  // namespace
+
+void registerLogLayouts(std::vector<std::unique_ptr<Layout>>& out) { out.push_back(std::make_unique<LogPsmLayout>()); }
+
+}  // namespace sl

@@ -1,0 +1,116 @@
+// LogPSM (layouts/logpsm.h): the warp's identities, the chord-error bound against the real
+// largest deviation of a chord from the warped curve (computed here, densely), δ from the error
+// budget, the dp/ds curve flatter than LiSPSM's and close to the ideal logarithmic one, and on
+// the GPU: the tessellated map against the ray-traced reference, with and without subdivision.
+#include "tests/gl_test_util.h"
+#include "layouts/dpds.h"
+#include "layouts/layout_test_util.h"
+#include "layouts/logpsm.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+namespace {
+
+TEST(LogPsm, WarpFixesTheEndsIsMonotonicAndVanishesForLargeDelta) {
+  for (float delta : {1e-3f, 0.05f, 1.0f, 100.0f}) {
+    EXPECT_NEAR(logWarp(0.0f, delta), 0.0f, 1e-6f) << delta;
+    EXPECT_NEAR(logWarp(1.0f, delta), 1.0f, 1e-5f) << delta;
+    float last = -1e9f;
+    for (float t = -0.5f; t <= 1.5f; t += 0.01f) {
+      const float u = logWarp(t, delta);
+      ASSERT_TRUE(std::isfinite(u)) << t << " " << delta;  // before the pole too: clamped, never NaN
+      EXPECT_GE(u, last) << t << " " << delta;
+      last = u;
+    }
+  }
+  EXPECT_NEAR(logWarp(0.3f, 5e5f), 0.3f, 1e-5f);  // nearly uniform
+  EXPECT_EQ(logWarp(0.3f, 0.0f), 0.3f);           // no warp
+  // Texel density at the near side over the far side: (1 + δ) / δ.
+  const float delta = 0.01f, h = 1e-4f;
+  const float nearSlope = (logWarp(h, delta) - logWarp(0.0f, delta)) / h;
+  const float farSlope = (logWarp(1.0f, delta) - logWarp(1.0f - h, delta)) / h;
+  EXPECT_NEAR(nearSlope / farSlope, (1.0f + delta) / delta, 0.02f * (1.0f + delta) / delta);
+}
+
+// The largest distance, in texels, between the warped curve and the chords of `segments`
+// equal pieces of [0, span], found by sampling.
+float measuredChordError(float delta, float span, int segments, int size) {
+  double worst = 0.0;
+  for (int s = 0; s < segments; ++s) {
+    const double a = double(span) * s / segments, b = double(span) * (s + 1) / segments;
+    const double ua = logWarp(float(a), delta), ub = logWarp(float(b), delta);
+    for (int k = 1; k < 200; ++k) {
+      const double f = k / 200.0, t = a + (b - a) * f;
+      worst = std::max(worst, std::abs(double(logWarp(float(t), delta)) - (ua + (ub - ua) * f)));
+    }
+  }
+  return float(worst * size);
+}
+
+TEST(LogPsm, ChordErrorBoundHoldsAndIsTightAndTheBudgetPicksTheSmallestDelta) {
+  for (float delta : {0.003f, 0.03f, 0.3f})
+    for (int segments : {4, 16, 64}) {
+      const float bound = logChordErrorTexels(delta, 1.0f, segments, 2048);
+      const float real = measuredChordError(delta, 1.0f, segments, 2048);
+      EXPECT_LE(real, bound * 1.001f) << delta << " " << segments;
+      // Tight where the first piece is short against δ (the bound is its second-order term).
+      if (1.0f / segments < delta) EXPECT_GT(real, 0.5f * bound) << delta << " " << segments;
+    }
+  for (float budget : {0.25f, 1.0f, 4.0f}) {
+    const float delta = logDeltaForError(1.0f, budget, 2048);
+    EXPECT_LE(logChordErrorTexels(delta, 1.0f, 64, 2048), budget * 1.001f);
+    EXPECT_GT(logChordErrorTexels(delta * 0.95f, 1.0f, 64, 2048), budget);  // the smallest such δ
+  }
+  // Shorter caster edges allow a stronger warp.
+  EXPECT_LT(logDeltaForError(0.05f, 0.5f, 2048), logDeltaForError(1.0f, 0.5f, 2048));
+}
+
+// Spread of log10(ratio) over the samples inside the map: 0 = perfectly even aliasing.
+float spread(const DpdsCurve& c) {
+  float lo = 1e30f, hi = -1e30f;
+  for (float r : c.ratio)
+    if (std::isfinite(r)) lo = std::min(lo, std::log10(r)), hi = std::max(hi, std::log10(r));
+  return hi - lo;
+}
+
+TEST(LogPsm, AliasingAlongTheViewIsFlatterThanLispsmAndFocused) {
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  // A generous budget lets the warp follow the viewer (not the scene's long ground edges).
+  const auto curves =
+      dpdsCurves(scene, scene.cameras.front(), 1280, 720, {"standard", "lispsm", "logpsm:logpsm.max_error=16"}, 64);
+  ASSERT_EQ(curves.size(), 4u);
+  EXPECT_LT(spread(curves[2]), 0.5f * spread(curves[1])) << "LogPSM vs LiSPSM";
+  EXPECT_LT(spread(curves[2]), 0.25f * spread(curves[0])) << "LogPSM vs focused";
+}
+
+TEST(LogPsm, TheLayoutReportsItsWarpAndFallsBackForASpotLight) {
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  const LightSpace ls = test::layoutFor("logpsm", scene, scene.cameras.front());
+  EXPECT_GT(ls.primary().logDelta, 0.0f);
+  EXPECT_TRUE(ls.perspective());  // depth per fragment, texel sizes measured by the shaders
+  Scene spot = loadScene("spotlight", defaultAssetsDir());
+  EXPECT_EQ(test::layoutFor("logpsm", spot, spot.cameras.front()).primary().logDelta, 0.0f);
+}
+
+// The point of the tessellation: without it, straight chords between warped corners of the
+// ground's long triangles put the ground's stored depth in the wrong texels (false shadow).
+TEST(LogPsmGl, TessellatedCastersMatchTheReferenceAndUnsubdividedOnesDoNot) {
+  test::GlHarness h;
+  const Scene scene = loadScene("columns", defaultAssetsDir());
+  const test::Frame on = test::renderOnce(h, scene, "logpsm", {}, 320, 180);
+  const test::Frame off = test::renderOnce(h, scene, "logpsm", {"logpsm.tessellate=off"}, 320, 180);
+  const test::Frame lispsm = test::renderOnce(h, scene, "lispsm", {}, 320, 180);
+  EXPECT_EQ(on.nonfinite(), 0);
+  const ErrorMetrics eOn = test::visibilityError(scene, on), eOff = test::visibilityError(scene, off);
+  const ErrorMetrics eLispsm = test::visibilityError(scene, lispsm);
+  EXPECT_LT(eOn.wrongPixelPct, 0.5);
+  EXPECT_GT(eOff.wrongPixelPct, 10.0 * std::max(eOn.wrongPixelPct, 0.01));
+  EXPECT_LE(eOn.wrongPixelPct, eLispsm.wrongPixelPct * 1.5 + 0.02);  // no worse than LiSPSM at equal texels
+}
+
+}  // namespace
+}  // namespace sl
