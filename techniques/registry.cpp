@@ -36,6 +36,11 @@ const std::vector<ParamDecl>& commonParams() {
        .help = "faces stored in the shadow map: front (standard), back (second-depth shadow mapping, Wang & Molnar "
                "1994), or both",
        .choices = {"front", "back", "both"}},
+      {.key = "shadowmap.cull_instances",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .help = "skip, per light view (each cascade, face or layer), instances whose bounds lie outside its window: "
+               "they cannot cast into it (same image, less drawing)"},
       {.key = "bias.mode",
        .type = ParamType::Enum,
        .defaultValue = 2,

@@ -33,6 +33,9 @@ GpuScene::GpuScene(const Scene& s) : scene(s) {
       glVertexArrayAttribBinding(g.vao, a, 0);
     }
     g.indexCount = static_cast<GLsizei>(m.indices.size());
+    if (!m.positions.empty()) g.boundsMin = g.boundsMax = m.positions.front();
+    for (const glm::vec3& p : m.positions)
+      g.boundsMin = glm::min(g.boundsMin, p), g.boundsMax = glm::max(g.boundsMax, p);
     std::string name = "mesh " + m.name;
     label(GL_VERTEX_ARRAY, g.vao, name);
     label(GL_BUFFER, g.vbo, name + " vertices");
@@ -104,7 +107,27 @@ const Program* PassPrograms::get(int variant) {
   return programs_[variant];
 }
 
-void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only) const {
+namespace {
+
+// True when the box (object space, placed by `model`) lies wholly outside one side of the clip
+// window of `viewProj` in x or y, every corner in front of the projection (w > 0).
+bool outsideWindow(const glm::mat4& viewProj, const glm::mat4& model, glm::vec3 lo, glm::vec3 hi) {
+  const glm::mat4 m = viewProj * model;
+  int left = 0, right = 0, below = 0, above = 0;
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    const glm::vec4 c = m * glm::vec4(corner, 1.0f);
+    if (!(c.w > 1e-6f)) return false;  // behind a projection's centre, or NaN: keep it
+    left += c.x<-c.w, right += c.x> c.w, below += c.y<-c.w, above += c.y> c.w;
+  }
+  return left == 8 || right == 8 || below == 8 || above == 8;
+}
+
+}  // namespace
+
+int GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only,
+                   const glm::mat4* cullTo) const {
+  int drawn = 0;
   const GLenum mode = programs.patches() ? GL_PATCHES : GL_TRIANGLES;
   if (mode == GL_PATCHES) glPatchParameteri(GL_PATCH_VERTICES, 3);
   for (int variant = 0; variant < 4; ++variant) {
@@ -116,12 +139,13 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
       const Material& mat = scene.materials[static_cast<size_t>(m.material)];
       if (materialVariant(mat) != variant) continue;
       if (only != Only::All && (only == Only::SemiTransparent) != instanceSemiTransparent(scene, index)) continue;
+      const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
+      if (cullTo && outsideWindow(*cullTo, inst.transformAt(time), g.boundsMin, g.boundsMax)) continue;
       if (!asked) {
         program = programs.get(variant);
         asked = true;
       }
-      if (!program) break;  // its error is reported by the shader library
-      const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
+      if (!program) break;                                    // its error is reported by the shader library
       program->set("u_instanceId", static_cast<int>(index));  // G-buffer surface ids
       program->set("u_model", inst.transformAt(time));
       program->set("u_prevModel", inst.transformAt(prevTime));
@@ -137,10 +161,12 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
       }
       glBindVertexArray(g.vao);
       glDrawElements(mode, g.indexCount, GL_UNSIGNED_INT, nullptr);
+      ++drawn;
     }
   }
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
+  return drawn;
 }
 
 }  // namespace sl

@@ -17,6 +17,7 @@ namespace sl {
 struct GpuMesh {
   GLuint vao = 0, vbo = 0, ibo = 0;
   GLsizei indexCount = 0;
+  glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // object space, for culling instances against a light view
 };
 
 // Materials come in four shader variants (bit 0: base-colour texture, bit 1: alpha mask), so
@@ -60,7 +61,12 @@ struct GpuScene {
   // leaf cards must cast from both sides.
   // `only` keeps all instances, the opaque ones or the semi-transparent ones (scene_effects.h).
   enum class Only { All, Opaque, SemiTransparent };
-  void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All) const;
+  // cullTo: a light view's viewProj; instances whose bounds lie wholly beyond one side of its
+  // window (|x| or |y| > w at every corner, all in front) are skipped: an orthographic or
+  // projective light casts along its rays, so they cannot shadow anything in that view. Depth is
+  // never culled (casters toward the light must stay). Returns the instances drawn.
+  int draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All,
+           const glm::mat4* cullTo = nullptr) const;
 
   const Scene& scene;
   std::vector<GpuMesh> meshes;

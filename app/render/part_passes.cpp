@@ -21,13 +21,15 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
            // A deep map draws its semi-transparent casters into its own fragment lists instead.
            const auto only = t.representation->opaqueShadowPass() ? GpuScene::Only::Opaque : GpuScene::Only::All;
            for (int layer = 0; layer < static_cast<int>(vp.lightSpace.views.size()); ++layer) {
+             const glm::mat4* cullTo =
+                 t.params.b("shadowmap.cull_instances") ? &vp.lightSpace.views[size_t(layer)].viewProj : nullptr;
              if (!vp.layout->drawsTiles()) {
                vp.representation->beginShadowLayer(layer);
                PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
                  bindTechnique(p, units, vp);
                  p.set("u_shadowView", layer);
                });
-               gpu_->draw(programs, in.time, in.time, cull, only);
+               gpu_->draw(programs, in.time, in.time, cull, only, cullTo);
                continue;
              }
              // Piecewise (paged) layer: only the tiles the layout asks for, each into its viewport.
@@ -40,7 +42,7 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                  p.set("u_shadowView", layer);
                  vp.layout->bindShadowTile(p, layer, tile);
                });
-               gpu_->draw(programs, in.time, in.time, cull, only);
+               gpu_->draw(programs, in.time, in.time, cull, only, cullTo);
              }
              glDisable(GL_SCISSOR_TEST);
            }
