@@ -20,8 +20,32 @@ namespace sl {
 
 void registerAccumulations(std::vector<std::unique_ptr<Accumulation>>& out);
 
+namespace {
+
+std::vector<std::string> layoutIds() {
+  std::vector<std::string> ids;
+  for (const auto& l : allLayouts()) ids.push_back(l->id());
+  return ids;
+}
+
+// The composition's layout as a parameter: any preset's representation and accumulation over any
+// layout (pixel-correct over TSM, VSM over cascades), chosen like any other value, swept by
+// bench. Changing it rebuilds the technique (recomposed), since the parameters change with it.
+ParamDecl layoutChoice() {
+  return {.key = kLayoutParam,
+          .type = ParamType::Enum,
+          .defaultValue = 0,  // set to the preset's own layout by makeTechnique
+          .help =
+              "where the texels go: any layout under this preset's representation and accumulation (the "
+              "preset's own by default; its layout parameters come with it)",
+          .choices = layoutIds()};
+}
+
+}  // namespace
+
 const std::vector<ParamDecl>& commonParams() {
   static const std::vector<ParamDecl> decls = {
+      layoutChoice(),
       {.key = "shadowmap.size",
        .type = ParamType::Int,
        .min = 64,
@@ -262,9 +286,18 @@ Technique makeTechnique(const std::string& presetId, const std::vector<std::stri
     for (const auto& p : allPresets()) ids += (ids.empty() ? "" : ", ") + p.id;
     throw ParamError("unknown technique '" + presetId + "' (available: " + ids + ")");
   }
+  // The layout comes first: the other overrides may set its parameters.
+  std::string layoutId = preset->layout;
+  for (const auto& o : overrides)
+    if (o.rfind(std::string(kLayoutParam) + "=", 0) == 0) layoutId = o.substr(std::string(kLayoutParam).size() + 1);
   Technique t;
   t.presetId = presetId;
-  t.layout = findLayout(preset->layout);
+  t.layout = findLayout(layoutId);
+  if (!t.layout) {
+    std::string ids;
+    for (const auto& l : allLayouts()) ids += (ids.empty() ? "" : ", ") + l->id();
+    throw ParamError(std::string(kLayoutParam) + ": no layout '" + layoutId + "' (layouts: " + ids + ")");
+  }
   t.representation = findRepresentation(preset->representation);
   t.accumulation = findAccumulation(preset->accumulation);
   if (!t.layout || !t.representation || !t.accumulation)
@@ -273,9 +306,20 @@ Technique makeTechnique(const std::string& presetId, const std::vector<std::stri
   for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
     decls.insert(decls.end(), part.begin(), part.end());
   t.params = ParamSet(std::move(decls));
-  for (const auto& o : preset->overrides) t.params.setAssignment(o);
+  t.params.setFromString(kLayoutParam, layoutId);
+  // A preset's overrides of its own layout's parameters do not apply over another layout.
+  for (const auto& o : preset->overrides)
+    if (t.params.has(o.substr(0, o.find('='))) || layoutId == preset->layout) t.params.setAssignment(o);
   for (const auto& o : overrides) t.params.setAssignment(o);
   return t;
+}
+
+Technique recomposed(const Technique& t) {
+  if (!t.layout || !t.params.has(kLayoutParam) || t.params.choice(kLayoutParam) == t.layout->id()) return t;
+  Technique fresh = makeTechnique(t.presetId, {std::string(kLayoutParam) + "=" + t.params.choice(kLayoutParam)});
+  for (const ParamDecl& d : t.params.decls())
+    if (d.key != kLayoutParam && fresh.params.has(d.key)) fresh.params.set(d.key, t.params.get(d.key));
+  return fresh;
 }
 
 }  // namespace sl

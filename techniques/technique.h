@@ -281,8 +281,16 @@ struct Technique {
   std::string label() const;  // "pcf (focused + depth-pcf)"
 };
 
+// The parameter that picks the composition's layout (every technique has it; commonParams).
+inline constexpr const char* kLayoutParam = "technique.layout";
+
 // Builds a technique from a preset id and applies "key=value" overrides; throws ParamError
-// with a clear message for an unknown preset or a bad override.
+// with a clear message for an unknown preset or a bad override. An override of
+// technique.layout puts the preset's representation and accumulation over that layout (its
+// parameters can be set in the same list).
 Technique makeTechnique(const std::string& presetId, const std::vector<std::string>& overrides = {});
+// After technique.layout was changed in place (a panel, a sweep): the technique rebuilt over that
+// layout with every value the new one shares carried over; unchanged otherwise.
+Technique recomposed(const Technique& t);
 
 }  // namespace sl

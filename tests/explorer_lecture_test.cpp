@@ -348,5 +348,30 @@ TEST(ExplorerCamera, SpeedIsAShareOfTheSceneSize) {
   EXPECT_TRUE(std::isfinite(small.speed()));
 }
 
+// A layout other than the preset's (technique.layout) survives settings by name, with the values
+// of that layout's own parameters, and a panel edit of it rebuilds the viewport's technique.
+TEST(ExplorerSettings, AChosenLayoutIsSavedByNameAndRestoredWithItsParameters) {
+  ExplorerState state = stateWith({"pixel-correct", "standard"});
+  state.sceneLabel = "basic";
+  paramsOf(state, 0).setFromString(kLayoutParam, "cascaded");
+  EXPECT_EQ(applyCompositionChanges(state), 1);
+  ASSERT_EQ(state.slots[0].viewport->technique.layout->id(), "cascaded");
+  EXPECT_EQ(state.slots[0].viewport->technique.accumulation->id(), "pixel-correct");
+  paramsOf(state, 0).set("cascades.count", 2);
+  const ExplorerSettings s = captureSettings(state);
+  EXPECT_EQ(s.viewports[0].layout, "cascaded");
+  EXPECT_EQ(s.viewports[0].params.count(kLayoutParam), 0u);  // by name, never by index
+  EXPECT_EQ(s.viewports[1].layout, "");
+  const ExplorerSettings loaded = settingsFromJson(settingsToJson(s));
+  ExplorerOptions o;
+  std::string problems;
+  startLayout(o, &loaded, problems);
+  EXPECT_TRUE(problems.empty()) << problems;
+  const Technique t = makeTechnique(o.technique, o.overrides);
+  EXPECT_EQ(t.layout->id(), "cascaded");
+  EXPECT_EQ(t.params.i("cascades.count"), 2);
+  EXPECT_EQ(applyCompositionChanges(state), 0);  // nothing changed since
+}
+
 }  // namespace
 }  // namespace sl

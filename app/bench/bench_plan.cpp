@@ -52,6 +52,7 @@ std::vector<BenchPlanEntry> planBench(const BenchOptions& o) {
     for (auto& t : base)
       if (t.params.has(key)) {
         t.params.setFromString(key, value);  // ParamError for a bad value
+        t = recomposed(t);                   // technique.layout: rebuilt over that layout
         any = true;
       }
     if (!any)
@@ -96,6 +97,7 @@ std::vector<BenchPlanEntry> planBench(const BenchOptions& o) {
         e.technique.params.setFromString(dims[d]->key, dims[d]->values[idx[d]]);
         e.sweepPoint.emplace_back(dims[d]->key, dims[d]->values[idx[d]]);
       }
+      e.technique = recomposed(e.technique);  // a swept technique.layout
       plan.push_back(std::move(e));
       bool carried = true;  // odometer increment over the sweep dimensions
       for (size_t d = dims.size(); d-- > 0;) {

@@ -264,6 +264,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     tour.handleKeys(state, renderer);
     if (soak) soak->beforeFrame(state, renderer, shaders, now);
     if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
+    applyCompositionChanges(state);
     ensureViewportSlots(state);
     applySelectedViews(state);
 

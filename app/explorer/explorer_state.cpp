@@ -36,6 +36,24 @@ void runStillFramesTo(ExplorerState& state, int frames) {
   state.freezeAtFrame = frames;
 }
 
+int applyCompositionChanges(ExplorerState& state) {
+  int rebuilt = 0;
+  for (ViewportSlot& slot : state.slots) {
+    if (!slot.viewport) continue;
+    const Technique& t = slot.viewport->technique;
+    if (!t.params.has(kLayoutParam) || t.params.choice(kLayoutParam) == t.layout->id()) continue;
+    try {
+      slot.viewport->setTechnique(recomposed(t));
+      ++rebuilt;
+    } catch (const std::exception& e) {  // keep the viewport drawing what it had
+      slot.error = e.what();
+      slot.viewport->technique.params.setFromString(kLayoutParam, t.layout->id());
+    }
+  }
+  if (rebuilt > 0) applySelectedViews(state);  // the new layout may offer other views
+  return rebuilt;
+}
+
 bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& idOrPath) {
   std::unique_ptr<Scene> loaded;
   try {

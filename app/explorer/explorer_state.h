@@ -90,6 +90,11 @@ void countRenderedFrame(ExplorerState& state, bool cut);
 // the current run when it has not passed `frames` yet, else cuts and starts again.
 void runStillFramesTo(ExplorerState& state, int frames);
 
+// Viewports whose technique.layout was changed in place (the panel, a linked edit) get their
+// technique rebuilt over that layout (recomposed: shared values kept, history reset). Returns
+// how many were rebuilt.
+int applyCompositionChanges(ExplorerState& state);
+
 // Loads a scene (id or path) and hands it to the renderer; on failure the current scene stays
 // and the message goes to state.sceneError. Returns true on success.
 bool switchScene(ExplorerState& state, Renderer& renderer, const std::string& idOrPath);

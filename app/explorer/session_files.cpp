@@ -22,8 +22,9 @@ double lastSettingsCheck = -1e9;
 // "key=value" for makeTechnique: enums and bools by name (as --set takes them), numbers exactly
 // (%.17g: std::to_string would round a 1e-5 bias away). Throws ParamError for an unknown key.
 std::vector<std::string> settingsOverrides(const ViewportSettings& v) {
-  const Technique probe = makeTechnique(v.preset);
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides;  // the layout first: the values may belong to it
+  if (!v.layout.empty()) overrides.push_back(std::string(kLayoutParam) + "=" + v.layout);
+  const Technique probe = makeTechnique(v.preset, overrides);
   for (const auto& [key, value] : v.params) {
     const ParamDecl* decl = probe.params.find(key);
     if (!decl) throw ParamError("preset '" + v.preset + "' has no parameter '" + key + "'");

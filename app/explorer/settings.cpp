@@ -34,7 +34,8 @@ std::string settingsToJson(const ExplorerSettings& s) {
   j["scene"] = s.scene;
   j["viewports"] = json::array();
   for (const ViewportSettings& v : s.viewports)
-    j["viewports"].push_back({{"preset", v.preset}, {"params", v.params}, {"enlarged_view", v.enlargedView}});
+    j["viewports"].push_back(
+        {{"preset", v.preset}, {"params", v.params}, {"enlarged_view", v.enlargedView}, {"layout", v.layout}});
   j["views"] = s.views;
   j["ui_scale"] = s.uiScale;
   j["camera_speed"] = s.cameraSpeed;
@@ -64,6 +65,7 @@ ViewportSettings viewportFromJson(const json& v) {
   readField(v, "preset", vs.preset);
   readField(v, "params", vs.params);
   readField(v, "enlarged_view", vs.enlargedView);
+  readField(v, "layout", vs.layout);
   if (vs.preset.empty()) throw std::runtime_error("a 'viewports' entry has no 'preset'");
   for (const auto& [key, value] : vs.params)
     if (!std::isfinite(value)) throw std::runtime_error("parameter '" + key + "' is not a finite number");
@@ -154,11 +156,13 @@ ExplorerSettings captureSettings(const ExplorerState& state) {
     const ViewportSlot& slot = state.slots[size_t(i)];
     if (!slot.viewport) continue;
     const Technique& t = slot.viewport->technique;
-    ViewportSettings v{t.presetId, {}, slot.enlargedView};
+    ViewportSettings v{t.presetId, {}, slot.enlargedView, ""};
     try {
-      const ParamSet preset = makeTechnique(t.presetId).params;
+      const Technique preset = makeTechnique(t.presetId);
+      if (t.layout != preset.layout) v.layout = t.layout->id();
       for (const ParamDecl& d : t.params.decls())
-        if (!preset.has(d.key) || preset.get(d.key) != t.params.get(d.key)) v.params[d.key] = t.params.get(d.key);
+        if (d.key != kLayoutParam && (!preset.params.has(d.key) || preset.params.get(d.key) != t.params.get(d.key)))
+          v.params[d.key] = t.params.get(d.key);
     } catch (const std::exception&) {
     }
     s.viewports.push_back(std::move(v));

@@ -17,6 +17,8 @@ struct ViewportSettings {
   std::string preset;
   std::map<std::string, double> params;  // only those that differ from the preset
   std::string enlargedView;              // "" = colour
+  std::string layout;                    // technique.layout by name ("" = the preset's): layouts are
+                                         // added over time, so an index would change meaning
 };
 
 struct ExplorerSettings {
