@@ -159,6 +159,9 @@ class LayoutState : public PartState {
   virtual void beginShadowTile(int layer, int tile) {}
   // The tile's uniforms (its page-local projection) on each program that draws it.
   virtual void bindShadowTile(const Program& p, int layer, int tile) const {}
+  // The clip transform the tile's draw uses after `layerViewProj` (its page of the layer), so
+  // instances outside the tile can be skipped (shadowmap.cull_instances).
+  virtual glm::mat4 shadowTileClip(int layer, int tile, const glm::mat4& layerViewProj) const { return layerViewProj; }
 
  protected:
   const Layout& layout_;

@@ -42,7 +42,8 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
                  p.set("u_shadowView", layer);
                  vp.layout->bindShadowTile(p, layer, tile);
                });
-               gpu_->draw(programs, in.time, in.time, cull, only, cullTo);
+               const glm::mat4 tileClip = cullTo ? vp.layout->shadowTileClip(layer, tile, *cullTo) : glm::mat4(1.0f);
+               gpu_->draw(programs, in.time, in.time, cull, only, cullTo ? &tileClip : nullptr);
              }
              glDisable(GL_SCISSOR_TEST);
            }

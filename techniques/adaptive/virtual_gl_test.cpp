@@ -137,6 +137,19 @@ TEST(VirtualShadowMap, AsAccurateAsAFocused4096MapOnColumnsAndTerrain) {
 
 // The hard scenes are in techniques/layouts/hard_cases_gl_test.cpp (virtual is in its
 // list); here the real glTF scenes, when shared/scenes-real is there.
+// Per-page instance culling (shadowmap.cull_instances): an instance outside a page's square is
+// not drawn into it, and the map is the same texel for texel.
+TEST(VirtualShadowMap, PagesCullInstancesWithoutChangingTheMap) {
+  test::GlHarness h;
+  const Scene scene = loadScene("terrain", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun on = render(h, scene, "virtual", {"shadowmap.cull_instances=on"});
+  const VirtualRun off = render(h, scene, "virtual", {"shadowmap.cull_instances=off"});
+  ASSERT_EQ(on.frame.visibility.size(), off.frame.visibility.size());
+  EXPECT_EQ(on.frame.visibility, off.frame.visibility);
+  EXPECT_GT(shadowed(on.frame), 0) << "nothing shadowed: the comparison would prove nothing";
+}
+
 TEST(VirtualShadowMap, RealScenesStayFinite) {
   test::GlHarness h;
   int ran = 0;

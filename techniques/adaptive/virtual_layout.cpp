@@ -117,13 +117,24 @@ class VirtualState : public LayoutState {
 
   // Maps the page's part of the virtual map's clip square onto the whole viewport.
   void bindShadowTile(const Program& p, int layer, int tile) const override {
-    int level, x, y;
-    pages_.decode(draw_[static_cast<size_t>(tile)], level, x, y);
-    const float n = static_cast<float>(sizes_.pagesPerSide >> level);
-    p.set("u_pageTransform", glm::vec4(n, n, n - 2.0f * x - 1.0f, n - 2.0f * y - 1.0f));
+    p.set("u_pageTransform", pageTransform(tile));
+  }
+  // The same as a matrix after the layer's: instances outside the page are not drawn into it.
+  glm::mat4 shadowTileClip(int layer, int tile, const glm::mat4& layerViewProj) const override {
+    const glm::vec4 t = pageTransform(tile);
+    glm::mat4 page(1.0f);
+    page[0][0] = t.x, page[1][1] = t.y, page[3][0] = t.z, page[3][1] = t.w;
+    return page * layerViewProj;
   }
 
  private:
+  // clip xy * .xy + w * .zw (shaders/layouts/virtual.glsl): the page's square onto [-1, 1]².
+  glm::vec4 pageTransform(int tile) const {
+    int level, x, y;
+    pages_.decode(draw_[static_cast<size_t>(tile)], level, x, y);
+    const float n = static_cast<float>(sizes_.pagesPerSide >> level);
+    return glm::vec4(n, n, n - 2.0f * x - 1.0f, n - 2.0f * y - 1.0f);
+  }
   void ensureGpu() {
     if (marks_ && tableLevels_ == pages_.levels() && tableSide_ == pages_.pagesPerSide()) return;
     if (marks_) glDeleteBuffers(1, &marks_);
