@@ -294,10 +294,9 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
     if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
       drawMagnifier(area.hoveredImage, io.MousePos);
-    if (plotKey && area.hoveredViewport >= 0 && area.hoveredViewport < static_cast<int>(state.slots.size()) &&
-        state.slots[static_cast<size_t>(area.hoveredViewport)].viewport)
-      drawVisibilityPlot(shaders, renderer, *state.slots[static_cast<size_t>(area.hoveredViewport)].viewport,
-                         area.hoveredImage, io.MousePos);
+    if (plotKey && area.hoveredViewport >= 0 && area.hoveredViewport < state.viewportCount)
+      drawVisibilityPlot(shaders, renderer, shownViewports(state), size_t(area.hoveredViewport), area.hoveredImage,
+                         io.MousePos);
 
     drawHelpWindow(state);
 

@@ -1,6 +1,7 @@
 #include "explorer/visibility_plot.h"
 
 #include "deep/deep_curve.h"
+#include "explorer/plot_window.h"
 #include "prefiltered/visibility_curve.h"
 
 #include <memory>
@@ -12,15 +13,6 @@ namespace sl {
 namespace {
 
 constexpr int kSamples = 256;
-
-void drawCurve(ImDrawList* list, ImVec2 min, ImVec2 size, const std::vector<float>& v, ImU32 color, float thickness) {
-  std::vector<ImVec2> points;
-  for (size_t i = 0; i < v.size(); ++i) {
-    const float x = static_cast<float>(i) / static_cast<float>(v.size() - 1);
-    points.emplace_back(min.x + x * size.x, min.y + (1.0f - std::clamp(v[i], 0.0f, 1.0f)) * size.y);
-  }
-  list->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, thickness);
-}
 
 // The reference for the deep plot, rebuilt when the scene or its light changes.
 const ReferenceTracer& deepPlotTracer(const Scene& scene) {
@@ -36,8 +28,36 @@ const ReferenceTracer& deepPlotTracer(const Scene& scene) {
   return *tracer;
 }
 
+PlotSeries curveSeries(std::string label, glm::vec3 colour, float width, const std::vector<float>& values) {
+  PlotSeries s{.label = std::move(label), .colour = colour, .width = width};
+  for (size_t i = 0; i < values.size(); ++i)
+    s.points.emplace_back(float(i) / float(std::max<size_t>(values.size() - 1, 1)), values[i]);
+  return s;
+}
+
+Plot depthPlot(const std::string& title, const std::string& x, const std::string& y, float receiver) {
+  Plot plot;
+  plot.title = title;
+  plot.x = {.label = x, .lo = 0.0f, .hi = 1.0f};
+  plot.y = {.label = y, .lo = -0.2f, .hi = 1.2f, .ticks = {0.0f, 0.5f, 1.0f}};
+  plot.markers = {receiver};
+  return plot;
+}
+
+void showPlotWindow(const char* name, const Plot& plot, const std::string& caption, ImVec2 mouse) {
+  ImGui::SetNextWindowPos(ImVec2(mouse.x + 24, mouse.y + 24));
+  ImGui::Begin(name, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::TextUnformatted(plot.title.c_str());
+  const float line = ImGui::GetTextLineHeight();
+  drawPlotWidget(plot, ImVec2(line * 28.0f, line * 10.0f));
+  drawPlotCaption(caption, line * 28.0f);
+  ImGui::End();
+}
+
 // Deep shadow maps: the stored transmittance of the deep texel under the mouse against light
-// depth (orange) over the reference's along the texel's light ray (white).
+// depth over the reference's along the texel's light ray.
 void drawDeepPlot(const Renderer& renderer, const Viewport& vp, const DeepState& state, const glm::vec3& world,
                   ImVec2 mouse) {
   glm::vec3 uvLayer;
@@ -47,65 +67,62 @@ void drawDeepPlot(const Renderer& renderer, const Viewport& vp, const DeepState&
   const std::vector<float> truth = referenceTexelCurve(deepPlotTracer(*renderer.scene()), vp.lightSpace.primary(),
                                                        state, glm::vec2(uvLayer), kSamples);
   if (curve.empty() || curve.size() != truth.size()) return;
-  ImGui::SetNextWindowPos(ImVec2(mouse.x + 24, mouse.y + 24));
-  ImGui::Begin("transmittance vs light depth", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
-                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  ImGui::Text("%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
-  const ImVec2 size(320, 140), min = ImGui::GetCursorScreenPos();
-  ImDrawList* list = ImGui::GetWindowDrawList();
-  list->AddRectFilled(min, ImVec2(min.x + size.x, min.y + size.y), IM_COL32(20, 20, 24, 255));
-  const float rx = min.x + std::clamp(receiver, 0.0f, 1.0f) * size.x;
-  list->AddLine(ImVec2(rx, min.y), ImVec2(rx, min.y + size.y), IM_COL32(150, 150, 150, 255));
-  drawCurve(list, min, size, truth, IM_COL32(255, 255, 255, 255), 2.0f);
-  drawCurve(list, min, size, curve, IM_COL32(255, 120, 60, 255), 1.5f);
-  ImGui::Dummy(size);
-  ImGui::Text("white: reference (opaque hits included), orange: stored nodes; grey: this pixel's depth %.3f", receiver);
-  ImGui::End();
+  char title[128];
+  std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
+  Plot plot = depthPlot(title, "light depth", "transmittance", receiver);
+  plot.series.push_back(curveSeries("reference (opaque hits included)", glm::vec3(0.0f), 2.0f, truth));
+  plot.series.push_back(curveSeries("stored nodes", glm::vec3(1.0f, 0.47f, 0.24f), 1.5f, curve));
+  showPlotWindow("transmittance vs light depth", plot, "dashed: this pixel's depth", mouse);
 }
 
 }  // namespace
 
-void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const Viewport& vp,
-                        const MagnifierTarget& target, ImVec2 mouse) {
+void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const std::vector<Viewport*>& shown,
+                        size_t hovered, const MagnifierTarget& target, ImVec2 mouse) {
+  if (hovered >= shown.size() || !target.valid() || !renderer.hasFreshGBuffer()) return;
+  const Viewport& vp = *shown[hovered];
   const auto* deep = dynamic_cast<const DeepState*>(vp.representation.get());
   const auto* state = dynamic_cast<const MomentMapState*>(vp.representation.get());
-  if ((!state && !deep) || !target.valid() || !renderer.hasFreshGBuffer()) return;
-  // The pixel under the mouse in the rendered frame (GL rows bottom-up).
+  if (!state && !deep) return;
+  // The pixel under the mouse in the rendered frame (GL rows bottom-up); every viewport shares
+  // the camera, hence this G-buffer.
   const float fx = (mouse.x - target.imageMin.x) / (target.imageMax.x - target.imageMin.x);
   const float fy = (mouse.y - target.imageMin.y) / (target.imageMax.y - target.imageMin.y);
   const int px = std::clamp(static_cast<int>(fx * target.textureWidth), 0, target.textureWidth - 1);
   const int py = std::clamp(static_cast<int>((1.0f - fy) * target.textureHeight), 0, target.textureHeight - 1);
   float pos[4] = {0, 0, 0, 0};
   glGetTextureSubImage(renderer.gPosition().id(), 0, px, py, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof(pos), pos);
+  if (pos[3] < 0.5f) return;
+  const glm::vec3 world(pos[0], pos[1], pos[2]);
+  if (deep) return drawDeepPlot(renderer, vp, *deep, world, mouse);
   glm::vec3 uvLayer;
   float receiver = 0;
-  if (deep) {
-    if (pos[3] >= 0.5f) drawDeepPlot(renderer, vp, *deep, glm::vec3(pos[0], pos[1], pos[2]), mouse);
-    return;
-  }
-  if (pos[3] < 0.5f || !mapPointOf(glm::vec3(pos[0], pos[1], pos[2]), vp.lightSpace.primary(), uvLayer, receiver))
-    return;
+  if (!mapPointOf(world, vp.lightSpace.primary(), uvLayer, receiver)) return;
   const int width = vp.technique.params.i("filter.width");
   const std::vector<float> truth = trueCurve(*state->depthTexture(), uvLayer, width, kSamples);
-  const std::vector<float> curve = reconstructedCurve(shaders, vp.technique, *state, uvLayer, kSamples);
-  if (curve.size() != truth.size()) return;
-
-  ImGui::SetNextWindowPos(ImVec2(mouse.x + 24, mouse.y + 24));
-  ImGui::Begin("visibility vs receiver depth", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
-                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  ImGui::Text("%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
-  const ImVec2 size(320, 140), min = ImGui::GetCursorScreenPos();
-  ImDrawList* list = ImGui::GetWindowDrawList();
-  list->AddRectFilled(min, ImVec2(min.x + size.x, min.y + size.y), IM_COL32(20, 20, 24, 255));
-  const float rx = min.x + std::clamp(receiver, 0.0f, 1.0f) * size.x;
-  list->AddLine(ImVec2(rx, min.y), ImVec2(rx, min.y + size.y), IM_COL32(150, 150, 150, 255));
-  drawCurve(list, min, size, truth, IM_COL32(255, 255, 255, 255), 2.0f);
-  drawCurve(list, min, size, curve, IM_COL32(255, 120, 60, 255), 1.5f);
-  ImGui::Dummy(size);
-  ImGui::Text("white: true (box of %d), orange: reconstruction; grey: this pixel's depth %.3f", width, receiver);
-  ImGui::End();
+  char title[128];
+  std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
+  Plot plot = depthPlot(title, "receiver depth", "visibility", receiver);
+  plot.series.push_back(curveSeries("true (box of " + std::to_string(width) + ")", glm::vec3(0.0f), 2.0f, truth));
+  // The hovered viewport first, then every other shown pre-filtered one at the same point.
+  std::vector<size_t> order{hovered};
+  for (size_t i = 0; i < shown.size(); ++i)
+    if (i != hovered) order.push_back(i);
+  for (size_t i : order) {
+    const auto* other = dynamic_cast<const MomentMapState*>(shown[i]->representation.get());
+    glm::vec3 uv;
+    float depth = 0;
+    if (!other || !mapPointOf(world, shown[i]->lightSpace.primary(), uv, depth)) continue;
+    const std::vector<float> curve = reconstructedCurve(shaders, shown[i]->technique, *other, uv, kSamples);
+    if (curve.size() == truth.size())
+      plot.series.push_back(curveSeries(std::to_string(i + 1) + ": " + shown[i]->technique.presetId,
+                                        plotColour(plot.series.size() - 1), 1.5f, curve));
+  }
+  showPlotWindow("visibility vs receiver depth", plot,
+                 "white: the lit fraction of viewport " + std::to_string(hovered + 1) +
+                     "'s filter box; dashed: this pixel's depth; other viewports at the same surface point, each in "
+                     "its own map",
+                 mouse);
 }
 
 }  // namespace sl
