@@ -238,6 +238,20 @@ const std::vector<Preset>& allPresets() {
          "depth-nearest",
          "none",
          {}},
+        {"tiled",
+         "the virtual map's pages chosen by a distance heuristic (after Arvo 2004, tiled shadow maps): each pixel's "
+         "world size decides its level, the atlas is the texel budget; nearest depth test",
+         "virtual",
+         "depth-nearest",
+         "none",
+         {"virtual.criterion=distance"}},
+        {"adaptive",
+         "adaptive shadow maps over the virtual map's pages (Fernando et al. 2001, Lefohn et al. 2006): full "
+         "resolution only near last frame's shadow edges, 3 levels coarser elsewhere; nearest depth test",
+         "virtual",
+         "depth-nearest",
+         "none",
+         {"virtual.criterion=edges"}},
     };
     addPrefilteredPresets(v);
     addIrregularPresets(v);

@@ -104,6 +104,9 @@ struct PartContext {
   bool cameraMoved = false;
   int frameIndex = 0;
   std::string shadowMap;  // resource the shadow passes write (representation passes read it)
+  // The visibility this viewport showed last frame (null before its first frame): what adaptive
+  // criteria refine around (shadow edges). Read before this frame overwrites it.
+  const Texture2D* previousVisibility = nullptr;
   std::function<void()> drawFullscreen;
   // Sets the technique's uniforms and every part's bindings on a program that includes the
   // technique's modules (the technique prelude).

@@ -69,6 +69,8 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.cameraMoved = cameraMoved;
   part.frameIndex = vp.frameIndex_;
   part.shadowMap = "shadowmap" + tag;
+  // Last frame's, when there is one from the same view (not after a cut or a resize).
+  part.previousVisibility = vp.visibilityHeld_ && !in.cut ? vp.visibilityTexture() : nullptr;
   part.viewTargets = vp.shownViewTargets();
   part.drawFullscreen = [this] { drawFullscreen(); };
   part.techniquePrelude = prelude;

@@ -150,6 +150,7 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
     vp.forwardFbo_.attach({vp.color_.get(), vp.rawVisibility_.get()}, vp.depth_.get());
     vp.views_.clear();
     vp.accumulation->reset();
+    vp.visibilityHeld_ = false;  // new textures: nothing in them yet
   }
   for (const auto& name : vp.shownViews)
     if (!vp.views_.count(name)) vp.views_[name] = std::make_unique<Texture2D>(GL_RGBA8, w, h, "view." + name);
@@ -324,6 +325,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   for (Viewport* vp : viewports) {
     vp->prev_ = now;
     ++vp->frameIndex_;
+    vp->visibilityHeld_ = true;
   }
 }
 

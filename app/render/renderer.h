@@ -123,6 +123,7 @@ class Viewport {
   const Texture2D* shownVisibility_ = nullptr;  // finalVisibility_ or the accumulation's own texture
   PreviousFrame prev_;                          // this viewport's last frame
   int frameIndex_ = 0;                          // frames this viewport has rendered
+  bool visibilityHeld_ = false;                 // its visibility texture holds a finished frame of this size
 };
 
 struct FrameInput {

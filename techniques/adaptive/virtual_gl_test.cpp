@@ -137,6 +137,37 @@ TEST(VirtualShadowMap, AsAccurateAsAFocused4096MapOnColumnsAndTerrain) {
 
 // The issue's hard scenes are in techniques/layouts/hard_cases_gl_test.cpp (virtual is in its
 // list); here the real glTF scenes, when shared/scenes-real is there.
+// "requested N" from the layout's status line.
+int requestedPages(const std::string& status) {
+  const size_t at = status.find("requested ");
+  return at == std::string::npos ? -1 : std::stoi(status.substr(at + 10));
+}
+
+// The termination criteria over one page machinery (the survey: "algorithms mainly differ in
+// termination criteria"): adaptive (edges) asks for fewer pages than resolution matching once it
+// has a frame's shadow edges, for the same shadows; on its first frame it asks as much; tiled
+// (distance, by world size) is as accurate here.
+TEST(VirtualShadowMap, CriteriaAskForDifferentPagesForTheSameShadows) {
+  test::GlHarness h;
+  const Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun matched = render(h, scene, "virtual", {}, 2);
+  const VirtualRun adaptiveFirst = render(h, scene, "adaptive", {}, 1);
+  const VirtualRun adaptive = render(h, scene, "adaptive", {}, 2);
+  const VirtualRun tiled = render(h, scene, "tiled", {}, 2);
+  const int m = requestedPages(matched.status), a1 = requestedPages(adaptiveFirst.status);
+  const int a = requestedPages(adaptive.status), t = requestedPages(tiled.status);
+  ASSERT_GT(m, 0) << matched.status;
+  EXPECT_EQ(a1, m) << "no edges known on the first frame: every pixel asks";
+  EXPECT_LT(a, m) << adaptive.status;
+  EXPECT_GT(t, 0) << tiled.status;
+  const double wrongMatched = wrongPct(scene, matched.frame);
+  EXPECT_LE(wrongPct(scene, adaptive.frame), wrongMatched + 0.01);
+  EXPECT_LE(wrongPct(scene, tiled.frame), wrongMatched + 0.01);
+  expectSane(adaptive.frame, "adaptive");
+  expectSane(tiled.frame, "tiled");
+}
+
 // Per-page instance culling (shadowmap.cull_instances): an instance outside a page's square is
 // not drawn into it, and the map is the same texel for texel.
 TEST(VirtualShadowMap, PagesCullInstancesWithoutChangingTheMap) {

@@ -174,6 +174,11 @@ class VirtualState : public LayoutState {
     TextureUnits units;
     ctx.bindTechnique(p, units);
     ctx.bindGBuffer(p, units);
+    // The edges criterion reads last frame's visibility (a texture of this frame's size).
+    const bool previous = ctx.previousVisibility && ctx.previousVisibility->width() == ctx.width &&
+                          ctx.previousVisibility->height() == ctx.height;
+    units.bind(p, "u_previousVisibility", previous ? ctx.previousVisibility->id() : 0);
+    p.set("u_hasPreviousVisibility", previous ? 1 : 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marks_);
     glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -254,6 +259,21 @@ class VirtualLayout : public Layout {
          .defaultValue = 0,
          .unit = "levels",
          .help = "shift of the mip level each pixel asks for (negative: finer pages than its footprint)"},
+        {.key = "virtual.criterion",
+         .type = ParamType::Enum,
+         .defaultValue = 0,
+         .help = "which page and level each visible pixel asks for (the survey: the adaptive methods \"mainly differ "
+                 "in termination criteria\"): footprint (resolution-matched, Lefohn et al. 2007), distance (tiled "
+                 "maps' heuristic after Arvo 2004: the pixel's world size only), edges (adaptive shadow maps, "
+                 "Fernando et al. 2001: full resolution near last frame's shadow edges, coarser elsewhere)",
+         .choices = {"footprint", "distance", "edges"}},
+        {.key = "virtual.edge_coarsen",
+         .type = ParamType::Int,
+         .min = 1,
+         .max = 6,
+         .defaultValue = 3,
+         .unit = "levels",
+         .help = "criterion edges: how many levels coarser than its footprint a pixel away from shadow edges asks for"},
         {.key = "virtual.cache",
          .type = ParamType::Bool,
          .defaultValue = 1,
