@@ -5,6 +5,7 @@
 // page side), SL_VIRTUAL_POOL_SIDE (tiles per side of the physical atlas).
 #include "common/light_views.glsl"
 uniform float u_virtual_lod_bias;
+uniform float u_virtual_criterion;  // 0 footprint, 1 distance, 2 edges (passes/virtual_mark.comp)
 
 // Virtual uv in [0,1] (outside: off the map); z = 0 when the point cannot be projected.
 vec3 virtualUv(vec3 worldPos) {

@@ -11,7 +11,6 @@ layout(std430, binding = 4) buffer PageMarks { uint marks[]; };
 // as if every receiver faced the light), 2 edges (adaptive shadow maps, Fernando et al. 2001 /
 // Lefohn et al. 2006: full resolution only near shadow edges, u_virtual_edge_coarsen levels
 // coarser elsewhere; the edges are last frame's, so the first frame asks everywhere).
-uniform float u_virtual_criterion;
 uniform float u_virtual_edge_coarsen;
 uniform sampler2D u_previousVisibility;
 uniform int u_hasPreviousVisibility;

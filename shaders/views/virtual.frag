@@ -1,7 +1,8 @@
 // Debug views of the virtual shadow map (SL_VIRTUAL_VIEW from the layout state):
 // 0 `pages`: the level of the page each pixel reads (virtualLevelColour: 0 red, 1 orange,
 //   2 yellow, 3 green, 4 cyan, 5 blue, 6 purple, 7+ grey), page borders dark, hatched where the
-//   page is coarser than the pixel asked for (pool exhausted);
+//   page is coarser than the pixel's footprint asks for (pool exhausted; only under the footprint
+//   criterion: the others ask for coarser pages by design);
 // 1 `requested-resolution`: the level the pixel's footprint asks for, same colours;
 // 2 `cache`: red = page drawn this frame, green = served from the cache (brighter: more frames).
 #include "common/light.glsl"
@@ -29,7 +30,8 @@ void main() {
   if (onMap && virtualFindPage(uv.xy, page)) {
 #if SL_VIRTUAL_VIEW == 0
     colour = virtualLevelColour(page.level);
-    if (page.level > requested && mod(gl_FragCoord.x + gl_FragCoord.y, 6.0) < 2.0) colour *= 0.4;
+    if (u_virtual_criterion < 0.5 && page.level > requested && mod(gl_FragCoord.x + gl_FragCoord.y, 6.0) < 2.0)
+      colour *= 0.4;
 #else
     float hits = float(page.entry >> 24);
     colour = (page.entry & (1u << 16)) != 0u ? vec3(0.9, 0.2, 0.2)
