@@ -91,12 +91,18 @@ TEST(FigureCli, BadInputIsAClearError) {
   EXPECT_NE(r.output.find("--step N or --all"), std::string::npos) << r.output;
 }
 
-TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
-  test::GlHarness h;
+// An explorer state on the basic scene, handed to the harness's renderer (the player's tests).
+ExplorerState basicSceneState(test::GlHarness& h) {
   ExplorerState state;
   state.assetsDir = defaultAssetsDir();
   state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
   h.renderer.setScene(*state.scene);
+  return state;
+}
+
+TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
+  test::GlHarness h;
+  ExplorerState state = basicSceneState(h);
   const std::string tour = writeTour("player.json", R"({"steps": [
     {"title": "a", "scene": "columns", "viewports": [{"technique": "pcf", "set": ["pcf.kernel=5"], "views": ["texels"]},
                                                    "lispsm", "psm"]},
@@ -127,10 +133,7 @@ TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
 // The keys a presenter uses, recorded as GLFW's key callback records them (explorer/shortcuts.h).
 TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
   test::GlHarness h;
-  ExplorerState state;
-  state.assetsDir = defaultAssetsDir();
-  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
-  h.renderer.setScene(*state.scene);
+  ExplorerState state = basicSceneState(h);
   const std::string tour = writeTour("keys.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
     {"title": "b", "viewports": ["pcf"]}, {"title": "c", "viewports": ["vsm"]}]})");
   ImGui::CreateContext();
@@ -174,10 +177,7 @@ TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
 // turn before "next" leaves it, and "previous" re-renders an earlier count from a cut.
 TEST(TourPlayer, StepFramesFreezeAtEachCountBeforeTheNextStep) {
   test::GlHarness h;
-  ExplorerState state;
-  state.assetsDir = defaultAssetsDir();
-  state.scene = std::make_unique<Scene>(loadScene("basic", state.assetsDir));
-  h.renderer.setScene(*state.scene);
+  ExplorerState state = basicSceneState(h);
   const std::string tour = writeTour("frames.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
     {"title": "b", "viewports": ["pixel-correct"], "frames": [1, 5, 9]}, {"title": "c", "viewports": ["vsm"]}]})");
   ImGui::CreateContext();

@@ -1,6 +1,7 @@
 // The HTML report of `shadowlab bench`: one self-contained page (inline CSS + SVG, a few lines of
 // inline script to sort the table, no libraries, no network) plus PNG images and results.csv.
 #include "bench/bench.h"
+#include "plot/plot.h"
 #include "cli/args.h"
 
 #include <algorithm>
@@ -23,23 +24,6 @@ constexpr float kFlickerFullScale = 0.1f;
 // Okabe-Ito palette: distinguishable with the common colour-vision deficiencies.
 const char* kColors[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"};
 const char* kDashes[] = {"", "6 4", "2 3", "10 3 2 3"};
-
-std::string esc(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<')
-      o += "&lt;";
-    else if (c == '>')
-      o += "&gt;";
-    else if (c == '&')
-      o += "&amp;";
-    else if (c == '"')
-      o += "&quot;";
-    else
-      o += c;
-  }
-  return o;
-}
 
 std::string num(double v, int digits = 3) {
   char buf[32];
@@ -181,7 +165,7 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
     s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
       << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 20 << "' text-anchor='middle' class='axis'>time per frame, ms"
-    << (logX ? " (log scale)" : "") << " — median, " << esc(r.timer) << " timer</text>\n";
+    << (logX ? " (log scale)" : "") << " — median, " << xmlEscaped(r.timer) << " timer</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
     << ") rotate(-90)' text-anchor='middle' class='axis'>wrong pixels, %" << (ya.log ? " (log scale)" : "")
     << "</text>\n";
@@ -218,8 +202,8 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
     if (onFront) s << "<circle cx='" << px << "' cy='" << py << "' r='11' class='ring'/>";
     s << "<circle cx='" << px << "' cy='" << py << "' r='6' fill='" << styles[i].color
-      << "' stroke='#fff' stroke-width='1.5'><title>" << esc(es[i].label) << ": " << num(es[i].msMedian) << " ms, "
-      << num(es[i].error.wrongPixelPct) << " % wrong</title></circle>\n";
+      << "' stroke='#fff' stroke-width='1.5'><title>" << xmlEscaped(es[i].label) << ": " << num(es[i].msMedian)
+      << " ms, " << num(es[i].error.wrongPixelPct) << " % wrong</title></circle>\n";
     // Label: first candidate position that overlaps neither points nor earlier labels.
     std::string text = shortLabel(es[i]);
     double tw = (onFront ? 8.4 : 7.8) * text.size(), th = 16;
@@ -237,7 +221,7 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
       }
     }
     taken.push_back({lx, ly - th + 4, lx + tw, ly + 4});
-    s << "<text x='" << lx << "' y='" << ly << "' class='pt" << (onFront ? " front" : "") << "'>" << esc(text)
+    s << "<text x='" << lx << "' y='" << ly << "' class='pt" << (onFront ? " front" : "") << "'>" << xmlEscaped(text)
       << "</text>\n";
   }
   s << "<g transform='translate(" << W - R - 272 << "," << T + 10
@@ -295,13 +279,13 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
     s << "<polyline fill='none' stroke='" << styles[i].color << "' stroke-width='2.5' stroke-dasharray='"
       << styles[i].dash << "' points='";
     for (size_t f = 0; f < c.size(); ++f) s << X(f + 1.0) << "," << Y(c[f]) << " ";
-    s << "'><title>" << esc(r.entries[i].label) << "</title></polyline>\n";
+    s << "'><title>" << xmlEscaped(r.entries[i].label) << "</title></polyline>\n";
     if (c.size() == 1)
       s << "<circle cx='" << X(1) << "' cy='" << Y(c[0]) << "' r='4' fill='" << styles[i].color << "'/>";
     double ly = T + 10 + i * 22.0;
     s << "<line x1='" << W - R + 16 << "' x2='" << W - R + 52 << "' y1='" << ly << "' y2='" << ly << "' stroke='"
       << styles[i].color << "' stroke-width='3' stroke-dasharray='" << styles[i].dash << "'/><text x='" << W - R + 60
-      << "' y='" << ly + 5 << "'>" << esc(legendLabel(r.entries[i])) << "</text>\n";
+      << "' y='" << ly + 5 << "'>" << xmlEscaped(legendLabel(r.entries[i])) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
@@ -351,7 +335,7 @@ std::string standaloneSvg(const std::string& svg) {
 // The sortable table: one row per entry, and what the columns mean.
 std::string resultsTable(const BenchResult& r) {
   const bool path = !r.options.path.empty();
-  const std::string base = r.entries.empty() ? std::string() : esc(r.entries.front().label);
+  const std::string base = r.entries.empty() ? std::string() : xmlEscaped(r.entries.front().label);
   std::ostringstream s;
   s << "<h2>Results</h2>\n<table "
        "id='results'><thead><tr><th>entry</th><th>ms/frame<br>median</th><th>ms/frame<br>p95</th>"
@@ -359,7 +343,7 @@ std::string resultsTable(const BenchResult& r) {
        "<th>false light<br>%</th><th>RMSE</th>"
     << (path ? "<th>flicker<br>excess</th>" : "") << "<th>NaN/Inf<br>pixels</th></tr></thead><tbody>\n";
   for (const auto& e : r.entries) {
-    s << "<tr><td>" << esc(e.label) << "</td><td>" << fixed(e.msMedian, 2) << "</td><td>" << fixed(e.msP95, 2)
+    s << "<tr><td>" << xmlEscaped(e.label) << "</td><td>" << fixed(e.msMedian, 2) << "</td><td>" << fixed(e.msP95, 2)
       << "</td><td data-v='" << e.msRatio << "'>" << fixed(e.msRatio, 2) << " (" << fixed(e.msRatioP25, 2) << "–"
       << fixed(e.msRatioP75, 2) << ")</td><td>" << fixed(e.error.wrongPixelPct, 2) << "</td><td>"
       << fixed(e.image.imageWrongPct, 2) << "</td><td>" << fixed(e.error.falseShadowPct, 2) << "</td><td>"
@@ -410,30 +394,31 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
   const bool path = !r.options.path.empty();
 
   std::ostringstream s;
-  s << "<!doctype html>\n<html lang='en'><head><meta charset='utf-8'><title>shadowlab bench: " << esc(r.sceneName)
-    << "</title>\n<style>" << kCss << "</style></head><body>\n";
-  s << "<h1>Shadow error against frame time — scene <em>" << esc(r.sceneName) << "</em></h1>\n";
+  s << "<!doctype html>\n<html lang='en'><head><meta charset='utf-8'><title>shadowlab bench: "
+    << xmlEscaped(r.sceneName) << "</title>\n<style>" << kCss << "</style></head><body>\n";
+  s << "<h1>Shadow error against frame time — scene <em>" << xmlEscaped(r.sceneName) << "</em></h1>\n";
   s << "<p class='meta'>" << w << "×" << h << " pixels, "
-    << (path ? "camera path <b>" + esc(r.options.path) + "</b>" : "camera <b>" + esc(r.options.camera) + "</b>") << ", "
-    << r.options.frames << " measured frames after " << r.options.warmup
-    << " warm-up frames, the entries rendered in turn at each frame. Renderer " << esc(r.renderer) << ", timer <b>"
-    << esc(r.timer) << "</b>"
+    << (path ? "camera path <b>" + xmlEscaped(r.options.path) + "</b>"
+             : "camera <b>" + xmlEscaped(r.options.camera) + "</b>")
+    << ", " << r.options.frames << " measured frames after " << r.options.warmup
+    << " warm-up frames, the entries rendered in turn at each frame. Renderer " << xmlEscaped(r.renderer)
+    << ", timer <b>" << xmlEscaped(r.timer) << "</b>"
     << (r.timer == "cpu-fence" ? " (glFinish + steady clock around each pass)" : " (GL_TIME_ELAPSED queries)") << ", "
-    << r.cores << " cores" << (r.cpu.empty() ? "" : " (" + esc(r.cpu) + ")") << ", " << esc(r.date)
+    << r.cores << " cores" << (r.cpu.empty() ? "" : " (" + xmlEscaped(r.cpu) + ")") << ", " << xmlEscaped(r.date)
     << ". Reference: Embree ray-traced visibility of the same G-buffer, " << r.referenceSamples
-    << " light sample(s) per pixel.<br>Command: <code>" << esc(r.options.commandLine) << "</code></p>\n";
+    << " light sample(s) per pixel.<br>Command: <code>" << xmlEscaped(r.options.commandLine) << "</code></p>\n";
 
   if (!r.shaderErrors.empty()) {
     s << "<p style='border:2px solid #c00;padding:8px;color:#900'><b>Shader errors during this run</b>: entries "
          "using the broken shader measured nothing meaningful.<br><code>";
-    for (const auto& e : r.shaderErrors) s << esc(e.substr(0, 300)) << "<br>";
+    for (const auto& e : r.shaderErrors) s << xmlEscaped(e.substr(0, 300)) << "<br>";
     s << "</code></p>\n";
   }
   s << "<h2>Error against time</h2>\n" << scatterSvg(r, styles);
   std::string sweepKeys;
   for (const auto& sw : r.options.sweeps) sweepKeys += (sweepKeys.empty() ? "" : ", ") + sw.substr(0, sw.find('='));
   s << "<p class='caption'>Each point is one technique at one sweep setting, labelled with its technique"
-    << (sweepKeys.empty() ? std::string() : " and " + esc(sweepKeys))
+    << (sweepKeys.empty() ? std::string() : " and " + xmlEscaped(sweepKeys))
     << ". "
        "Lower left is better. Wrong pixels are those whose visibility differs from the ray-traced reference by "
        "more than 30/255 (Scherzer et al. 2007), in percent of pixels covered by geometry, in the last frame.</p>\n";
@@ -463,10 +448,10 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
     << "</p>\n";
   for (size_t i = 0; i < r.entries.size(); ++i) {
     const auto& e = r.entries[i];
-    s << "<h3 id='e" << i + 1 << "'>" << esc(e.label) << " — " << fixed(e.error.wrongPixelPct, 2) << " % wrong, "
+    s << "<h3 id='e" << i + 1 << "'>" << xmlEscaped(e.label) << " — " << fixed(e.error.wrongPixelPct, 2) << " % wrong, "
       << fixed(e.image.imageWrongPct, 2) << " % image wrong, " << fixed(e.msMedian, 2)
       << " ms</h3>\n<div class='strip'><figure><img src='" << names[i]
-      << "-visibility.png' alt='technique'><figcaption>" << esc(e.technique)
+      << "-visibility.png' alt='technique'><figcaption>" << xmlEscaped(e.technique)
       << "</figcaption></figure><figure><img src='reference.png' alt='reference'><figcaption>reference (ray "
          "traced)</figcaption></figure><figure><img src='"
       << names[i] << "-error.png' alt='error view'><figcaption>error view</figcaption></figure>";

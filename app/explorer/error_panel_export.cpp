@@ -1,5 +1,6 @@
 // The accuracy panel's exports: the table as CSV, the error-vs-time chart as SVG.
 #include "explorer/error_panel.h"
+#include "plot/plot.h"
 #include "explorer/explorer_state.h"
 
 #include <algorithm>
@@ -16,23 +17,6 @@ std::string number(double v, const char* format = "%.4g") {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, format, v);
   return buffer;
-}
-
-std::string xmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 const char* const kSvgViewportColours[4] = {"#ffcd50", "#5acdff", "#8ce178", "#f082d2"};
@@ -99,8 +83,8 @@ std::string chartPointsSvg(const std::vector<ChartPoint>& points) {
   for (const ChartPoint& p : points) {
     const char* colour = p.viewport >= 0 && p.viewport < 4 ? kSvgViewportColours[p.viewport] : "#999";
     svg << "<circle cx=\"" << sx(p.ms) << "\" cy=\"" << sy(p.wrongPct) << "\" r=\"5\" fill=\"" << colour
-        << "\" stroke=\"#333\"><title>" << xmlEscape(p.config) << "</title></circle>\n<text x=\"" << sx(p.ms) + 7
-        << "\" y=\"" << sy(p.wrongPct) - 6 << "\" font-size=\"10\">" << xmlEscape(p.config) << "</text>\n";
+        << "\" stroke=\"#333\"><title>" << xmlEscaped(p.config) << "</title></circle>\n<text x=\"" << sx(p.ms) + 7
+        << "\" y=\"" << sy(p.wrongPct) - 6 << "\" font-size=\"10\">" << xmlEscaped(p.config) << "</text>\n";
   }
   svg << "</svg>\n";
   return svg.str();

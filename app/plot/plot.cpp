@@ -22,22 +22,6 @@ std::string decadeLabel(int d) {
   return "1e" + std::to_string(d);
 }
 
-// Escapes the characters SVG text cannot hold as they are.
-std::string xmlText(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 // The axis's range: as given, or fitted to the data (log axes out to whole decades).
 void fitRange(const PlotAxis& axis, const std::vector<float>& values, float& lo, float& hi) {
   if (axis.lo < axis.hi) {
@@ -76,6 +60,23 @@ std::vector<PlotFrame::Tick> ticksOf(const PlotAxis& axis, float lo, float hi, b
 }
 
 }  // namespace
+
+std::string xmlEscaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
+  }
+  return out;
+}
 
 glm::vec3 plotColour(size_t k) {
   static const glm::vec3 colours[] = {{0.85f, 0.25f, 0.17f}, {0.91f, 0.64f, 0.09f}, {0.23f, 0.62f, 0.23f},
@@ -140,7 +141,7 @@ std::string plotSvg(const Plot& plot, int width, int height) {
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\">" << xmlText(plot.title) << "</text>\n";
+    << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\">" << xmlEscaped(plot.title) << "</text>\n";
   for (const auto& t : f.yTicks)
     s << "<line x1=\"" << X(0) << "\" x2=\"" << X(1) << "\" y1=\"" << Y(t.at) << "\" y2=\"" << Y(t.at)
       << "\" stroke=\"#ddd\"/><text x=\"" << left - 6 << "\" y=\"" << Y(t.at) + 4 << "\" text-anchor=\"end\">"
@@ -154,10 +155,10 @@ std::string plotSvg(const Plot& plot, int width, int height) {
     s << "<line x1=\"" << X(u) << "\" x2=\"" << X(u) << "\" y1=\"" << Y(0) << "\" y2=\"" << Y(1)
       << "\" stroke=\"#999\" stroke-dasharray=\"4 3\"/>\n";
   }
-  s << "<text x=\"" << left << "\" y=\"" << H - bottom + 32 << "\">" << xmlText(plot.x.label)
-    << "; y: " << xmlText(plot.y.label) << "</text>\n";
+  s << "<text x=\"" << left << "\" y=\"" << H - bottom + 32 << "\">" << xmlEscaped(plot.x.label)
+    << "; y: " << xmlEscaped(plot.y.label) << "</text>\n";
   if (!plot.note.empty())
-    s << "<text x=\"" << left << "\" y=\"" << H - 10 << "\">" << xmlText(plot.note) << "</text>\n";
+    s << "<text x=\"" << left << "\" y=\"" << H - 10 << "\">" << xmlEscaped(plot.note) << "</text>\n";
   for (size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& series = plot.series[k];
     const std::string colour = hexColour(series.colour);
@@ -167,7 +168,7 @@ std::string plotSvg(const Plot& plot, int width, int height) {
       s << "\"/>\n";
     }
     s << "<text x=\"" << W - right + 10 << "\" y=\"" << top + 18 * (k + 1) << "\" fill=\"" << colour << "\">"
-      << xmlText(series.label) << "</text>\n";
+      << xmlEscaped(series.label) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();

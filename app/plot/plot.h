@@ -56,6 +56,8 @@ PlotFrame resolvePlot(const Plot& plot);
 
 // "#rrggbb".
 std::string hexColour(glm::vec3 c);
+// Text for SVG and HTML: & < > " escaped (every SVG and HTML report writes through it).
+std::string xmlEscaped(const std::string& text);
 // A standalone SVG of `width` x `height` pixels: white background, grid, curves, legend on the right.
 std::string plotSvg(const Plot& plot, int width = 720, int height = 420);
 // Writes plotSvg to `path`; throws std::runtime_error naming the path when it cannot.

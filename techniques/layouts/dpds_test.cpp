@@ -3,6 +3,7 @@
 // logarithmic curve is flat; the SVG has a curve and a legend entry per technique.
 #include "gl/shader_library.h"
 #include "layouts/dpds.h"
+#include "layouts/layout_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -11,14 +12,6 @@
 
 namespace sl {
 namespace {
-
-// Spread of log10(ratio) over the samples inside the map: 0 = perfectly even aliasing.
-float spread(const DpdsCurve& c) {
-  float lo = 1e30f, hi = -1e30f;
-  for (float r : c.ratio)
-    if (std::isfinite(r)) lo = std::min(lo, std::log10(r)), hi = std::max(hi, std::log10(r));
-  return hi - lo;
-}
 
 TEST(Dpds, FocusedFallsAsOneOverDepthWarpsFlattenCascadesSawIdealIsFlat) {
   Scene scene = loadScene("columns", defaultAssetsDir());
@@ -31,12 +24,12 @@ TEST(Dpds, FocusedFallsAsOneOverDepthWarpsFlattenCascadesSawIdealIsFlat) {
   ASSERT_TRUE(std::isfinite(focused.ratio[a]) && std::isfinite(focused.ratio[b]));
   const float slope = std::log(focused.ratio[b] / focused.ratio[a]) / std::log(focused.depth[b] / focused.depth[a]);
   EXPECT_NEAR(slope, -1.0f, 0.05f);
-  EXPECT_LT(spread(curves[1]), 0.6f * spread(focused));  // LiSPSM
-  EXPECT_LT(spread(curves[2]), 0.6f * spread(focused));  // PSM
+  EXPECT_LT(test::dpdsSpread(curves[1]), 0.6f * test::dpdsSpread(focused));  // LiSPSM
+  EXPECT_LT(test::dpdsSpread(curves[2]), 0.6f * test::dpdsSpread(focused));  // PSM
   int jumps = 0;  // cascades: the ratio falls within a split and jumps up at each border
   for (size_t i = 1; i < curves[3].ratio.size(); ++i) jumps += curves[3].ratio[i] > 1.2f * curves[3].ratio[i - 1];
   EXPECT_EQ(jumps, 3);
-  EXPECT_LT(spread(curves[4]), 1e-4f);
+  EXPECT_LT(test::dpdsSpread(curves[4]), 1e-4f);
   const std::string svg = plotSvg(dpdsPlot(curves, "test"));
   for (const auto& c : curves) EXPECT_NE(svg.find(">" + c.label + "<"), std::string::npos) << c.label;
   size_t lines = 0;  // a curve leaving the map is drawn as several strokes

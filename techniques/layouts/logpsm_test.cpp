@@ -69,22 +69,14 @@ TEST(LogPsm, ChordErrorBoundHoldsAndIsTightAndTheBudgetPicksTheSmallestDelta) {
   EXPECT_LT(logDeltaForError(0.05f, 0.5f, 2048), logDeltaForError(1.0f, 0.5f, 2048));
 }
 
-// Spread of log10(ratio) over the samples inside the map: 0 = perfectly even aliasing.
-float spread(const DpdsCurve& c) {
-  float lo = 1e30f, hi = -1e30f;
-  for (float r : c.ratio)
-    if (std::isfinite(r)) lo = std::min(lo, std::log10(r)), hi = std::max(hi, std::log10(r));
-  return hi - lo;
-}
-
 TEST(LogPsm, AliasingAlongTheViewIsFlatterThanLispsmAndFocused) {
   Scene scene = loadScene("columns", defaultAssetsDir());
   // A generous budget lets the warp follow the viewer (not the scene's long ground edges).
   const auto curves =
       dpdsCurves(scene, scene.cameras.front(), 1280, 720, {"standard", "lispsm", "logpsm:logpsm.max_error=16"}, 64);
   ASSERT_EQ(curves.size(), 4u);
-  EXPECT_LT(spread(curves[2]), 0.5f * spread(curves[1])) << "LogPSM vs LiSPSM";
-  EXPECT_LT(spread(curves[2]), 0.25f * spread(curves[0])) << "LogPSM vs focused";
+  EXPECT_LT(test::dpdsSpread(curves[2]), 0.5f * test::dpdsSpread(curves[1])) << "LogPSM vs LiSPSM";
+  EXPECT_LT(test::dpdsSpread(curves[2]), 0.25f * test::dpdsSpread(curves[0])) << "LogPSM vs focused";
 }
 
 TEST(LogPsm, TheLayoutReportsItsWarpAndFallsBackForASpotLight) {
