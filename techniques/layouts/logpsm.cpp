@@ -37,11 +37,13 @@ float longestCasterEdge(const Scene& scene) {
     const Mesh& m = scene.meshes[k];
     for (size_t i = 0; i + 2 < m.indices.size(); i += 3)
       for (int e = 0; e < 3; ++e)
-        meshEdge[k] =
-            std::max(meshEdge[k], glm::length(m.positions[m.indices[i + e]] - m.positions[m.indices[i + (e + 1) % 3]]));
+        if (m.indices[i + e] < m.positions.size() && m.indices[i + (e + 1) % 3] < m.positions.size())
+          meshEdge[k] = std::max(meshEdge[k],
+                                 glm::length(m.positions[m.indices[i + e]] - m.positions[m.indices[i + (e + 1) % 3]]));
   }
   float edge = 0.0f;
   for (const Instance& inst : scene.instances) {
+    if (inst.mesh < 0 || size_t(inst.mesh) >= meshEdge.size()) continue;  // as Scene::boundsAt
     const glm::mat4 t = inst.transformAt(0.0);
     const float scale =
         std::max({glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])), glm::length(glm::vec3(t[2]))});
