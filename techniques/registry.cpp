@@ -309,7 +309,7 @@ Technique makeTechnique(const std::string& presetId, const std::vector<std::stri
   t.layout = findLayout(layoutId);
   if (!t.layout) {
     std::string ids;
-    for (const auto& l : allLayouts()) ids += (ids.empty() ? "" : ", ") + l->id();
+    for (const auto& id : layoutIds()) ids += (ids.empty() ? "" : ", ") + id;
     throw ParamError(std::string(kLayoutParam) + ": no layout '" + layoutId + "' (layouts: " + ids + ")");
   }
   t.representation = findRepresentation(preset->representation);

@@ -8,7 +8,6 @@
 #include "plot/visibility_plot_data.h"
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 

@@ -5,7 +5,6 @@
 #include "gl/shader_library.h"
 #include "layouts/dpds.h"
 
-#include <fstream>
 #include <iostream>
 #include <sstream>
 

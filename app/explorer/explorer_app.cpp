@@ -329,7 +329,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
     std::printf("explorer: %zu frames timed, median frame %.1f ms (%.1f fps), window %dx%d, %s\n", frameSeconds.size(),
                 frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
                 glRendererName().c_str());
-    // What the keys and panels left behind, for scripts and the window tests (tests/explorer_keys_test.cpp).
+    // What the keys and panels left behind, for scripts and the window tests (tests/explorer_smoke_test.cpp).
     std::printf(
         "explorer: state viewports=%d ui_scale=%.3f paused=%d frozen=%d frames_since_cut=%d colour_keys=%d "
         "help=%d dpds_plot=%d enlarged=%s tour_step=%zu tour_frames=%d\n",

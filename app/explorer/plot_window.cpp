@@ -10,8 +10,7 @@ namespace sl {
 namespace {
 
 ImU32 toImU32(glm::vec3 c) {
-  // Near-black curves (meant for white paper) are drawn white on the dark window.
-  if (glm::dot(c, glm::vec3(0.3f, 0.59f, 0.11f)) < 0.05f) c = glm::vec3(0.95f);
+  c = plotColourOnDark(c);  // the window is dark
   return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
 }
 
@@ -83,6 +82,7 @@ void drawPlotCaption(const std::string& text, float width) {
 }
 
 Plot liveDpdsPlot(const ExplorerState& state, int width, int height) {
+  if (!state.scene || width <= 0 || height <= 0) return {};
   std::vector<LabelledTechnique> techniques;
   std::vector<std::string> shownIds;
   for (int i = 0; i < state.viewportCount && i < int(state.slots.size()); ++i) {
@@ -93,10 +93,8 @@ Plot liveDpdsPlot(const ExplorerState& state, int width, int height) {
   }
   for (const auto& [id, t] : referenceLayouts())
     if (std::find(shownIds.begin(), shownIds.end(), id) == shownIds.end()) techniques.push_back({id, &t});
-  if (!state.scene || width <= 0 || height <= 0) return {};
-  Plot plot = dpdsPlot(dpdsCurves(*state.scene, state.camera.camera(), width, height, techniques, 48),
-                       "dp/ds along the view, this camera");
-  return plot;
+  return dpdsPlot(dpdsCurves(*state.scene, state.camera.camera(), width, height, techniques, 48),
+                  "dp/ds along the view, this camera");
 }
 
 void drawDpdsWindow(ExplorerState& state, int renderWidth, int renderHeight, ImVec2 areaMin, ImVec2 areaSize) {

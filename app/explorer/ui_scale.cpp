@@ -8,11 +8,10 @@
 
 namespace sl {
 
-namespace {
-// Latin-1 and what captions, help texts and units use: Greek (α, σ), punctuation (— …), arrows
-// (→ ↔) and maths (≈ ≤ ∞ √). The same ranges as the figures' font (tour/figure_image.cpp).
-const ImWchar kUiGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
-}  // namespace
+const ImWchar* textGlyphRanges() {
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  return ranges;
+}
 
 void applyUiScale(float scale) {
   static std::optional<ImGuiStyle> baseStyle;
@@ -22,7 +21,7 @@ void applyUiScale(float scale) {
   bool loaded = false;
   for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
     if (std::filesystem::exists(path) &&
-        io.Fonts->AddFontFromFileTTF(path, kBaseFontPixels * scale, nullptr, kUiGlyphRanges)) {
+        io.Fonts->AddFontFromFileTTF(path, kBaseFontPixels * scale, nullptr, textGlyphRanges())) {
       loaded = true;
       break;
     }

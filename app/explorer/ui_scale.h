@@ -2,9 +2,15 @@
 // FontGlobalScale's stretched bitmap) and every style size scaled with it.
 #pragma once
 
+#include <imgui.h>
+
 namespace sl {
 
 constexpr float kBaseFontPixels = 16.0f;
+
+// Latin-1 and what captions, help texts and units use: Greek (α, σ), punctuation (— …), arrows
+// (→ ↔) and maths (≈ ≤ ∞ √). The explorer's font and the headless figures' font load these.
+const ImWchar* textGlyphRanges();
 
 // Loads the UI font at kBaseFontPixels * scale and scales the style from the explorer's base
 // style. Call before ImGui::NewFrame and after the OpenGL backend's init (it replaces the font

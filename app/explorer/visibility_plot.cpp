@@ -28,13 +28,6 @@ const ReferenceTracer& deepPlotTracer(const Scene& scene) {
   return *tracer;
 }
 
-PlotSeries curveSeries(std::string label, glm::vec3 colour, float width, const std::vector<float>& values) {
-  PlotSeries s{.label = std::move(label), .colour = colour, .width = width};
-  for (size_t i = 0; i < values.size(); ++i)
-    s.points.emplace_back(float(i) / float(std::max<size_t>(values.size() - 1, 1)), values[i]);
-  return s;
-}
-
 Plot depthPlot(const std::string& title, const std::string& x, const std::string& y, float receiver) {
   Plot plot;
   plot.title = title;
@@ -70,8 +63,8 @@ void drawDeepPlot(const Renderer& renderer, const Viewport& vp, const DeepState&
   char title[128];
   std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
   Plot plot = depthPlot(title, "light depth", "transmittance", receiver);
-  plot.series.push_back(curveSeries("reference (opaque hits included)", glm::vec3(0.0f), 2.0f, truth));
-  plot.series.push_back(curveSeries("stored nodes", glm::vec3(1.0f, 0.47f, 0.24f), 1.5f, curve));
+  plot.series.push_back(evenlySpacedSeries("reference (opaque hits included)", glm::vec3(0.0f), 2.0f, truth));
+  plot.series.push_back(evenlySpacedSeries("stored nodes", glm::vec3(1.0f, 0.47f, 0.24f), 1.5f, curve));
   showPlotWindow("transmittance vs light depth", plot, "dashed: this pixel's depth", mouse);
 }
 
@@ -103,7 +96,8 @@ void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const 
   char title[128];
   std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
   Plot plot = depthPlot(title, "receiver depth", "visibility", receiver);
-  plot.series.push_back(curveSeries("true (box of " + std::to_string(width) + ")", glm::vec3(0.0f), 2.0f, truth));
+  plot.series.push_back(
+      evenlySpacedSeries("true (box of " + std::to_string(width) + ")", glm::vec3(0.0f), 2.0f, truth));
   // The hovered viewport first, then every other shown pre-filtered one at the same point.
   std::vector<size_t> order{hovered};
   for (size_t i = 0; i < shown.size(); ++i)
@@ -115,8 +109,8 @@ void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const 
     if (!other || !mapPointOf(world, shown[i]->lightSpace.primary(), uv, depth)) continue;
     const std::vector<float> curve = reconstructedCurve(shaders, shown[i]->technique, *other, uv, kSamples);
     if (curve.size() == truth.size())
-      plot.series.push_back(curveSeries(std::to_string(i + 1) + ": " + shown[i]->technique.presetId,
-                                        plotColour(plot.series.size() - 1), 1.5f, curve));
+      plot.series.push_back(evenlySpacedSeries(std::to_string(i + 1) + ": " + shown[i]->technique.presetId,
+                                               plotColour(plot.series.size() - 1), 1.5f, curve));
   }
   showPlotWindow("visibility vs receiver depth", plot,
                  "white: the lit fraction of viewport " + std::to_string(hovered + 1) +

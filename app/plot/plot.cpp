@@ -85,6 +85,17 @@ glm::vec3 plotColour(size_t k) {
   return colours[k % (sizeof colours / sizeof *colours)];
 }
 
+glm::vec3 plotColourOnDark(glm::vec3 c) {
+  return glm::dot(c, glm::vec3(0.3f, 0.59f, 0.11f)) < 0.05f ? glm::vec3(0.95f) : c;
+}
+
+PlotSeries evenlySpacedSeries(std::string label, glm::vec3 colour, float width, const std::vector<float>& values) {
+  PlotSeries s{.label = std::move(label), .colour = colour, .width = width};
+  for (size_t i = 0; i < values.size(); ++i)
+    s.points.emplace_back(float(i) / float(std::max<size_t>(values.size() - 1, 1)), values[i]);
+  return s;
+}
+
 std::string hexColour(glm::vec3 c) {
   char text[8];
   auto byte = [](float v) { return int(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };

@@ -64,5 +64,10 @@ std::string plotSvg(const Plot& plot, int width = 720, int height = 420);
 void writePlotSvg(const Plot& plot, const std::string& path);
 // A categorical colour for curve k (the same in every drawer).
 glm::vec3 plotColour(size_t k);
+// A series' colour on a dark background: near black (meant for white paper, the "true" curves)
+// becomes near white; every other colour stays.
+glm::vec3 plotColourOnDark(glm::vec3 c);
+// A series of `values` at evenly spaced x over [0, 1] (curves sampled over depth).
+PlotSeries evenlySpacedSeries(std::string label, glm::vec3 colour, float width, const std::vector<float>& values);
 
 }  // namespace sl

@@ -26,11 +26,9 @@ Plot visibilityPlot(ShaderLibrary& shaders, const Scene& scene, const Camera& ca
   plot.y = {.label = "visibility", .lo = -0.2f, .hi = 1.2f, .ticks = {0.0f, 0.5f, 1.0f}};
   glm::vec3 uvLayer(0.5f, 0.5f, 0.0f);
   float receiver = 0.5f;
+  // Values beyond the y range are drawn on its border; depths outside [lo, hi] are left out.
   auto series = [&](std::string label, glm::vec3 colour, float width, const std::vector<float>& values) {
-    PlotSeries s{.label = std::move(label), .colour = colour, .width = width};
-    const size_t n = values.size();
-    for (size_t i = 0; i < n; ++i)
-      s.points.emplace_back(float(i) / float(std::max<size_t>(n - 1, 1)), std::clamp(values[i], -0.2f, 1.2f));
+    PlotSeries s = evenlySpacedSeries(std::move(label), colour, width, values);
     std::erase_if(s.points, [&](glm::vec2 p) { return p.x < r.lo || p.x > r.hi; });
     plot.series.push_back(std::move(s));
   };

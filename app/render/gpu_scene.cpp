@@ -125,9 +125,8 @@ bool outsideWindow(const glm::mat4& viewProj, const glm::mat4& model, glm::vec3 
 
 }  // namespace
 
-int GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only,
-                   const glm::mat4* cullTo) const {
-  int drawn = 0;
+void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only,
+                    const glm::mat4* cullTo) const {
   const GLenum mode = programs.patches() ? GL_PATCHES : GL_TRIANGLES;
   if (mode == GL_PATCHES) glPatchParameteri(GL_PATCH_VERTICES, 3);
   for (int variant = 0; variant < 4; ++variant) {
@@ -140,14 +139,15 @@ int GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum 
       if (materialVariant(mat) != variant) continue;
       if (only != Only::All && (only == Only::SemiTransparent) != instanceSemiTransparent(scene, index)) continue;
       const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
-      if (cullTo && outsideWindow(*cullTo, inst.transformAt(time), g.boundsMin, g.boundsMax)) continue;
+      const glm::mat4 model = inst.transformAt(time);
+      if (cullTo && outsideWindow(*cullTo, model, g.boundsMin, g.boundsMax)) continue;
       if (!asked) {
         program = programs.get(variant);
         asked = true;
       }
       if (!program) break;                                    // its error is reported by the shader library
       program->set("u_instanceId", static_cast<int>(index));  // G-buffer surface ids
-      program->set("u_model", inst.transformAt(time));
+      program->set("u_model", model);
       program->set("u_prevModel", inst.transformAt(prevTime));
       program->set("u_baseColor", mat.baseColor);
       program->set("u_alphaCutoff", mat.alphaCutoff);
@@ -161,12 +161,10 @@ int GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum 
       }
       glBindVertexArray(g.vao);
       glDrawElements(mode, g.indexCount, GL_UNSIGNED_INT, nullptr);
-      ++drawn;
     }
   }
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
-  return drawn;
 }
 
 }  // namespace sl

@@ -64,9 +64,9 @@ struct GpuScene {
   // cullTo: a light view's viewProj; instances whose bounds lie wholly beyond one side of its
   // window (|x| or |y| > w at every corner, all in front) are skipped: an orthographic or
   // projective light casts along its rays, so they cannot shadow anything in that view. Depth is
-  // never culled (casters toward the light must stay). Returns the instances drawn.
-  int draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All,
-           const glm::mat4* cullTo = nullptr) const;
+  // never culled (casters toward the light must stay).
+  void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All,
+            const glm::mat4* cullTo = nullptr) const;
 
   const Scene& scene;
   std::vector<GpuMesh> meshes;

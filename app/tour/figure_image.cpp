@@ -2,6 +2,8 @@
 // it only rasterizes glyphs into an alpha texture, which is blended here pixel for pixel.
 #include "tour/figure_image.h"
 
+#include "explorer/ui_scale.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -10,9 +12,6 @@
 
 namespace sl {
 namespace {
-
-// Latin-1, Greek (ε, σ), punctuation (— “ ” …), arrows (↔) and maths (≈ ≤ ×).
-const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
 
 // Decodes one UTF-8 code point at s[i] and advances i; malformed bytes become '?'.
 unsigned decodeUtf8(const std::string& s, size_t& i) {
@@ -73,8 +72,8 @@ FigureFonts::FigureFonts(float bodyPixels, float titlePixels) : atlas_(std::make
   cfg.PixelSnapH = true;
   for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
     if (!std::filesystem::exists(path)) continue;
-    body_ = atlas_->AddFontFromFileTTF(path, bodyPixels, &cfg, kGlyphRanges);
-    title_ = atlas_->AddFontFromFileTTF(path, titlePixels, &cfg, kGlyphRanges);
+    body_ = atlas_->AddFontFromFileTTF(path, bodyPixels, &cfg, textGlyphRanges());
+    title_ = atlas_->AddFontFromFileTTF(path, titlePixels, &cfg, textGlyphRanges());
     if (body_ && title_) break;
   }
   if (!body_ || !title_) {  // ImGui's own bitmap font, scaled to whole multiples of 13 px

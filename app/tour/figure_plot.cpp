@@ -10,9 +10,6 @@ namespace {
 
 const glm::vec3 kFrame{0.45f, 0.46f, 0.5f}, kGrid{0.22f, 0.23f, 0.26f}, kLabel{0.7f, 0.72f, 0.75f};
 
-// Curves meant for white paper (black "true" curve) stay visible on the dark figure.
-glm::vec3 onDark(glm::vec3 c) { return glm::dot(c, glm::vec3(0.3f, 0.59f, 0.11f)) < 0.05f ? glm::vec3(0.95f) : c; }
-
 // Each pixel near the segment takes the colour by its coverage of a stroke `width` wide (distance
 // from the pixel centre to the segment), so line centres get the exact colour.
 void drawSegment(RgbaImage& img, glm::vec2 a, glm::vec2 b, glm::vec3 colour, float width) {
@@ -65,7 +62,7 @@ void drawFigurePlot(RgbaImage& img, const FigureFonts& fonts, const Plot& plot, 
   for (float m : plot.markers) dashedVertical(img, int(std::round(px(f.unit({m, f.yLo})).x)), top, bottom, kLabel);
   for (size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& s = plot.series[k];
-    const glm::vec3 colour = onDark(s.colour);
+    const glm::vec3 colour = plotColourOnDark(s.colour);
     for (const auto& stroke : f.strokes(s))
       for (size_t i = 1; i < stroke.size(); ++i) drawSegment(img, px(stroke[i - 1]), px(stroke[i]), colour, s.width);
     const int ly = top + int(k) * body;

@@ -141,26 +141,32 @@ LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std:
   };
   if (light.type == Light::Type::Spot || sinGamma < kFallbackSinGamma || nChoice.mode == LispsmN::Mode::Infinity)
     return focused();
-  const float t = std::min((sinGamma - kFallbackSinGamma) / (kFullWarpSinGamma - kFallbackSinGamma), 1.0f);
-  const float w = t * t * (3.0f - 2.0f * t);  // smoothstep: n and the basis change without a kink
+  const float w = viewWarpWeight(sinGamma);
   const glm::mat4 lightView = warpBasis(light, eye, viewDir, cosGamma, w, jitter.rotationRad);
-
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const auto& p : receivers) {
-    glm::vec3 q = glm::vec3(lightView * glm::vec4(p, 1.0f));
-    lo = glm::min(lo, q);
-    hi = glm::max(hi, q);
-  }
-  float zLightMin = 1e30f, zLightMax = -1e30f;  // light-view z of every caster (toward the light = larger)
-  for (const auto& p : casters) {
-    float z = (lightView * glm::vec4(p, 1.0f)).z;
-    zLightMin = std::min(zLightMin, z);
-    zLightMax = std::max(zLightMax, z);
-  }
-  zLightMin = std::min(zLightMin, lo.z);
-  zLightMax = std::max(zLightMax, hi.z);
-  return warpedView(lightView, eye, sinGamma, viewDir, receivers, lo, hi, zLightMin, zLightMax, nChoice,
+  const LightViewBox box = lightViewBox(lightView, receivers, casters);
+  return warpedView(lightView, eye, sinGamma, viewDir, receivers, box.lo, box.hi, box.zMin, box.zMax, nChoice,
                     std::max(w, 1e-6f), size, jitter);
+}
+
+float viewWarpWeight(float sinGamma) {
+  const float t = std::clamp((sinGamma - kFallbackSinGamma) / (kFullWarpSinGamma - kFallbackSinGamma), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);  // smoothstep: no kink where the warp sets in
+}
+
+LightViewBox lightViewBox(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                          const std::vector<glm::vec3>& casters) {
+  LightViewBox box;
+  for (const auto& p : receivers) {
+    const glm::vec3 q(lightView * glm::vec4(p, 1.0f));
+    box.lo = glm::min(box.lo, q);
+    box.hi = glm::max(box.hi, q);
+  }
+  box.zMin = box.lo.z, box.zMax = box.hi.z;
+  for (const auto& p : casters) {
+    const float z = (lightView * glm::vec4(p, 1.0f)).z;
+    box.zMin = std::min(box.zMin, z), box.zMax = std::max(box.zMax, z);
+  }
+  return box;
 }
 
 LispsmN lispsmN(const ParamSet& params) {

@@ -23,6 +23,18 @@ std::vector<ParamDecl> lispsmParams();    // their declarations (lispsm and casc
 // (w = 1: fully turned to the view). LiSPSM and LogPSM warp along its +y.
 glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
                     float roll);
+// How far a warp along the view is turned on, from sin(gamma) between view and light: 0 below
+// 0.05 (the view looks along the light: no warp helps), 1 from 0.15, smoothstep between, so n
+// (LiSPSM) or δ (LogPSM) and the basis change without a pop when the view turns toward the light.
+float viewWarpWeight(float sinGamma);
+// The receivers' box in `lightView`, and the light-view z range of receivers and casters (toward
+// the light = larger): what a warped view is fitted to.
+struct LightViewBox {
+  glm::vec3 lo{1e30f}, hi{-1e30f};
+  float zMin = 1e30f, zMax = -1e30f;
+};
+LightViewBox lightViewBox(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
+                          const std::vector<glm::vec3>& casters);
 LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
                      const std::vector<glm::vec3>& casters, const LispsmN& n, int size, const LayoutJitter& jitter);
 }  // namespace sl

@@ -15,10 +15,7 @@ namespace sl {
 
 namespace {
 
-constexpr int kMaxTessLevel = 64;  // GL_MAX_TESS_GEN_LEVEL is at least 64
-// As LiSPSM: below kFallbackSinGamma the view looks along the light and no warp helps; up to
-// kFullWarpSinGamma δ shrinks smoothly from "no warp" and the basis turns to the view.
-constexpr float kFallbackSinGamma = 0.05f, kFullWarpSinGamma = 0.15f;
+constexpr int kMaxTessLevel = 64;     // GL_MAX_TESS_GEN_LEVEL is at least 64
 constexpr float kNoWarpDelta = 1e6f;  // δ above this: the warp is the identity to float precision
 
 // The longest edge of any triangle in world units (instances' scales included), cached per
@@ -105,22 +102,13 @@ LogFit logFit(const LayoutInput& in) {
   const glm::vec3 eye(invView[3]), viewDir = -glm::normalize(glm::vec3(invView[2]));
   const float cosGamma = glm::dot(viewDir, glm::normalize(light.direction));
   const float sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
-  const float s = std::clamp((sinGamma - kFallbackSinGamma) / (kFullWarpSinGamma - kFallbackSinGamma), 0.0f, 1.0f);
-  const float w = s * s * (3.0f - 2.0f * s);
+  // As LiSPSM's: near a view along the light δ grows to "no warp" and the basis turns to the fixed one.
+  const float w = viewWarpWeight(sinGamma);
   const glm::mat4 lightView = warpBasis(light, eye, viewDir, cosGamma, w, in.jitter.rotationRad);
-
-  glm::vec3 lo(1e30f), hi(-1e30f);
+  const LightViewBox box = lightViewBox(lightView, body.receivers, body.casters);
+  const glm::vec3 lo = box.lo, hi = box.hi;
   float zn = 1e30f;
-  for (const auto& p : body.receivers) {
-    const glm::vec3 q(lightView * glm::vec4(p, 1.0f));
-    lo = glm::min(lo, q), hi = glm::max(hi, q);
-    zn = std::min(zn, glm::dot(p - eye, viewDir));
-  }
-  float zMin = lo.z, zMax = hi.z;  // light-view z (toward the light = larger)
-  for (const auto& p : body.casters) {
-    const float z = (lightView * glm::vec4(p, 1.0f)).z;
-    zMin = std::min(zMin, z), zMax = std::max(zMax, z);
-  }
+  for (const auto& p : body.receivers) zn = std::min(zn, glm::dot(p - eye, viewDir));
   const glm::vec2 extent = glm::max(glm::vec2(hi - lo), glm::vec2(1e-4f));
   const glm::vec2 jitter = in.jitter.offsetTexels * extent / float(body.size);
   LightView v;
@@ -128,9 +116,9 @@ LogFit logFit(const LayoutInput& in) {
   v.view = lightView;
   v.windowMin = glm::vec2(lo) + jitter;
   v.windowMax = glm::vec2(hi) + jitter;
-  const float margin = std::max(1e-3f, (zMax - zMin) * 1e-3f);
-  v.nearPlane = -zMax - margin;
-  v.farPlane = -zMin + margin;
+  const float margin = std::max(1e-3f, (box.zMax - box.zMin) * 1e-3f);
+  v.nearPlane = -box.zMax - margin;
+  v.farPlane = -box.zMin + margin;
   v.proj = glm::ortho(v.windowMin.x, v.windowMax.x, v.windowMin.y, v.windowMax.y, v.nearPlane, v.farPlane);
   v.viewProj = v.proj * v.view;
   v.texelWorldSize = extent.x / float(body.size);  // at the near side; shaders measure the rest
