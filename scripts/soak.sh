@@ -2,12 +2,15 @@
 # Reliability run of the explorer window under Xvfb: scripts/soak.sh MINUTES [extra flags].
 # `shadowlab --soak` switches every preset, scene, viewport count and debug view in turn and
 # breaks/fixes a shader in a COPY of shaders/ (hot reload must report it and recover), checks GL
-# errors every frame and reports resident memory after warm-up and at the end (VmRSS). Exits
+# errors every frame and reports resident memory (VmRSS after malloc_trim) in one baseline state
+# at the end of each cycle through every preset and scene; the first cycle is the warm-up. Exits
 # non-zero on a crash, a GL error, a failed frame, a shader that does not recover, or RSS growth
-# beyond the bound the report states. Not part of CI (slow); SOAK_SECONDS=20 for a smoke run.
+# from the first cycle to the last beyond the bound the report states. A cycle takes about
+# 2 minutes at 1280x720 here, so the default of 6 minutes judges two. Not part of CI (slow);
+# SOAK_SECONDS=20 for a smoke run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-minutes="${1:-2}"
+minutes="${1:-6}"
 shift || true
 case "$minutes" in '' | *[!0-9]*) echo "usage: scripts/soak.sh MINUTES [explorer flags]" >&2; exit 2 ;; esac
 seconds="${SOAK_SECONDS:-$((minutes * 60))}"

@@ -205,7 +205,9 @@ TEST(ExplorerSmoke, ShortSoakRecoversFromABrokenShaderAndReportsMemory) {
   const CommandResult result = runCommand(command);
   EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("soak: PASSED"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("RSS after warm-up"), std::string::npos) << result.output;
+  // 15 s is less than one cycle through every preset and scene, so growth is not judged here
+  // (scripts/soak.sh is); the report must say so rather than pass it silently.
+  EXPECT_NE(result.output.find("growth not judged"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("shading.glsl:"), std::string::npos) << "the broken shader was never reported";
   std::ifstream after(shading);
   const std::string restored((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>());

@@ -71,6 +71,7 @@ class ShaderLibrary {
   // Errors of all programs whose latest build failed, each "file:line: message".
   std::vector<std::string> errors() const;
   int buildCount() const { return builds_; }
+  size_t programCount() const { return programs_.size(); }
 
   // A uniform nobody sets reads 0, so a typo in its name (in GLSL or in C++) fails silently.
   // For every program used since its last link and not checked yet: each active `u_*` uniform
