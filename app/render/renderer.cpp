@@ -378,6 +378,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
              drawSceneForward(spec, bindVisibilityInputs, in.time, vp.prev_);
              drawSky();
            }});
+    addVolumesPass(g, vp, tag, prelude, vp.depth_.get(), {sm});
     g.requestSink("color" + tag);
     g.requestSink(raw);
     addDebugViewPasses(g, vp, tag, in);
@@ -404,6 +405,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
   vp.shownVisibility_ = ctx.shownVisibilityTex ? ctx.shownVisibilityTex : vp.finalVisibility_.get();
   if (ctx.wroteColor) {
+    addVolumesPass(g, vp, tag, prelude, vp.depth_.get(), {sm});
     g.requestSink("color" + tag);
     g.requestSink(fin);
     addDebugViewPasses(g, vp, tag, in);
@@ -425,6 +427,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
            bindGBuffer(p, units, visTex);
            drawFullscreen();
          }});
+  addVolumesPass(g, vp, tag, prelude, gDepth_.get(), {"gbuffer", sm});
   g.requestSink("color" + tag);
   g.requestSink(visibility);
   addDebugViewPasses(g, vp, tag, in);

@@ -8,6 +8,7 @@
 #include "gl/texture_units.h"
 #include "render/frame_graph.h"
 #include "render/light_views_buffer.h"
+#include "render/volumes_buffer.h"
 #include "technique.h"
 
 #include <cstdint>
@@ -175,6 +176,10 @@ class Renderer {
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  // Scenes with volumes: marches them over the viewport's colour (render/volume_pass.cpp).
+  // depth: the target the colour's surfaces were drawn with; reads: what the lookup needs.
+  void addVolumesPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::string& prelude,
+                      const Texture2D* depth, const std::vector<std::string>& reads);
   std::string techniquePrelude(const Viewport& vp) const;
   // The technique's uniforms and every part's bindings (light views, shadow map, ...).
   void bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const;
@@ -215,6 +220,7 @@ class Renderer {
   // shadeWithVisibility's own targets: the substituted visibility and the colour it gives.
   std::unique_ptr<Texture2D> substVisibility_, substColor_;
   Framebuffer substFbo_;
+  std::unique_ptr<VolumesBuffer> volumes_;  // the volumes pass's copy of Scene::volumes
   FrameStats stats_;
   glm::mat4 view_{1.0f}, proj_{1.0f};
 };

@@ -12,7 +12,8 @@ SceneEffects sceneEffects(const Scene& scene) {
   // is treated as a point light here rather than as an area light of undefined size.
   e.areaLight = scene.light.radius > 0.0f;
   e.lightRadius = e.areaLight ? scene.light.radius : 0.0f;
-  e.semiTransparent = !scene.volumes.empty();
+  e.media = !scene.volumes.empty();
+  e.semiTransparent = e.media;
   for (size_t i = 0; i < scene.instances.size() && !e.semiTransparent; ++i)
     e.semiTransparent = instanceSemiTransparent(scene, i) && !scene.meshes[scene.instances[i].mesh].indices.empty();
   return e;

@@ -17,6 +17,8 @@ struct SceneEffects {
   // Some caster lets light through attenuated: a blended material (glTF BLEND, hair) on an
   // instance, or a participating medium (Scene::volumes).
   bool semiTransparent = false;
+  // Participating media (Scene::volumes): the camera view marches them (the volumes pass).
+  bool media = false;
 };
 
 SceneEffects sceneEffects(const Scene& scene);

@@ -78,7 +78,7 @@ void parseVolume(const JsonReader& r, const json& j, const std::string& where, S
   }
   if (const json* x = JsonReader::find(j, "noise_scale")) v.noiseScale = r.positive(*x, where + ".noise_scale");
   if (const json* x = JsonReader::find(j, "octaves")) v.octaves = r.integer(*x, where + ".octaves", 1, 8);
-  if (const json* x = JsonReader::find(j, "seed")) v.seed = uint32_t(r.integer(*x, where + ".seed", 0, 1 << 30));
+  if (const json* x = JsonReader::find(j, "seed")) v.seed = uint32_t(r.integer(*x, where + ".seed", 0, (1 << 24) - 1));  // exact as a GLSL float
   if (scene.volumes.size() >= 4) r.fail(where, "at most 4 volumes per scene");
   scene.volumes.push_back(v);
 }

@@ -32,7 +32,7 @@ float biasDepth(vec3 p, float cosTheta, int view) {
     // receivers behind each texel centre of a grazing plane shadowing themselves, which shows
     // as a wedge over whole regions (a sun 0.06 degrees up has tan = 955).
     float tanTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 1e-4);
-    float texels = u_bias_slope + representationFilterRadius();
+    float texels = u_bias_slope + representationFilterRadius(p, view);
     bias += texels * tanTheta * layoutTexelWorldSize(p, view) * layoutDepthScale(view);
   }
 #endif

@@ -45,4 +45,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   return visibility;
 }
 
-float representationFilterRadius() { return 0.0; }
+float representationFilterRadius(vec3 p, int view) { return 0.0; }

@@ -20,4 +20,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 }
 
 // How far from the receiver (in texels) the filter reads: scales the slope bias.
-float representationFilterRadius() { return 0.5 * (u_pcf_kernel - 1.0); }
+float representationFilterRadius(vec3 p, int view) { return 0.5 * (u_pcf_kernel - 1.0); }

@@ -35,4 +35,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 }
 
 // How far from the receiver (in texels) the filter reads: scales the slope bias.
-float representationFilterRadius() { return u_poisson_radius; }
+float representationFilterRadius(vec3 p, int view) { return u_poisson_radius; }

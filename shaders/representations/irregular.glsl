@@ -4,6 +4,8 @@
 // plane) fall back to the nearest-depth test of the shadow map, with its usual bias.
 // Needs gl_FragCoord at the G-buffer's pixel: every caller (forward, visibility, pixel-correct
 // scene pass, debug views) is a full-viewport pass of the same size.
+// Visibility exists only at the G-buffer's samples (shaders/passes/volumes.frag asks).
+#define SL_PER_PIXEL_VISIBILITY
 uniform sampler2DArray u_shadowMap;
 uniform int u_izbWidth;
 layout(std430, binding = 10) readonly buffer IzbBits { uint shadowBits[]; };
@@ -17,4 +19,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   return (shadowBits[pixel >> 5] & bit) != 0u ? 0.0 : 1.0;
 }
 
-float representationFilterRadius() { return 0.0; }
+float representationFilterRadius(vec3 p, int view) { return 0.0; }

@@ -54,4 +54,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 
 // How far from the receiver (in texels) the filter reads: scales the slope bias. As the nearest
 // test: the corner a receiver takes is its nearest one except beside an edge.
-float representationFilterRadius() { return 0.0; }
+float representationFilterRadius(vec3 p, int view) { return 0.0; }

@@ -14,20 +14,12 @@ namespace sl {
 namespace {
 
 // SSBO bindings shared with passes/deep_fragments.frag and passes/deep_compress.comp.
-constexpr GLuint kCountsBinding = 3, kFragmentsBinding = 4, kOverflowBinding = 5, kVolumesBinding = 6;
-
-// std430 layout of one volume (shaders/common/volume_density.glsl).
-struct GpuVolume {
-  glm::vec4 centerShape;  // xyz centre, w: 0 box, 1 sphere
-  glm::vec4 halfSizeExtinction;
-  glm::vec4 noise;  // scale, amount, octaves, seed (as float: < 2^24)
-};
+constexpr GLuint kCountsBinding = 3, kFragmentsBinding = 4, kOverflowBinding = 5;
 
 }  // namespace
 
 DeepState::~DeepState() {
   releaseBuffers();
-  if (volumes_) glDeleteBuffers(1, &volumes_);
   if (emptyFbo_) glDeleteFramebuffers(1, &emptyFbo_);
 }
 
@@ -114,26 +106,6 @@ long long DeepState::texels() const {
   return t;
 }
 
-void DeepState::uploadVolumes(const Scene& scene) {
-  std::vector<GpuVolume> v;
-  for (const Volume& vol : scene.volumes)
-    v.push_back({glm::vec4(vol.center, vol.shape == Volume::Shape::Sphere ? 1.0f : 0.0f),
-                 glm::vec4(vol.halfSize, vol.extinction),
-                 glm::vec4(vol.noiseScale, vol.noise, float(vol.octaves), float(vol.seed))});
-  // Header: the count in x; std430 aligns the array of vec4 structs to 16 bytes.
-  std::vector<glm::vec4> data(1 + 3 * v.size(), glm::vec4(0.0f));
-  data[0].x = float(v.size());
-  for (size_t i = 0; i < v.size(); ++i) {
-    data[1 + 3 * i] = v[i].centerShape;
-    data[2 + 3 * i] = v[i].halfSizeExtinction;
-    data[3 + 3 * i] = v[i].noise;
-  }
-  if (volumes_) glDeleteBuffers(1, &volumes_);
-  glCreateBuffers(1, &volumes_);
-  glNamedBufferStorage(volumes_, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data(), 0);
-  label(GL_BUFFER, volumes_, "deep volumes");
-}
-
 // Every semi-transparent fragment seen from the light goes into its texel's list (depth, alpha);
 // a full list counts the fragment as overflow instead of writing past its end.
 void DeepState::fragmentsPass(const PartContext& ctx) {
@@ -160,7 +132,7 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
 // Per texel: sort the list, merge it with the volumes ray-marched along the texel's light ray
 // into one transmittance function, compress it to at most deep.nodes nodes.
 void DeepState::compressPass(const PartContext& ctx) {
-  uploadVolumes(*ctx.scene);
+  volumes_.upload(*ctx.scene);
   const ProgramSpec spec{"deep compress", {{GL_COMPUTE_SHADER, "passes/deep_compress.comp"}}, ctx.techniquePrelude};
   Program& p = ctx.shaders->get(spec);
   if (!p.valid()) return;
@@ -170,7 +142,7 @@ void DeepState::compressPass(const PartContext& ctx) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumesBinding, volumes_);
+  volumes_.bind();
   glBindImageTexture(0, nodes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   glBindImageTexture(1, counts_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
   p.set("u_deepNodesOut", 0);  // image units (the layout bindings say the same)

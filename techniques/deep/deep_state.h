@@ -7,6 +7,7 @@
 
 #include "depth/depth_map_state.h"
 #include "gl/gl_util.h"
+#include "render/volumes_buffer.h"
 #include "technique.h"
 
 #include <string>
@@ -42,13 +43,13 @@ class DeepState : public RepresentationState {
   void releaseBuffers();
   void fragmentsPass(const PartContext& ctx);
   void compressPass(const PartContext& ctx);
-  void uploadVolumes(const Scene& scene);
 
   DepthMapState opaque_;
   bool active_ = false;
   int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, layers_ = 1;
   Texture2D nodes_, counts_;
-  GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, volumes_ = 0, emptyFbo_ = 0;
+  GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, emptyFbo_ = 0;
+  VolumesBuffer volumes_;
   size_t bufferTexels_ = 0, bufferFragments_ = 0;
   unsigned overflow_[2] = {0, 0};
 };

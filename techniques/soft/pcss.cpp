@@ -92,10 +92,12 @@ class PcssState : public DepthMapState {
       Texture2D* target = it->second;
       const std::string resource = "view." + std::string(name) + ctx.viewportTag;
       const std::string defines = std::string(name) == "penumbra" ? "#define SL_VIEW_PENUMBRA\n" : "";
-      std::vector<std::string> reads;
+      // The G-buffer too: the radius is shown in texels of the view each pixel reads.
+      std::vector<std::string> reads{"gbuffer"};
       if (!blocker.empty()) reads.push_back(blocker);
       graph.add({resource, reads, {resource}, [ctx, target, defines] {
-                   drawPartView(ctx, target, "representations/soft/pcss_view.frag", {.defines = defines});
+                   drawPartView(ctx, target, "representations/soft/pcss_view.frag",
+                                {.defines = defines, .withGBuffer = true});
                  }});
       graph.requestSink(resource);
     }

@@ -135,5 +135,5 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 // Half the filter's footprint: the slope bias then covers the depth range of a tilted receiver
 // across the kernel, as for PCF (the Gaussian CDF reads a receiver at its own mean depth as
 // half shadowed without it).
-float representationFilterRadius() { return 0.5 * max(u_filter_width, 1.0); }
+float representationFilterRadius(vec3 p, int view) { return 0.5 * max(u_filter_width, 1.0); }
 #endif

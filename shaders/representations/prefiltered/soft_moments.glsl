@@ -57,4 +57,4 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
 
 // Moment reconstructions read a planar receiver under its own box as lit (its mean is its
 // depth), so the slope bias needs only the minimum kernel's reach.
-float representationFilterRadius() { return kPcssMinRadius; }
+float representationFilterRadius(vec3 p, int view) { return kPcssMinRadius; }

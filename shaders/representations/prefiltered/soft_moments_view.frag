@@ -9,16 +9,17 @@ out vec4 o_color;
 
 void main() {
   vec3 uvLayer;
-  float depth;
+  float depth = 0.0;
   vec4 b = vec4(0.0);  // not searched
+  int view = 0;
 #ifdef SL_AREA_LIGHT
   if (receiverShadowCoord(ivec2(gl_FragCoord.xy), uvLayer, depth)) {
     vec4 p = softMomentPenumbra(uvLayer, depth);
-    int view = int(uvLayer.z + 0.5);
+    view = int(uvLayer.z + 0.5);
     float dR = pcssLinear(depth, view), dB = pcssLinear(p.y, view);
     bool found = p.x >= kSoftMinBlockerFraction;
     b = vec4(max(dR - dB, 0.0), found ? pcssPenumbraWorld(dR, dB) : 0.0, found ? 1.0 : 0.0, p.w);
   }
 #endif
-  o_color = penumbraViewColor(b);
+  o_color = penumbraViewColor(b, view, depth);
 }

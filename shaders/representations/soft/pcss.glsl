@@ -56,6 +56,8 @@ vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
 }
 
 #if defined(SL_AREA_LIGHT) && !defined(SL_PCSS_SEARCH_PASS)
+// The blocker search ran at the G-buffer's samples only (shaders/passes/volumes.frag asks).
+#define SL_PER_PIXEL_VISIBILITY
 uniform sampler2D u_pcssBlocker;
 
 vec4 pcssBlockerHere() { return texelFetch(u_pcssBlocker, ivec2(gl_FragCoord.xy), 0); }
@@ -76,15 +78,17 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   return pcssFilter(uvLayer, receiverDepth, pcssRadiusTexels(b, view, receiverDepth), int(u_pcss_filter_samples + 0.5));
 }
 
-// The slope bias scales with how far the filter reads (receiver-plane bias is the presets' mode).
-float representationFilterRadius() {
+// The slope bias scales with how far the filter reads (receiver-plane bias is the presets' mode),
+// in texels of the view the receiver reads (cascades: its own split's, not the first's).
+float representationFilterRadius(vec3 p, int view) {
   vec4 b = pcssBlockerHere();
-  return b.z < 0.5 ? kPcssMinRadius : clamp(b.y / lightViewRange[0].z, kPcssMinRadius, u_pcss_max_radius);
+  float r = b.y / layoutTexelWorldSize(p, view);
+  return b.z < 0.5 || isnan(r) ? kPcssMinRadius : clamp(r, kPcssMinRadius, u_pcss_max_radius);
 }
 #else
 // Point light (or inside the search pass): a minimum-kernel PCF over the same disk.
 float representationVisibility(vec3 uvLayer, float receiverDepth) {
   return pcssFilter(uvLayer, receiverDepth, kPcssMinRadius, int(u_pcss_filter_samples + 0.5));
 }
-float representationFilterRadius() { return kPcssMinRadius; }
+float representationFilterRadius(vec3 p, int view) { return kPcssMinRadius; }
 #endif

@@ -1,0 +1,33 @@
+// The scene's participating media as the SSBO that shaders/common/volume_density.glsl reads
+// (binding 6): the deep map's compress pass and the camera view's volumes pass upload it the
+// same way. Re-uploaded only when the volumes change.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace sl {
+
+// std430 data of Scene::volumes: a header vec4 (x = count), then three vec4 per volume.
+std::vector<glm::vec4> packVolumes(const Scene& scene);
+
+class VolumesBuffer {
+ public:
+  static constexpr GLuint kBinding = 6;  // layout(binding = 6) in volume_density.glsl
+  VolumesBuffer() = default;
+  VolumesBuffer(const VolumesBuffer&) = delete;
+  VolumesBuffer& operator=(const VolumesBuffer&) = delete;
+  ~VolumesBuffer();
+  void upload(const Scene& scene);
+  void bind() const;  // to kBinding
+
+ private:
+  GLuint id_ = 0;
+  std::vector<glm::vec4> data_;
+};
+
+}  // namespace sl
