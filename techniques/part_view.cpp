@@ -21,6 +21,7 @@ void drawPartView(const PartContext& ctx, Texture2D* target, const std::string& 
   TextureUnits units;
   ctx.bindTechnique(p, units);
   if (options.withGBuffer) ctx.bindGBuffer(p, units);
+  if (options.bind) options.bind(p, units);
   p.set("u_viewSize", glm::vec2(target->width(), target->height()));
   ctx.drawFullscreen();
 }

@@ -5,6 +5,7 @@
 
 #include "technique.h"
 
+#include <functional>
 #include <string>
 
 namespace sl {
@@ -12,6 +13,7 @@ namespace sl {
 struct PartViewOptions {
   std::string defines;       // prepended to the technique prelude (also part of the program's name)
   bool withGBuffer = false;  // also bind the G-buffer (u_gPosition, u_gNormal, ...)
+  std::function<void(const Program&, TextureUnits&)> bind;  // the view's own inputs, if any
 };
 
 void drawPartView(const PartContext& ctx, Texture2D* target, const std::string& fragment,

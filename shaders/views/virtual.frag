@@ -1,11 +1,12 @@
 // Debug views of the virtual shadow map (SL_VIRTUAL_VIEW from the layout state):
 // 0 `pages`: the level of the page each pixel reads (virtualLevelColour: 0 red, 1 orange,
 //   2 yellow, 3 green, 4 cyan, 5 blue, 6 purple, 7+ grey), page borders dark, hatched where the
-//   page is coarser than the pixel's footprint asks for (pool exhausted; only under the footprint
-//   criterion: the others ask for coarser pages by design);
-// 1 `requested-resolution`: the level the pixel's footprint asks for, same colours;
+//   page is coarser than the pixel asked for (pool exhausted);
+// 1 `requested-resolution`: the level the pixel asked for under virtual.criterion (the marking
+//   pass's own function, layouts/virtual_request.glsl), same colours;
 // 2 `cache`: red = page drawn this frame, green = served from the cache (brighter: more frames).
 #include "common/light.glsl"
+#include "layouts/virtual_request.glsl"
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 out vec4 o_color;
@@ -19,18 +20,18 @@ void main() {
   }
   vec3 N = normalize(texelFetch(u_gNormal, pixel, 0).xyz);
   float shade = 0.45 + 0.55 * max(dot(N, directionToLight(P.xyz)), 0.0);
-  vec3 uv = virtualUv(P.xyz);
-  int requested = virtualLevelFor(virtualFootprint(u_gPosition, pixel));
+  vec2 uv;
+  int requested = virtualRequestedLevel(u_gPosition, pixel, uv);
   VirtualPage page;
-  bool onMap = uv.z != 0.0 && all(greaterThanEqual(uv.xy, vec2(0.0))) && all(lessThanEqual(uv.xy, vec2(1.0)));
+  bool onMap = requested >= 0;
   vec3 colour = vec3(0.3);
 #if SL_VIRTUAL_VIEW == 1
   if (onMap) colour = virtualLevelColour(requested);
 #else
-  if (onMap && virtualFindPage(uv.xy, page)) {
+  if (onMap && virtualFindPage(uv, page)) {
 #if SL_VIRTUAL_VIEW == 0
     colour = virtualLevelColour(page.level);
-    if (u_virtual_criterion < 0.5 && page.level > requested && mod(gl_FragCoord.x + gl_FragCoord.y, 6.0) < 2.0)
+    if (page.level > requested && mod(gl_FragCoord.x + gl_FragCoord.y, 6.0) < 2.0)
       colour *= 0.4;
 #else
     float hits = float(page.entry >> 24);

@@ -168,6 +168,34 @@ TEST(VirtualShadowMap, CriteriaAskForDifferentPagesForTheSameShadows) {
   expectSane(tiled.frame, "tiled");
 }
 
+// The requested-resolution view shows what each criterion asked for (the marking pass's own
+// function), not the footprint under every criterion: tiled asks finer than virtual on columns'
+// ground, so the two views differ over much of the picture.
+TEST(VirtualShadowMap, RequestedResolutionViewFollowsTheCriterion) {
+  test::GlHarness h;
+  const Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  auto requestedView = [&](const std::string& preset) {
+    Viewport vp(makeTechnique(preset, {}));
+    vp.shownViews = {"requested-resolution"};
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = kW;
+    in.height = kH;
+    for (int f = 0; f < 2; ++f) h.renderer.render(in, {&vp});
+    EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+    const Texture2D* view = vp.viewTexture("requested-resolution");
+    return view ? view->readRgba8() : std::vector<unsigned char>{};
+  };
+  const std::vector<unsigned char> matched = requestedView("virtual"), tiled = requestedView("tiled");
+  ASSERT_EQ(matched.size(), size_t(4) * kW * kH);
+  ASSERT_EQ(tiled.size(), matched.size());
+  int differing = 0;
+  for (size_t i = 0; i < matched.size(); i += 4)
+    differing += std::abs(int(matched[i]) - int(tiled[i])) + std::abs(int(matched[i + 1]) - int(tiled[i + 1])) > 24;
+  EXPECT_GT(differing, kW * kH / 10) << "the view shows the same levels under both criteria";
+}
+
 // Per-page instance culling (shadowmap.cull_instances): an instance outside a page's square is
 // not drawn into it, and the map is the same texel for texel.
 TEST(VirtualShadowMap, PagesCullInstancesWithoutChangingTheMap) {

@@ -163,6 +163,15 @@ class VirtualState : public LayoutState {
   // Marks the pages the G-buffer's pixels need on the GPU, reads them back at once (synchronous:
   // the allocation serves this frame; on llvmpipe the wait is the compute itself), allocates
   // tiles and uploads the page table.
+  // The edges criterion reads last frame's visibility (a texture of this frame's size); the
+  // marking pass and the views ask through the same function (layouts/virtual_request.glsl).
+  static void bindPreviousVisibility(const Program& p, TextureUnits& units, const PartContext& ctx) {
+    const bool previous = ctx.previousVisibility && ctx.previousVisibility->width() == ctx.width &&
+                          ctx.previousVisibility->height() == ctx.height;
+    units.bind(p, "u_previousVisibility", previous ? ctx.previousVisibility->id() : 0);
+    p.set("u_hasPreviousVisibility", previous ? 1 : 0);
+  }
+
   void markAndAllocate(const PartContext& ctx) {
     ProgramSpec spec{"virtual marks", {{GL_COMPUTE_SHADER, "passes/virtual_mark.comp"}}, defines()};
     draw_.clear();  // a marking program that does not build draws nothing (its error is shown)
@@ -174,11 +183,7 @@ class VirtualState : public LayoutState {
     TextureUnits units;
     ctx.bindTechnique(p, units);
     ctx.bindGBuffer(p, units);
-    // The edges criterion reads last frame's visibility (a texture of this frame's size).
-    const bool previous = ctx.previousVisibility && ctx.previousVisibility->width() == ctx.width &&
-                          ctx.previousVisibility->height() == ctx.height;
-    units.bind(p, "u_previousVisibility", previous ? ctx.previousVisibility->id() : 0);
-    p.set("u_hasPreviousVisibility", previous ? 1 : 0);
+    bindPreviousVisibility(p, units, ctx);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marks_);
     glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -195,9 +200,12 @@ class VirtualState : public LayoutState {
     Texture2D* target = it->second;
     const std::string res = std::string("view.") + kViewNames[view] + ctx.viewportTag;
     graph.add({res, {"gbuffer", pagesRes}, {res}, [ctx, target, view] {
-                 drawPartView(
-                     ctx, target, "views/virtual.frag",
-                     {.defines = "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n", .withGBuffer = true});
+                 drawPartView(ctx, target, "views/virtual.frag",
+                              {.defines = "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n",
+                               .withGBuffer = true,
+                               .bind = [&ctx](const Program& p, TextureUnits& units) {
+                                 bindPreviousVisibility(p, units, ctx);
+                               }});
                }});
     graph.requestSink(res);
   }

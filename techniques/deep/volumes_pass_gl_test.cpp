@@ -32,7 +32,8 @@ bool ran(const Renderer& r, const std::string& pass) {
 }
 
 // Red channel at the centre pixel of the viewport's colour, in [0, 1] (display encoded).
-float centreColour(test::GlHarness& h, const Scene& scene, const std::string& preset, const std::vector<std::string>& sets) {
+float centreColour(test::GlHarness& h, const Scene& scene, const std::string& preset,
+                   const std::vector<std::string>& sets) {
   h.renderer.setScene(scene);
   Viewport vp(makeTechnique(preset, sets));
   FrameInput in;

@@ -1,0 +1,53 @@
+// The level of pages a covered G-buffer pixel asks for under the termination criterion
+// (virtual.criterion): shared by the page-marking pass and the `requested-resolution` view, so
+// the view shows what the criterion asked for, not the footprint alone.
+// 0 footprint (resolution matching, Lefohn et al. 2007), 1 distance (tiled shadow maps' heuristic
+// after Arvo 2004: the pixel's world size alone, as if every receiver faced the light), 2 edges
+// (adaptive shadow maps, Fernando et al. 2001 / Lefohn et al. 2006: full resolution only near
+// shadow edges, u_virtual_edge_coarsen levels coarser elsewhere; the edges are last frame's, so
+// the first frame asks everywhere). Needs layouts/virtual_common.glsl.
+uniform float u_virtual_edge_coarsen;
+uniform sampler2D u_previousVisibility;
+uniform int u_hasPreviousVisibility;
+
+// Level-0 texels of the pixel's world-space size (the step to its nearest neighbour on the
+// surface) over the level-0 texel's world size: the footprint without the light's angle.
+float virtualWorldFootprint(sampler2D gPosition, ivec2 pixel) {
+  ivec2 size = textureSize(gPosition, 0);
+  vec3 P = texelFetch(gPosition, pixel, 0).xyz;
+  float best = 1e30;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = pixel + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0);
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+    vec4 Q = texelFetch(gPosition, q, 0);
+    if (Q.w > 0.5) best = min(best, length(Q.xyz - P));
+  }
+  return best < 1e29 ? best / lightViewRange[0].z : 1.0;
+}
+
+// Whether last frame's visibility changes within two pixels (a shadow edge passes here).
+bool virtualNearShadowEdge(ivec2 pixel) {
+  if (u_hasPreviousVisibility == 0) return true;
+  ivec2 size = textureSize(u_previousVisibility, 0);
+  float centre = texelFetch(u_previousVisibility, clamp(pixel, ivec2(0), size - 1), 0).x;
+  for (int y = -2; y <= 2; ++y)
+    for (int x = -2; x <= 2; ++x) {
+      float v = texelFetch(u_previousVisibility, clamp(pixel + ivec2(x, y), ivec2(0), size - 1), 0).x;
+      if (abs(v - centre) > 0.25 || (v > 0.02 && v < 0.98)) return true;  // a step, or a soft edge
+    }
+  return false;
+}
+
+// -1 when the pixel is not covered or falls off the map; uv: where it falls in the virtual map.
+int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
+  uv = vec2(-1.0);
+  float footprint = virtualFootprint(gPosition, pixel);
+  if (footprint < 0.0) return -1;
+  uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz).xy;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return -1;
+  if (u_virtual_criterion > 0.5 && u_virtual_criterion < 1.5) footprint = virtualWorldFootprint(gPosition, pixel);
+  int level = virtualLevelFor(footprint);
+  if (u_virtual_criterion > 1.5 && !virtualNearShadowEdge(pixel))
+    level = min(level + int(u_virtual_edge_coarsen + 0.5), SL_VIRTUAL_LEVELS - 1);
+  return level;
+}
