@@ -88,6 +88,9 @@ struct LayoutInput {
   const ParamSet* params = nullptr;
   LayoutJitter jitter;
   VisibleBounds visible;  // set by SdsmState when fit.sdsm is on and bounds have arrived
+  // Unique per Renderer::setScene call over all renderers (0: unknown). What a layout derives
+  // from the scene's geometry alone may be cached under it (a scene's address may be reused).
+  uint64_t sceneGeneration = 0;
 };
 
 // What a part's per-viewport state sees when it adds its passes to a frame.

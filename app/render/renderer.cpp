@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -107,6 +108,8 @@ void Renderer::setScene(const Scene& scene) {
   gpu_ = std::make_unique<GpuScene>(scene);
   scene_ = &scene;
   ++epoch_;
+  static std::atomic<uint64_t> generations{0};
+  sceneGeneration_ = ++generations;
 }
 
 void Renderer::ensureTargets(int w, int h, bool withMotion) {
@@ -334,6 +337,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   Technique& t = vp.technique;
   LayoutInput li;
   li.scene = scene_;
+  li.sceneGeneration = sceneGeneration_;
   li.time = in.time;
   li.cameraView = view_;
   li.cameraProj = proj_;

@@ -211,7 +211,8 @@ class Renderer {
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;
   // Bumped by setScene and by a resize: every previous frame of an older epoch is a cut.
   uint64_t epoch_ = 1;
-  PreviousFrame prev_;  // of the last render call: the shared G-buffer's motion is relative to it
+  uint64_t sceneGeneration_ = 0;  // LayoutInput::sceneGeneration of the current scene
+  PreviousFrame prev_;            // of the last render call: the shared G-buffer's motion is relative to it
   struct GBufferContent {
     glm::mat4 viewProj{1.0f};
     double time = 0.0;

@@ -19,16 +19,15 @@ constexpr int kMaxTessLevel = 64;     // GL_MAX_TESS_GEN_LEVEL is at least 64
 constexpr float kNoWarpDelta = 1e6f;  // δ above this: the warp is the identity to float precision
 
 // The longest edge of any triangle in world units (instances' scales included), cached per
-// scene: it decides how fine the tessellation must be, hence how strong the warp may be.
-float longestCasterEdge(const Scene& scene) {
+// scene generation (LayoutInput::sceneGeneration; 0 = not cached): it decides how fine the
+// tessellation must be, hence how strong the warp may be. (It was keyed on the scene's address
+// and triangle count, which a scene loaded where another one lived could share.)
+float longestCasterEdge(const Scene& scene, uint64_t generation) {
   static std::mutex mutex;
-  static const Scene* cachedScene = nullptr;
-  static size_t cachedTriangles = 0;
+  static uint64_t cachedGeneration = 0;
   static float cachedEdge = 0.0f;
-  size_t triangles = 0;
-  for (const Mesh& m : scene.meshes) triangles += m.indices.size();
   std::lock_guard<std::mutex> lock(mutex);
-  if (cachedScene == &scene && cachedTriangles == triangles) return cachedEdge;
+  if (generation != 0 && generation == cachedGeneration) return cachedEdge;
   std::vector<float> meshEdge(scene.meshes.size(), 0.0f);
   for (size_t k = 0; k < scene.meshes.size(); ++k) {
     const Mesh& m = scene.meshes[k];
@@ -46,7 +45,7 @@ float longestCasterEdge(const Scene& scene) {
         std::max({glm::length(glm::vec3(t[0])), glm::length(glm::vec3(t[1])), glm::length(glm::vec3(t[2]))});
     edge = std::max(edge, meshEdge[size_t(inst.mesh)] * scale);
   }
-  cachedScene = &scene, cachedTriangles = triangles, cachedEdge = edge;
+  if (generation != 0) cachedGeneration = generation, cachedEdge = edge;
   return edge;
 }
 
@@ -128,7 +127,7 @@ LogFit logFit(const LayoutInput& in) {
   const float eyeY = (lightView * glm::vec4(eye, 1.0f)).y;
   const float distance = std::max(lo.y - eyeY, 0.0f) + std::max(zn, 1e-3f) * std::max(sinGamma, 1e-3f);
   fit.deltaView = in.params->f("logpsm.delta_scale") * distance / extent.y / std::max(w, 1e-6f);
-  fit.span = std::min(longestCasterEdge(*in.scene) / extent.y, 1.0f);
+  fit.span = std::min(longestCasterEdge(*in.scene, in.sceneGeneration) / extent.y, 1.0f);
   fit.deltaBudget = logDeltaForError(fit.span, in.params->f("logpsm.max_error"), body.size);
   fit.delta = std::max(fit.deltaView, fit.deltaBudget);
   if (!std::isfinite(fit.delta)) fit.delta = kNoWarpDelta;  // a degenerate body: no warp rather than NaN
