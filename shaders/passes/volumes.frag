@@ -55,6 +55,11 @@ void main() {
     light += transmittance * (1.0 - stepTransmittance) * kMediumAlbedo * mediumLight(P);
     transmittance *= stepTransmittance;
   }
+  // A non-finite lookup must never pass silently: magenta, as shadeSurface does for a surface.
+  if (isnan(light) || isinf(light)) {
+    o_color = vec4(1.0, 0.0, 1.0, 0.0);
+    return;
+  }
   float opacity = 1.0 - transmittance;
   if (opacity < 1e-4) discard;
   // Blended in display encoding (sqrt, as shadeSurface), like most real-time compositing.
