@@ -84,7 +84,6 @@ void SoakDriver::nextAction(ExplorerState& state, Renderer& renderer) {
   switch (step_ % kActionKinds) {
     case 0:  // every preset in turn, in the first viewport
       setViewportPreset(state, 0, presets[presetIndex_++ % presets.size()].id);
-      presetsShown_ = std::max(presetsShown_, presetIndex_);
       if (!state.slots[0].error.empty()) fail("preset: " + state.slots[0].error);
       break;
     case 1: {  // 1, 2, 4 viewports
@@ -199,7 +198,7 @@ void SoakDriver::afterFrame(const ExplorerState& state) {
 int SoakDriver::finish() {
   if (broken_) fixShader();  // never leave the copy broken
   std::printf("soak: %d actions, %d frames, %zu of %zu presets shown, %zu full cycles\n", action_, frames_,
-              presetsShown_, allPresets().size(), cycles_);
+              cycles_ > 0 ? allPresets().size() : presetIndex_, allPresets().size(), cycles_);
   if (rssEnd_ < 0) {
     // Not a pass by default: the report says plainly that the bound was not applied.
     std::printf(

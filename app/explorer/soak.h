@@ -1,8 +1,8 @@
 // `shadowlab --soak SECONDS`: drives the window unattended for reliability runs
 // (scripts/soak.sh): every preset, scene, viewport count and debug view in turn, a shader
 // broken and fixed again (only in a shader folder given with --shaders, never the source tree),
-// GL errors checked every frame, resident memory reported after the warm-up (every preset and
-// every scene shown once) and at the end.
+// GL errors checked every frame, resident memory reported at the end of each cycle through
+// every preset and scene (the first cycle is the warm-up).
 #pragma once
 
 #include "explorer/explorer_state.h"
@@ -45,7 +45,7 @@ class SoakDriver {
   void breakShader();
   void fixShader();
   // Memory is sampled in one baseline state (first preset and scene, one viewport, no debug
-  // views) after a few frames in it: once after the warm-up, once at the end.
+  // views) after a few frames in it, at the end of every cycle.
   bool cycleCompleted(size_t sceneCount);  // every preset and every scene shown once more
   void goToBaseline(ExplorerState& state, Renderer& renderer);
   void takeSampleWhenSettled(const ShaderLibrary& shaders);
@@ -56,7 +56,7 @@ class SoakDriver {
   int action_ = 0, framesInAction_ = 0, frames_ = 0;
   size_t presetIndex_ = 0, sceneIndex_ = 0, viewportStep_ = 0;
   long rssStart_ = -1, rssEnd_ = -1, rssPeak_ = -1;
-  size_t cycles_ = 0, step_ = 0, presetsShown_ = 0;
+  size_t cycles_ = 0, step_ = 0;
   static constexpr size_t kActionKinds = 5;
   bool sampling_ = false;
   int glErrorsAtStart_ = 0;

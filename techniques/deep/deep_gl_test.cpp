@@ -5,14 +5,13 @@
 #include "deep/deep_state.h"
 #include "scene/volume_density.h"
 #include "prefiltered/visibility_curve.h"
+#include "render/volumes_buffer.h"
 #include "tests/gl_test_util.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <unistd.h>
 
@@ -21,12 +20,9 @@ namespace {
 
 const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
 
+// The file name carries the pid: ctest runs these tests in parallel processes.
 Scene sceneFrom(const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / ("shadowlab_deep_gl_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto p = dir / "scene.json";
-  std::ofstream(p) << json;
-  return loadScene(p.string(), kAssets);
+  return loadScene(test::writeTempFile("deep_gl_" + std::to_string(::getpid()) + ".json", json), kAssets);
 }
 
 std::vector<std::string> passNames(const Renderer& r) {
@@ -44,37 +40,29 @@ bool anyDeepPass(const std::vector<std::string>& names) {
 TEST(DeepGl, DensityMatchesCpp) {
   test::GlHarness h;
   const Scene scene = loadScene("smoke", kAssets);
-  DeepState state;
   std::vector<glm::vec4> points;
   for (int i = 0; i < 512; ++i)
     points.emplace_back(-0.5f + 0.9f * std::sin(i * 1.7f), 1.6f + 0.9f * std::cos(i * 0.37f),
                         0.9f * std::sin(i * 0.91f), 0.0f);
-  // The volumes buffer as the deep state uploads it.
-  std::vector<glm::vec4> data(1 + 3 * scene.volumes.size(), glm::vec4(0.0f));
-  data[0].x = float(scene.volumes.size());
-  for (size_t i = 0; i < scene.volumes.size(); ++i) {
-    const Volume& v = scene.volumes[i];
-    data[1 + 3 * i] = glm::vec4(v.center, v.shape == Volume::Shape::Sphere ? 1.0f : 0.0f);
-    data[2 + 3 * i] = glm::vec4(v.halfSize, v.extinction);
-    data[3 + 3 * i] = glm::vec4(v.noiseScale, v.noise, float(v.octaves), float(v.seed));
-  }
-  GLuint b[3];
-  glCreateBuffers(3, b);
-  glNamedBufferStorage(b[0], GLsizeiptr(data.size() * sizeof(glm::vec4)), data.data(), 0);
-  glNamedBufferStorage(b[1], GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0);
-  glNamedBufferStorage(b[2], GLsizeiptr(points.size() * sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // The volumes buffer as the deep compress pass and the volumes pass upload it.
+  VolumesBuffer volumes;
+  volumes.upload(scene);
+  volumes.bind();
+  GLuint b[2];
+  glCreateBuffers(2, b);
+  glNamedBufferStorage(b[0], GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0);
+  glNamedBufferStorage(b[1], GLsizeiptr(points.size() * sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   Program& p = h.shaders.get({"probe", {{GL_COMPUTE_SHADER, "passes/volume_density_probe.comp"}}, ""});
   ASSERT_TRUE(p.valid()) << p.error();
   p.use();
   p.set("u_count", int(points.size()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, b[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, b[1]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, b[2]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, b[0]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, b[1]);
   glDispatchCompute(GLuint(points.size() / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(points.size());
-  glGetNamedBufferSubData(b[2], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
-  glDeleteBuffers(3, b);
+  glGetNamedBufferSubData(b[1], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
+  glDeleteBuffers(2, b);
   int inside = 0;
   for (size_t i = 0; i < points.size(); ++i) {
     float cpu = 0.0f;

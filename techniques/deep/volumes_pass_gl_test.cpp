@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <unistd.h>
 
@@ -18,12 +16,9 @@ namespace {
 
 const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
 
+// The file name carries the pid: ctest runs these tests in parallel processes.
 Scene sceneFrom(const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / ("shadowlab_volumes_gl_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto p = dir / "scene.json";
-  std::ofstream(p) << json;
-  return loadScene(p.string(), kAssets);
+  return loadScene(test::writeTempFile("volumes_gl_" + std::to_string(::getpid()) + ".json", json), kAssets);
 }
 
 bool ran(const Renderer& r, const std::string& pass) {
