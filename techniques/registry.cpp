@@ -252,6 +252,14 @@ const std::vector<Preset>& allPresets() {
          "depth-nearest",
          "none",
          {"virtual.criterion=edges"}},
+        {"fitted-virtual",
+         "fitted virtual shadow maps (Giegl & Wimmer 2007) over the virtual map's pages: the pixels' footprints "
+         "gathered into a grid over the light's view, read back and fitted into a quadtree on the CPU, whose leaves "
+         "are the pages drawn; nearest depth test",
+         "virtual",
+         "depth-nearest",
+         "none",
+         {"virtual.criterion=fitted"}},
     };
     addPrefilteredPresets(v);
     addIrregularPresets(v);

@@ -2,10 +2,14 @@
 // falls in the virtual map (light view 0 over the whole scene) and which mip level of pages the
 // pixel footprint asks for. Defines from the layout state: SL_VIRTUAL_PAGES (pages per side at
 // level 0, a power of two), SL_VIRTUAL_LEVELS (down to one page), SL_VIRTUAL_PAGE (texels per
-// page side), SL_VIRTUAL_POOL_SIDE (tiles per side of the physical atlas).
+// page side), SL_VIRTUAL_POOL_SIDE (tiles per side of the physical atlas), SL_VIRTUAL_FIT_GRID (cells per side
+// of the fitted criterion's grid).
 #include "common/light_views.glsl"
 uniform float u_virtual_lod_bias;
-uniform float u_virtual_criterion;  // 0 footprint, 1 distance, 2 edges (passes/virtual_mark.comp)
+// The index of virtual.criterion's choice; SL_VIRTUAL_CRITERION_<CHOICE> (the layout state's
+// defines, from the parameter's declared choices) name them.
+uniform float u_virtual_criterion;
+bool virtualCriterionIs(int choice) { return abs(u_virtual_criterion - float(choice)) < 0.5; }
 
 // Virtual uv in [0,1] (outside: off the map); z = 0 when the point cannot be projected.
 vec3 virtualUv(vec3 worldPos) {

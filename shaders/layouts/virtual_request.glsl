@@ -5,7 +5,9 @@
 // after Arvo 2004: the pixel's world size alone, as if every receiver faced the light), 2 edges
 // (adaptive shadow maps, Fernando et al. 2001 / Lefohn et al. 2006: full resolution only near
 // shadow edges, u_virtual_edge_coarsen levels coarser elsewhere; the edges are last frame's, so
-// the first frame asks everywhere). Needs layouts/virtual_common.glsl.
+// the first frame asks everywhere), 3 fitted (fitted virtual shadow maps, Giegl & Wimmer 2007:
+// the footprint's level, gathered into a grid and fitted into a quadtree on the CPU). Needs
+// layouts/virtual_common.glsl.
 uniform float u_virtual_edge_coarsen;
 uniform sampler2D u_previousVisibility;
 uniform int u_hasPreviousVisibility;
@@ -45,9 +47,9 @@ int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
   if (footprint < 0.0) return -1;
   uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz).xy;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return -1;
-  if (u_virtual_criterion > 0.5 && u_virtual_criterion < 1.5) footprint = virtualWorldFootprint(gPosition, pixel);
+  if (virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE)) footprint = virtualWorldFootprint(gPosition, pixel);
   int level = virtualLevelFor(footprint);
-  if (u_virtual_criterion > 1.5 && !virtualNearShadowEdge(pixel))
+  if (virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !virtualNearShadowEdge(pixel))
     level = min(level + int(u_virtual_edge_coarsen + 0.5), SL_VIRTUAL_LEVELS - 1);
   return level;
 }

@@ -168,6 +168,34 @@ TEST(VirtualShadowMap, CriteriaAskForDifferentPagesForTheSameShadows) {
   expectSane(tiled.frame, "tiled");
 }
 
+// Fitted virtual shadow maps: the same footprints, gathered into a grid and fitted into a
+// quadtree on the CPU. Its leaves partition the sampled area and are never coarser than a pixel
+// asked for, so it is as accurate as resolution matching; the status reports the CPU fit; a
+// pool too small for the leaves degrades as for the other criteria.
+TEST(VirtualShadowMap, FittedCriterionFitsAQuadtreeOnTheCpu) {
+  test::GlHarness h;
+  const Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun matched = render(h, scene, "virtual", {}, 2);
+  const VirtualRun fitted = render(h, scene, "fitted-virtual", {}, 2, true);
+  expectSane(fitted.frame, "fitted-virtual");
+  EXPECT_NE(fitted.status.find("quadtree fitted on the CPU"), std::string::npos) << fitted.status;
+  const size_t at = fitted.status.find("nodes, ");
+  ASSERT_NE(at, std::string::npos) << fitted.status;
+  EXPECT_EQ(std::stoi(fitted.status.substr(at + 7)), requestedPages(fitted.status)) << "leaves are the pages asked for";
+  EXPECT_GT(requestedPages(fitted.status), 0) << fitted.status;
+  const double wrongMatched = wrongPct(scene, matched.frame), wrongFitted = wrongPct(scene, fitted.frame);
+  std::printf("columns %dx%d: virtual %.3f %% (%s)\n  fitted %.3f %% (%s)\n", kW, kH, wrongMatched,
+              matched.status.c_str(), wrongFitted, fitted.status.c_str());
+  EXPECT_LE(wrongFitted, wrongMatched + 0.01);
+  EXPECT_EQ(matched.status.find("quadtree"), std::string::npos) << "only the fitted criterion fits a quadtree";
+  const VirtualRun tiny = render(h, scene, "fitted-virtual", {"virtual.pool=256"}, 2);
+  expectSane(tiny.frame, "fitted-virtual, tiny pool");
+  EXPECT_NE(tiny.status.find("pool exhausted"), std::string::npos) << tiny.status;
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 // The requested-resolution view shows what each criterion asked for (the marking pass's own
 // function), not the footprint under every criterion: tiled asks finer than virtual on columns'
 // ground, so the two views differ over much of the picture.
@@ -221,9 +249,11 @@ TEST(VirtualShadowMap, RealScenesStayFinite) {
       throw;
     }
     h.renderer.setScene(scene);
-    const VirtualRun r = render(h, scene, "virtual", {}, 2, true);
-    expectSane(r.frame, name);
-    std::printf("%s: %s\n", name, r.status.c_str());
+    for (const char* preset : {"virtual", "fitted-virtual"}) {
+      const VirtualRun r = render(h, scene, preset, {}, 2, true);
+      expectSane(r.frame, std::string(name) + " " + preset);
+      std::printf("%s %s: %s\n", name, preset, r.status.c_str());
+    }
     ++ran;
   }
   if (ran == 0) GTEST_SKIP() << "shared/scenes-real not found: the real scenes were not rendered";

@@ -2,6 +2,7 @@
 #include "part_view.h"
 
 #include "adaptive/page_allocator.h"
+#include "adaptive/quadtree_fit.h"
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
@@ -9,6 +10,9 @@
 #include "render/frame_graph.h"
 
 #include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <iomanip>
 #include <sstream>
 
 namespace sl {
@@ -38,6 +42,7 @@ class VirtualState : public LayoutState {
   explicit VirtualState(const Layout& layout) : LayoutState(layout) {}
   ~VirtualState() override {
     if (marks_) glDeleteBuffers(1, &marks_);
+    if (grid_) glDeleteBuffers(1, &grid_);
     if (table_) glDeleteTextures(1, &table_);
   }
   void reset() override { pages_.invalidate(); }
@@ -63,7 +68,8 @@ class VirtualState : public LayoutState {
   std::string defines() const override {
     return "#define SL_VIRTUAL_PAGES " + std::to_string(sizes_.pagesPerSide) + "\n#define SL_VIRTUAL_LEVELS " +
            std::to_string(pages_.levels()) + "\n#define SL_VIRTUAL_PAGE " + std::to_string(sizes_.page) +
-           "\n#define SL_VIRTUAL_POOL_SIDE " + std::to_string(sizes_.poolSide) + "\n";
+           "\n#define SL_VIRTUAL_POOL_SIDE " + std::to_string(sizes_.poolSide) + "\n#define SL_VIRTUAL_FIT_GRID " +
+           std::to_string(fitGridSide(sizes_.pagesPerSide)) + "\n" + criterionDefines();
   }
 
   void bind(const Program& p, TextureUnits& units) const override {
@@ -78,6 +84,10 @@ class VirtualState : public LayoutState {
     s << "virtual " << sizes_.virtualSize << "² in " << pages_.poolTiles() << " tiles of " << sizes_.page
       << "²: requested " << frame_.requested << ", resident " << frame_.resident << ", drawn " << draw_.size()
       << ", cache hits " << frame_.hits;
+    if (fitted_)
+      s << "; quadtree fitted on the CPU: " << fit_.nodesVisited << " nodes, " << fit_.leaves
+        << " leaves, finest level " << fit_.finestLevel << ", " << std::fixed << std::setprecision(2) << fitMs_
+        << " ms";
     if (frame_.exhausted())
       s << "; pool exhausted: " << frame_.coarsened << " pages asked for served coarser, in " << frame_.coarsenedLevels
         << " level(s)";
@@ -138,10 +148,14 @@ class VirtualState : public LayoutState {
   void ensureGpu() {
     if (marks_ && tableLevels_ == pages_.levels() && tableSide_ == pages_.pagesPerSide()) return;
     if (marks_) glDeleteBuffers(1, &marks_);
+    if (grid_) glDeleteBuffers(1, &grid_);
     if (table_) glDeleteTextures(1, &table_);
     glCreateBuffers(1, &marks_);
     glNamedBufferData(marks_, static_cast<GLsizeiptr>(pages_.flatSize() * sizeof(uint32_t)), nullptr, GL_DYNAMIC_READ);
     label(GL_BUFFER, marks_, "virtual page marks");
+    glCreateBuffers(1, &grid_);
+    glNamedBufferData(grid_, static_cast<GLsizeiptr>(fitGridValues() * sizeof(uint32_t)), nullptr, GL_DYNAMIC_READ);
+    label(GL_BUFFER, grid_, "fitted virtual grid");
     glCreateTextures(GL_TEXTURE_2D, 1, &table_);
     glTextureStorage2D(table_, pages_.levels(), GL_R32UI, pages_.pagesPerSide(), pages_.pagesPerSide());
     glTextureParameteri(table_, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
@@ -177,19 +191,28 @@ class VirtualState : public LayoutState {
     draw_.clear();  // a marking program that does not build draws nothing (its error is shown)
     Program& p = ctx.shaders->get(spec);
     if (!p.valid()) return;
+    fitted_ = ctx.params->choice("virtual.criterion") == "fitted";
+    const GLuint out = fitted_ ? grid_ : marks_;
     const uint32_t zero = 0;
-    glClearNamedBufferData(marks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(out, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     p.use();
     TextureUnits units;
     ctx.bindTechnique(p, units);
     ctx.bindGBuffer(p, units);
     bindPreviousVisibility(p, units, ctx);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marks_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, grid_);
     glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> marks(static_cast<size_t>(pages_.flatSize()));
-    glGetNamedBufferSubData(marks_, 0, static_cast<GLsizeiptr>(marks.size() * sizeof(uint32_t)), marks.data());
-    frame_ = pages_.update(marks);
+    std::vector<uint32_t> values(fitted_ ? fitGridValues() : static_cast<size_t>(pages_.flatSize()));
+    glGetNamedBufferSubData(out, 0, static_cast<GLsizeiptr>(values.size() * sizeof(uint32_t)), values.data());
+    if (fitted_) {  // the CPU half of fitted virtual shadow maps; timed for the status line
+      const auto start = std::chrono::steady_clock::now();
+      fit_ = fitQuadtree(pages_, values);
+      fitMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      values = std::move(fit_.marks);
+    }
+    frame_ = pages_.update(values);
     draw_ = frame_.draw;
     uploadTable();
   }
@@ -210,11 +233,31 @@ class VirtualState : public LayoutState {
     graph.requestSink(res);
   }
 
+  size_t fitGridValues() const {
+    const size_t g = static_cast<size_t>(fitGridSide(pages_.pagesPerSide()));
+    return 2u * g * g;
+  }
+  // SL_VIRTUAL_CRITERION_<CHOICE> <index> for each declared choice of virtual.criterion.
+  std::string criterionDefines() const {
+    std::string out;
+    for (const ParamDecl& d : layout_.params())
+      if (d.key == "virtual.criterion")
+        for (size_t i = 0; i < d.choices.size(); ++i) {
+          std::string name = d.choices[i];
+          for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(c) : '_';
+          out += "#define SL_VIRTUAL_CRITERION_" + name + " " + std::to_string(i) + "\n";
+        }
+    return out;
+  }
+
   VirtualSizes sizes_;
   PageAllocator pages_;
   PageAllocator::Frame frame_;
+  QuadtreeFit fit_;  // the last fitted criterion's quadtree (its marks moved out)
+  bool fitted_ = false;
+  double fitMs_ = 0.0;
   std::vector<int> draw_;  // flat page indices the shadow pass draws this frame
-  GLuint marks_ = 0, table_ = 0;
+  GLuint marks_ = 0, grid_ = 0, table_ = 0;
   int tableLevels_ = 0, tableSide_ = 0;
   glm::mat4 drawnViewProj_{0.0f};
   const Scene* drawnScene_ = nullptr;
@@ -273,8 +316,10 @@ class VirtualLayout : public Layout {
          .help = "which page and level each visible pixel asks for (the survey: the adaptive methods \"mainly differ "
                  "in termination criteria\"): footprint (resolution-matched, Lefohn et al. 2007), distance (tiled "
                  "maps' heuristic after Arvo 2004: the pixel's world size only), edges (adaptive shadow maps, "
-                 "Fernando et al. 2001: full resolution near last frame's shadow edges, coarser elsewhere)",
-         .choices = {"footprint", "distance", "edges"}},
+                 "Fernando et al. 2001: full resolution near last frame's shadow edges, coarser elsewhere), fitted "
+                 "(fitted virtual shadow maps, Giegl & Wimmer 2007: the footprints gathered into a grid, read back "
+                 "and fitted into a quadtree on the CPU)",
+         .choices = {"footprint", "distance", "edges", "fitted"}},
         {.key = "virtual.edge_coarsen",
          .type = ParamType::Int,
          .min = 1,

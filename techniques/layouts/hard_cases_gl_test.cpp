@@ -56,7 +56,8 @@ TEST(HardCases, EveryLayoutStaysFiniteAndDegradesToFocusing) {
              {"cascaded", {"shadowmap.size=512", "cascades.warp=lispsm"}},
              {"pixel-correct-lispsm", {"shadowmap.size=1024"}},
              {"alias-free", {}},
-             {"virtual", {}}}) {
+             {"virtual", {}},
+             {"fitted-virtual", {}}}) {
       const double wrong = runCase(h, scene, cam, preset, sets, hc.name);
       const std::string variant = sets.size() < 2 ? "" : preset == "cascaded" ? "+warp" : "+z";
       std::printf(", %s%s %.2f %%", preset.c_str(), variant.c_str(), wrong);
