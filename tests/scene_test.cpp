@@ -327,6 +327,26 @@ TEST(SceneBuiltin, MovingSceneMoves) {
   EXPECT_GT(glm::length(c1 - c0), 1.0f);
 }
 
+// The motion envelope holds the scene at every time (sampled densely over both periods), is no
+// bigger than the sweep allows (the sphere orbits at radius 2.5 + 0.5, the box oscillates 2 + 0.5
+// to each side), and is the plain bounds for a scene without motion.
+TEST(SceneBuiltin, MotionEnvelopeHoldsTheSceneAtEveryTime) {
+  const Scene s = loadScene("moving", kAssets);
+  const Bounds envelope = s.motionEnvelope();
+  for (int k = 0; k <= 240; ++k) {
+    const Bounds b = s.boundsAt(k * 0.05);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LE(envelope.min[a], b.min[a] + 1e-4f) << "t " << k * 0.05;
+      EXPECT_GE(envelope.max[a], b.max[a] - 1e-4f) << "t " << k * 0.05;
+    }
+  }
+  EXPECT_LE(envelope.max.x, 10.0f + 1e-3f);  // the 20 x 20 ground decides x and z
+  EXPECT_LE(envelope.max.y, 1.5f + 3.0f + 1e-3f);
+  const Scene still = loadScene("columns", kAssets);
+  EXPECT_EQ(still.motionEnvelope().min, still.boundsAt(0.0).min);
+  EXPECT_EQ(still.motionEnvelope().max, still.boundsAt(0.0).max);
+}
+
 // --- Small glTF files written by the tests -------------------------------------------------
 
 void writeBinary(const std::string& name, const std::vector<uint8_t>& bytes) {

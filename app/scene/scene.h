@@ -144,6 +144,12 @@ struct Scene {
   size_t triangleCount() const;
   // World-space bounds of all instances at time t (swept over nothing: just that instant).
   Bounds boundsAt(double t) const;
+  // World-space bounds of instance i at time t (empty when it has no valid mesh).
+  Bounds instanceBoundsAt(size_t i, double t) const;
+  // Bounds that hold the scene at every time: a moving instance's whole sweep (an oscillation's
+  // two end positions; a rotation's local bounding sphere), conservatively. A light view fitted
+  // to it does not change while objects move, so what was drawn for static parts stays valid.
+  Bounds motionEnvelope() const;
   const Camera* findCamera(const std::string& name) const;
   const CameraPath* findPath(const std::string& name) const;
 };

@@ -35,6 +35,24 @@ void PageAllocator::invalidate() {
   std::fill(table_.begin(), table_.end(), 0u);
 }
 
+int PageAllocator::invalidateRegion(float u0, float v0, float u1, float v1) {
+  if (!(u0 <= u1 && v0 <= v1)) return 0;  // empty (or NaN) region: nothing can have changed
+  std::vector<int> dropped;
+  for (const auto& [index, r] : resident_) {
+    int level, x, y;
+    decode(index, level, x, y);
+    const float n = static_cast<float>(pages_ >> level);
+    // Closed intervals: a region ending exactly on a page border still touches that page.
+    if (x / n <= u1 && (x + 1) / n >= u0 && y / n <= v1 && (y + 1) / n >= v0) dropped.push_back(index);
+  }
+  for (int index : dropped) {
+    freeTiles_.push_back(resident_[index].tile);
+    resident_.erase(index);
+    table_[static_cast<size_t>(index)] = 0u;
+  }
+  return static_cast<int>(dropped.size());
+}
+
 void PageAllocator::decode(int flatIndex, int& level, int& x, int& y) const {
   level = static_cast<int>(std::upper_bound(offsets_.begin(), offsets_.end(), flatIndex) - offsets_.begin()) - 1;
   const int n = pages_ >> level, local = flatIndex - offsets_[static_cast<size_t>(level)];

@@ -23,6 +23,10 @@ class PageAllocator {
   // poolTiles: physical tiles. A change of either forgets every page.
   void configure(int pagesPerSide, int poolTiles);
   void invalidate();  // something that affects the pages moved: every page must be drawn again
+  // Something moved within [u0, u1] x [v0, v1] of the virtual map (uv in [0, 1]): the resident
+  // pages of every level whose square touches it are dropped (drawn again when next asked for);
+  // the others stay valid. Returns how many were dropped.
+  int invalidateRegion(float u0, float v0, float u1, float v1);
 
   int pagesPerSide() const { return pages_; }
   int levels() const { return levels_; }

@@ -116,5 +116,25 @@ TEST(PageAllocator, RejectsMarksOfAnotherSize) {
   EXPECT_THROW(a.update(std::vector<uint32_t>(3, 1u)), std::invalid_argument);
 }
 
+// Objects moving over part of the map drop only the pages (of every level) under them.
+TEST(PageAllocator, InvalidatingARegionDropsOnlyThePagesUnderIt) {
+  PageAllocator a;
+  a.configure(8, 16);
+  const std::vector<int> asked = {a.encode(0, 0, 0), a.encode(0, 7, 7), a.encode(1, 3, 0), a.encode(2, 1, 1)};
+  a.update(marksOf(a, asked));
+  // uv [0.9, 1] x [0.9, 1]: level-0 page (7,7), level-2 page (1,1) and the coarsest page.
+  EXPECT_EQ(a.invalidateRegion(0.9f, 0.9f, 1.0f, 1.0f), 3);
+  EXPECT_EQ(a.tileOf(a.encode(0, 7, 7)), -1);
+  EXPECT_EQ(a.tileOf(a.encode(2, 1, 1)), -1);
+  EXPECT_EQ(a.tileOf(a.encode(a.levels() - 1, 0, 0)), -1);
+  EXPECT_GE(a.tileOf(a.encode(0, 0, 0)), 0);
+  EXPECT_GE(a.tileOf(a.encode(1, 3, 0)), 0);
+  const PageAllocator::Frame f = a.update(marksOf(a, asked));
+  EXPECT_EQ(f.hits, 2);
+  EXPECT_EQ(f.draw.size(), 3u);  // drawn again, into the tiles freed
+  EXPECT_EQ(f.resident, 5);
+  EXPECT_EQ(a.invalidateRegion(0.5f, 0.5f, 0.4f, 0.6f), 0);  // empty region
+}
+
 }  // namespace
 }  // namespace sl

@@ -53,11 +53,15 @@ class VirtualState : public LayoutState {
     LayoutInput virt = in;
     LightSpace ls = layout_.compute(virt);
     ls.size = sizes_.atlasSize;
-    // What the cached pages were drawn with: any change makes every page stale.
-    const bool moving = in.scene->hasMotion() && in.time != drawnTime_;
+    // What the cached pages were drawn with: a change of the light view, scene or culling makes
+    // every page stale; objects that moved only the pages under them, then and now.
     const bool changed = ls.primary().viewProj != drawnViewProj_ || in.scene != drawnScene_ ||
-                         in.params->i("shadowmap.cull") != drawnCull_ || moving || !in.params->b("virtual.cache");
-    if (changed) pages_.invalidate();
+                         in.params->i("shadowmap.cull") != drawnCull_ || !in.params->b("virtual.cache");
+    droppedByMotion_ = 0;
+    if (changed)
+      pages_.invalidate();
+    else if (in.scene->hasMotion() && in.time != drawnTime_)
+      droppedByMotion_ = invalidateMoved(*in.scene, ls.primary().viewProj, drawnTime_, in.time);
     drawnViewProj_ = ls.primary().viewProj;
     drawnScene_ = in.scene;
     drawnCull_ = in.params->i("shadowmap.cull");
@@ -84,6 +88,7 @@ class VirtualState : public LayoutState {
     s << "virtual " << sizes_.virtualSize << "² in " << pages_.poolTiles() << " tiles of " << sizes_.page
       << "²: requested " << frame_.requested << ", resident " << frame_.resident << ", drawn " << draw_.size()
       << ", cache hits " << frame_.hits;
+    if (droppedByMotion_ > 0) s << "; " << droppedByMotion_ << " dropped under moving objects";
     if (fitted_)
       s << "; quadtree fitted on the CPU: " << fit_.nodesVisited << " nodes, " << fit_.leaves
         << " leaves, finest level " << fit_.finestLevel << ", " << std::fixed << std::setprecision(2) << fitMs_
@@ -233,6 +238,32 @@ class VirtualState : public LayoutState {
     graph.requestSink(res);
   }
 
+  // Drops the pages under each moving instance's bounds at the time the pages were drawn and
+  // now, in the virtual map's uv; every page when a corner cannot be projected.
+  int invalidateMoved(const Scene& scene, const glm::mat4& viewProj, double then, double now) {
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+      if (scene.instances[i].motion.type == Motion::Type::None) continue;
+      for (double t : {then, now}) {
+        const Bounds b = scene.instanceBoundsAt(i, t);
+        if (b.empty()) continue;
+        for (int c = 0; c < 8; ++c) {
+          const glm::vec4 clip = viewProj * glm::vec4((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y,
+                                                      (c & 4) ? b.max.z : b.min.z, 1.0f);
+          if (!(clip.w > 1e-6f)) {
+            const int resident = frame_.resident;
+            pages_.invalidate();
+            return resident;
+          }
+          const glm::vec2 uv = glm::vec2(clip) / clip.w * 0.5f + 0.5f;
+          lo = glm::min(lo, uv);
+          hi = glm::max(hi, uv);
+        }
+      }
+    }
+    return pages_.invalidateRegion(lo.x, lo.y, hi.x, hi.y);
+  }
+
   size_t fitGridValues() const {
     const size_t g = static_cast<size_t>(fitGridSide(pages_.pagesPerSide()));
     return 2u * g * g;
@@ -256,7 +287,8 @@ class VirtualState : public LayoutState {
   QuadtreeFit fit_;  // the last fitted criterion's quadtree (its marks moved out)
   bool fitted_ = false;
   double fitMs_ = 0.0;
-  std::vector<int> draw_;  // flat page indices the shadow pass draws this frame
+  int droppedByMotion_ = 0;  // pages dropped this frame because objects over them moved
+  std::vector<int> draw_;    // flat page indices the shadow pass draws this frame
   GLuint marks_ = 0, grid_ = 0, table_ = 0;
   int tableLevels_ = 0, tableSide_ = 0;
   glm::mat4 drawnViewProj_{0.0f};
@@ -332,11 +364,13 @@ class VirtualLayout : public Layout {
          .defaultValue = 1,
          .help = "keep drawn pages between frames while the light, the scene and the map settings stay the same"}};
   }
-  // The whole scene in one light view: it does not follow the camera, so pages stay valid.
+  // The whole scene in one light view: it does not follow the camera or moving objects, so pages
+  // stay valid.
   LightSpace compute(const LayoutInput& in) const override {
     const Light& light = in.scene->light;
     const glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
-    const auto corners = boxCorners(in.scene->boundsAt(in.time));
+    // Over the scene's whole motion, so that the view (and the pages of static parts) stay put.
+    const auto corners = boxCorners(in.scene->motionEnvelope());
     const int size = virtualSizes(*in.params).virtualSize;
     const bool snap = in.params->b("layout.snap");
     if (light.type == Light::Type::Spot)
