@@ -110,6 +110,9 @@ struct PartContext {
   // The visibility this viewport showed last frame (null before its first frame): what adaptive
   // criteria refine around (shadow edges). Read before this frame overwrites it.
   const Texture2D* previousVisibility = nullptr;
+  // The representation's depth targets (depthTexture(), a 2D array; null before its first
+  // frame). Read in a layout pass, before this frame's shadow pass: what the last frame drew.
+  std::function<const Texture2D*()> shadowDepth;
   std::function<void()> drawFullscreen;
   // Sets the technique's uniforms and every part's bindings on a program that includes the
   // technique's modules (the technique prelude).

@@ -72,6 +72,9 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   // Last frame's, when there is one from the same view (not after a cut or a resize).
   part.previousVisibility = vp.visibilityHeld_ && !in.cut ? vp.visibilityTexture() : nullptr;
   part.viewTargets = vp.shownViewTargets();
+  part.shadowDepth = [&vp]() -> const Texture2D* {
+    return vp.representation ? vp.representation->depthTexture() : nullptr;
+  };
   part.drawFullscreen = [this] { drawFullscreen(); };
   part.techniquePrelude = prelude;
   part.bindTechnique = [this, &vp](const Program& p, TextureUnits& units) { bindTechnique(p, units, vp); };

@@ -8,7 +8,6 @@
 uniform float u_shadowMapSize;  // atlas texels per side
 uniform int u_shadowView;
 uniform vec4 u_pageTransform;  // shadow pass: clip xy * .xy + w * .zw maps one page to the viewport
-uniform usampler2D u_pageTable;
 
 vec4 layoutClipIn(vec3 worldPos, int view) { return lightViewProjMatrix[0] * vec4(worldPos, 1.0); }
 
@@ -23,29 +22,6 @@ vec4 layoutClip(vec3 worldPos) {
   return c;
 }
 float layoutDepth(vec3 worldPos) { return layoutDepthIn(worldPos, 0); }
-
-struct VirtualPage {
-  int level;
-  int tile;
-  uint entry;  // page-table entry (tile + 1, drawn / needed bits, hits)
-  vec2 local;  // position inside the page, [0,1]
-};
-
-// The finest resident page over virtual uv; false when none is (before the first allocation).
-bool virtualFindPage(vec2 uv, out VirtualPage page) {
-  page = VirtualPage(-1, -1, 0u, vec2(0.0));
-  for (int m = 0; m < SL_VIRTUAL_LEVELS; ++m) {
-    int n = SL_VIRTUAL_PAGES >> m;
-    vec2 q = uv * float(n);
-    ivec2 cell = clamp(ivec2(floor(q)), ivec2(0), ivec2(n - 1));
-    uint e = texelFetch(u_pageTable, cell, m).r;
-    if ((e & 0xffffu) != 0u) {
-      page = VirtualPage(m, int(e & 0xffffu) - 1, e, q - vec2(cell));
-      return true;
-    }
-  }
-  return false;
-}
 
 ShadowCoord layoutShadowCoordIn(vec3 worldPos, int view) {
   vec4 c = layoutClipIn(worldPos, 0);

@@ -11,6 +11,31 @@ uniform float u_virtual_lod_bias;
 uniform float u_virtual_criterion;
 bool virtualCriterionIs(int choice) { return abs(u_virtual_criterion - float(choice)) < 0.5; }
 
+uniform usampler2D u_pageTable;  // the layout's page table (PageAllocator::table())
+
+struct VirtualPage {
+  int level;
+  int tile;
+  uint entry;  // page-table entry (tile + 1, drawn / needed bits, hits)
+  vec2 local;  // position inside the page, [0,1]
+};
+
+// The finest resident page over virtual uv; false when none is (before the first allocation).
+bool virtualFindPage(vec2 uv, out VirtualPage page) {
+  page = VirtualPage(-1, -1, 0u, vec2(0.0));
+  for (int m = 0; m < SL_VIRTUAL_LEVELS; ++m) {
+    int n = SL_VIRTUAL_PAGES >> m;
+    vec2 q = uv * float(n);
+    ivec2 cell = clamp(ivec2(floor(q)), ivec2(0), ivec2(n - 1));
+    uint e = texelFetch(u_pageTable, cell, m).r;
+    if ((e & 0xffffu) != 0u) {
+      page = VirtualPage(m, int(e & 0xffffu) - 1, e, q - vec2(cell));
+      return true;
+    }
+  }
+  return false;
+}
+
 // Virtual uv in [0,1] (outside: off the map); z = 0 when the point cannot be projected.
 vec3 virtualUv(vec3 worldPos) {
   vec4 c = lightViewProjMatrix[0] * vec4(worldPos, 1.0);

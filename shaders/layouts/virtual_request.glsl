@@ -2,7 +2,8 @@
 // (virtual.criterion): shared by the page-marking pass and the `requested-resolution` view, so
 // the view shows what the criterion asked for, not the footprint alone.
 // 0 footprint (resolution matching, Lefohn et al. 2007), 1 distance (tiled shadow maps' heuristic
-// after Arvo 2004: the pixel's world size alone, as if every receiver faced the light), 2 edges
+// after Arvo 2004: the pixel's world size, as if every receiver faced the light, near the light
+// depth's discontinuities; u_virtual_edge_coarsen levels coarser elsewhere), 2 edges
 // (adaptive shadow maps, Fernando et al. 2001 / Lefohn et al. 2006: full resolution only near
 // shadow edges, u_virtual_edge_coarsen levels coarser elsewhere; the edges are last frame's, so
 // the first frame asks everywhere), 3 fitted (fitted virtual shadow maps, Giegl & Wimmer 2007:
@@ -27,6 +28,30 @@ float virtualWorldFootprint(sampler2D gPosition, ivec2 pixel) {
   return best < 1e29 ? best / lightViewRange[0].z : 1.0;
 }
 
+// Tiled shadow maps' depth-discontinuity term (Arvo 2004: tiles split "based on depth
+// discontinuities, distances"): whether the light's depth around the point's position, in the
+// finest page last frame drew there (3x3 texels of the atlas), bends or steps: the largest second
+// difference along the rows, columns and diagonals over u_virtual_depth_step. A plane at any
+// slope has none; a caster's silhouette, where shadow edges start, has one. True where it cannot
+// tell (no page yet, no depth atlas bound, step 0): the pixel keeps its distance level there.
+uniform sampler2DArray u_virtualDepthAtlas;
+uniform int u_virtualHasDepthAtlas;
+uniform float u_virtual_depth_step;
+
+bool virtualNearDepthDiscontinuity(vec2 uv) {
+  if (u_virtualHasDepthAtlas == 0 || !(u_virtual_depth_step > 0.0)) return true;
+  VirtualPage page;
+  if (!virtualFindPage(uv, page)) return true;
+  ivec2 origin = ivec2(page.tile % SL_VIRTUAL_POOL_SIDE, page.tile / SL_VIRTUAL_POOL_SIDE) * SL_VIRTUAL_PAGE;
+  ivec2 centre = clamp(ivec2(page.local * float(SL_VIRTUAL_PAGE)), ivec2(1), ivec2(SL_VIRTUAL_PAGE - 2));
+  float d[9];
+  for (int k = 0; k < 9; ++k)
+    d[k] = texelFetch(u_virtualDepthAtlas, ivec3(origin + centre + ivec2(k % 3 - 1, k / 3 - 1), 0), 0).r;
+  float bend = max(max(abs(d[3] + d[5] - 2.0 * d[4]), abs(d[1] + d[7] - 2.0 * d[4])),
+                   max(abs(d[0] + d[8] - 2.0 * d[4]), abs(d[2] + d[6] - 2.0 * d[4])));
+  return !(bend <= u_virtual_depth_step);  // NaN from an undefined texel counts as a discontinuity
+}
+
 // Whether last frame's visibility changes within two pixels (a shadow edge passes here).
 bool virtualNearShadowEdge(ivec2 pixel) {
   if (u_hasPreviousVisibility == 0) return true;
@@ -47,9 +72,11 @@ int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
   if (footprint < 0.0) return -1;
   uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz).xy;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return -1;
-  if (virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE)) footprint = virtualWorldFootprint(gPosition, pixel);
+  bool distance = virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE);
+  if (distance) footprint = virtualWorldFootprint(gPosition, pixel);
   int level = virtualLevelFor(footprint);
-  if (virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !virtualNearShadowEdge(pixel))
+  if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !virtualNearShadowEdge(pixel)) ||
+      (distance && !virtualNearDepthDiscontinuity(uv)))
     level = min(level + int(u_virtual_edge_coarsen + 0.5), SL_VIRTUAL_LEVELS - 1);
   return level;
 }

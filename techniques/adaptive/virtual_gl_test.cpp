@@ -214,6 +214,28 @@ TEST(VirtualShadowMap, CriteriaAskForDifferentPagesForTheSameShadows) {
   expectSane(tiled.frame, "tiled");
 }
 
+// Tiled maps' depth-discontinuity term (Arvo 2004): away from the bends and steps of the light's
+// depth (last frame's pages) a pixel asks edge_coarsen levels coarser than its distance level.
+// On terrain that serves the same shadows from fewer pages than the distance heuristic alone
+// (virtual.depth_step=0); on the first frame, with no page drawn yet, every pixel keeps its level.
+TEST(VirtualShadowMap, TiledRefinesOnlyNearTheLightDepthsDiscontinuities) {
+  test::GlHarness h;
+  const Scene scene = loadScene("terrain", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const VirtualRun distanceOnly = render(h, scene, "tiled", {"virtual.depth_step=0"}, 2);
+  const VirtualRun first = render(h, scene, "tiled", {}, 1);
+  const VirtualRun tiled = render(h, scene, "tiled", {}, 2);
+  const int d = requestedPages(distanceOnly.status), f = requestedPages(first.status);
+  const int t = requestedPages(tiled.status);
+  std::printf("terrain %dx%d: tiled %d pages (%.3f %%), distance alone %d (%.3f %%)\n", kW, kH, t,
+              wrongPct(scene, tiled.frame), d, wrongPct(scene, distanceOnly.frame));
+  EXPECT_EQ(f, d) << "no page drawn yet: no discontinuity known, every pixel keeps its level";
+  EXPECT_LT(t, d) << tiled.status;
+  EXPECT_LE(wrongPct(scene, tiled.frame), wrongPct(scene, distanceOnly.frame) + 0.01);
+  expectSane(tiled.frame, "tiled");
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
 // Fitted virtual shadow maps: the same footprints, gathered into a grid and fitted into a
 // quadtree on the CPU. Its leaves partition the sampled area and are never coarser than a pixel
 // asked for, so it is as accurate as resolution matching; the status reports the CPU fit; a

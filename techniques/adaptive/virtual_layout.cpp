@@ -184,11 +184,16 @@ class VirtualState : public LayoutState {
   // tiles and uploads the page table.
   // The edges criterion reads last frame's visibility (a texture of this frame's size); the
   // marking pass and the views ask through the same function (layouts/virtual_request.glsl).
+  // The distance criterion reads the depth of the pages last frame drew (the representation's
+  // depth atlas, with the page table still holding last frame's allocation).
   static void bindPreviousVisibility(const Program& p, TextureUnits& units, const PartContext& ctx) {
     const bool previous = ctx.previousVisibility && ctx.previousVisibility->width() == ctx.width &&
                           ctx.previousVisibility->height() == ctx.height;
     units.bind(p, "u_previousVisibility", previous ? ctx.previousVisibility->id() : 0);
     p.set("u_hasPreviousVisibility", previous ? 1 : 0);
+    const Texture2D* depth = ctx.shadowDepth ? ctx.shadowDepth() : nullptr;
+    units.bind(p, "u_virtualDepthAtlas", depth ? depth->id() : 0);
+    p.set("u_virtualHasDepthAtlas", depth ? 1 : 0);
   }
 
   void markAndAllocate(const PartContext& ctx) {
@@ -358,7 +363,17 @@ class VirtualLayout : public Layout {
          .max = 6,
          .defaultValue = 3,
          .unit = "levels",
-         .help = "criterion edges: how many levels coarser than its footprint a pixel away from shadow edges asks for"},
+         .help = "criteria edges and distance: how many levels coarser a pixel away from shadow edges (edges) or "
+                 "from the light depth's discontinuities (distance) asks for"},
+        {.key = "virtual.depth_step",
+         .type = ParamType::Float,
+         .min = 0,
+         .max = 0.05,
+         .defaultValue = 0.0005,
+         .unit = "depth [0,1]",
+         .help = "criterion distance (tiled maps, Arvo 2004): the second difference of the light's depth (3x3 texels "
+                 "of last frame's page) above which a point counts as near a depth discontinuity and keeps its "
+                 "distance level; 0: every point keeps it (the distance heuristic alone)"},
         {.key = "virtual.cache",
          .type = ParamType::Bool,
          .defaultValue = 1,
