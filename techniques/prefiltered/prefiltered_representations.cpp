@@ -348,7 +348,19 @@ void registerPrefilteredRepresentations(std::vector<std::unique_ptr<Representati
       "penumbra box from the summed-area table",
       // 1e-4, not VSM's 1e-5: a 2048^2 table's 32-bit sums cancel to variance noise of that order
       // in small boxes (speckled false shadow: 0.44 % of `contact` at 1e-5, 0.02 % at 1e-4).
-      {minVariance("vssm.min_variance", 1e-4), bleed("vssm.bleed")}, vssmSpec());
+      {minVariance("vssm.min_variance", 1e-4),
+       bleed("vssm.bleed"),
+       {.key = "vssm.subdivide",
+        .type = ParamType::Int,
+        .min = 0,
+        .max = 2,
+        .defaultValue = 0,
+        .unit = "levels",
+        .help = "kernel subdivision (Yang et al. 2010): where the whole blocker-search box gives no estimate (the "
+                "receiver not beyond its mean depth), estimate 2^levels x 2^levels sub-boxes and combine them; 0: "
+                "off (the default: compared with the pixel's own depth, sub-boxes of a sloped receiver find "
+                "blockers that are not there, techniques/soft/README.md)"}},
+      vssmSpec());
   add("convolution-soft",
       "soft convolution shadow map (Annen et al. 2008, CSM-Z): blocker depth from the basis times depth, "
       "penumbra box from the summed-area table, contact sharpening",

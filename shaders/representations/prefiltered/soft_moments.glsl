@@ -22,15 +22,42 @@
 // few per cent where nothing blocks, and their mean depth is then noise.
 const float kSoftMinBlockerFraction = 0.02;
 
+// Kernel subdivision (Yang et al. 2010, for VSSM; SL_SOFT_SUBDIVIDE_LEVELS from the module): when
+// the whole search box gives no blocker (a receiver not beyond the box's mean depth: one that
+// falls away behind its blockers, or blockers at several depths), the box is split into k x k
+// sub-boxes (k = 2^levels, at most 4) and each is estimated alone; the blocked fraction is their
+// mean and the blocker depth their blocked-weighted mean. A box with an estimate keeps it.
+vec2 softBlocker(vec3 uvLayer, float width, float receiverDepth) {
+  vec4 m[SL_MOMENT_TARGETS];
+  momentsInBox(uvLayer, width, m);
+  vec2 whole = representationBlocker(m, receiverDepth);
+#ifdef SL_SOFT_SUBDIVIDE_LEVELS
+  int k = 1 << int(clamp(SL_SOFT_SUBDIVIDE_LEVELS + 0.5, 0.0, 2.0));
+  if (k == 1 || whole.x >= kSoftMinBlockerFraction) return whole;
+  vec2 texel = 1.0 / vec2(textureSize(u_moments0, 0).xy);
+  float blocked = 0.0, weightedDepth = 0.0;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      if (i >= k || j >= k) continue;
+      vec2 offset = (vec2(i, j) + 0.5 - 0.5 * float(k)) * (width / float(k)) * texel;
+      momentsInBox(vec3(uvLayer.xy + offset, uvLayer.z), width / float(k), m);
+      vec2 b = representationBlocker(m, receiverDepth);
+      if (!(b.x >= kSoftMinBlockerFraction)) continue;  // none here (or NaN)
+      blocked += b.x;
+      weightedDepth += b.x * b.y;
+    }
+  if (blocked > 0.0) return vec2(blocked / float(k * k), weightedDepth / blocked);
+#endif
+  return whole;
+}
+
 // x: blocker fraction of the search box, y: their mean stored depth, z: penumbra radius and w:
 // search radius (texels of the view read).
 vec4 softMomentPenumbra(vec3 uvLayer, float receiverDepth) {
   int view = int(uvLayer.z + 0.5);
   float dR = pcssLinear(receiverDepth, view);
   float search = pcssSearchTexels(view, dR);
-  vec4 m[SL_MOMENT_TARGETS];
-  momentsInBox(uvLayer, 2.0 * search, m);
-  vec2 b = representationBlocker(m, receiverDepth);
+  vec2 b = softBlocker(uvLayer, 2.0 * search, receiverDepth);
   // NaN fails every comparison: a broken estimate reads as no blocker.
   if (!(b.x >= kSoftMinBlockerFraction)) return vec4(0.0, receiverDepth, kPcssMinRadius, search);
   float blocker = clamp(b.y, 0.0, receiverDepth);

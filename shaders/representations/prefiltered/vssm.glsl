@@ -4,6 +4,10 @@
 #include "representations/prefiltered/moment_math.glsl"
 uniform float u_vssm_min_variance;
 uniform float u_vssm_bleed;
+// Kernel subdivision (Yang et al. 2010): where the whole search box gives no blocker estimate,
+// 2^levels x 2^levels sub-boxes are estimated one by one (soft_moments.glsl).
+uniform float u_vssm_subdivide;
+#define SL_SOFT_SUBDIVIDE_LEVELS u_vssm_subdivide
 
 void representationMoments(float z, out vec4 m[SL_MOMENT_TARGETS]) { m[0] = vec4(z, z * z, 0.0, 0.0); }
 
@@ -17,7 +21,7 @@ float representationVariance(vec4 m[SL_MOMENT_TARGETS]) { return m[0].y - m[0].x
 // receiver, those texels assumed at the receiver's depth d, so mean = N d + (1 - N) z_blocker.
 // Exact for one planar blocker over a planar receiver. A receiver nearer than the mean gets no
 // bound (N = 1, no blocker): the paper's known failure where a receiver falls away behind the
-// blockers, which it answers by subdividing the kernel (not done here).
+// blockers, which it answers by subdividing the kernel (vssm.subdivide, soft_moments.glsl).
 vec2 representationBlocker(vec4 m[SL_MOMENT_TARGETS], float receiverDepth) {
   float mean = m[0].x;
   if (!(receiverDepth > mean)) return vec2(0.0, receiverDepth);
