@@ -57,12 +57,37 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
+namespace {
+
+// Adds a mesh's vertices, placed by `m`, to the bounds.
+void addPlaced(const Mesh& mesh, const glm::mat4& m, Bounds& b) {
+  for (const glm::vec3& p : mesh.positions) b.add(glm::vec3(m * glm::vec4(p, 1.0f)));
+}
+
+// Where a moving instance can be at any time, in world space (conservative).
+void addSweep(const Instance& inst, const Mesh& mesh, Bounds& b) {
+  if (inst.motion.type == Motion::Type::Oscillate) {
+    // The offset is vector * sin: the box swept between its two ends lies within theirs.
+    for (float s : {-1.0f, 1.0f})
+      addPlaced(mesh, inst.transform * glm::translate(glm::mat4(1.0f), inst.motion.vector * s), b);
+    return;
+  }
+  // A rotation about the local origin keeps every point within the local sphere of the farthest.
+  float r = 0.0f;
+  for (const glm::vec3& p : mesh.positions) r = std::max(r, glm::length(p));
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec3 corner((c & 1) ? r : -r, (c & 2) ? r : -r, (c & 4) ? r : -r);
+    b.add(glm::vec3(inst.transform * glm::vec4(corner, 1.0f)));
+  }
+}
+
+}  // namespace
+
 Bounds Scene::boundsAt(double t) const {
   Bounds b;
   for (const Instance& inst : instances) {
     if (inst.mesh < 0 || size_t(inst.mesh) >= meshes.size()) continue;
-    const glm::mat4 m = inst.transformAt(t);
-    for (const glm::vec3& p : meshes[inst.mesh].positions) b.add(glm::vec3(m * glm::vec4(p, 1.0f)));
+    addPlaced(meshes[inst.mesh], inst.transformAt(t), b);
   }
   // Media cast shadows too: light frusta fitted to the bounds must hold them.
   for (const Volume& v : volumes) {
@@ -77,36 +102,11 @@ Bounds Scene::instanceBoundsAt(size_t i, double t) const {
   Bounds b;
   const Instance& inst = instances.at(i);
   if (inst.mesh < 0 || size_t(inst.mesh) >= meshes.size()) return b;
-  const glm::mat4 m = inst.transformAt(t);
-  for (const glm::vec3& p : meshes[inst.mesh].positions) b.add(glm::vec3(m * glm::vec4(p, 1.0f)));
+  addPlaced(meshes[inst.mesh], inst.transformAt(t), b);
   return b;
 }
 
-namespace {
-
-// Where a moving instance can be at any time, in world space (conservative).
-void addSweep(const Instance& inst, const Mesh& mesh, Bounds& b) {
-  if (inst.motion.type == Motion::Type::Oscillate) {
-    // The offset is vector * sin: the box swept between its two ends lies within theirs.
-    for (float s : {-1.0f, 1.0f}) {
-      const glm::mat4 m = inst.transform * glm::translate(glm::mat4(1.0f), inst.motion.vector * s);
-      for (const glm::vec3& p : mesh.positions) b.add(glm::vec3(m * glm::vec4(p, 1.0f)));
-    }
-    return;
-  }
-  // A rotation about the local origin keeps every point within the local sphere of the farthest.
-  float r = 0.0f;
-  for (const glm::vec3& p : mesh.positions) r = std::max(r, glm::length(p));
-  for (int c = 0; c < 8; ++c) {
-    const glm::vec3 corner((c & 1) ? r : -r, (c & 2) ? r : -r, (c & 4) ? r : -r);
-    b.add(glm::vec3(inst.transform * glm::vec4(corner, 1.0f)));
-  }
-}
-
-}  // namespace
-
 Bounds Scene::motionEnvelope() const {
-  if (!hasMotion()) return boundsAt(0.0);
   Bounds b = boundsAt(0.0);
   for (const Instance& inst : instances)
     if (inst.motion.type != Motion::Type::None && inst.mesh >= 0 && size_t(inst.mesh) < meshes.size())

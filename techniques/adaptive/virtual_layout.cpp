@@ -252,9 +252,8 @@ class VirtualState : public LayoutState {
       for (double t : {then, now}) {
         const Bounds b = scene.instanceBoundsAt(i, t);
         if (b.empty()) continue;
-        for (int c = 0; c < 8; ++c) {
-          const glm::vec4 clip = viewProj * glm::vec4((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y,
-                                                      (c & 4) ? b.max.z : b.min.z, 1.0f);
+        for (const glm::vec3& corner : boxCorners(b)) {
+          const glm::vec4 clip = viewProj * glm::vec4(corner, 1.0f);
           if (!(clip.w > 1e-6f)) {
             const int resident = frame_.resident;
             pages_.invalidate();
@@ -352,7 +351,8 @@ class VirtualLayout : public Layout {
          .defaultValue = 0,
          .help = "which page and level each visible pixel asks for (the survey: the adaptive methods \"mainly differ "
                  "in termination criteria\"): footprint (resolution-matched, Lefohn et al. 2007), distance (tiled "
-                 "maps' heuristic after Arvo 2004: the pixel's world size only), edges (adaptive shadow maps, "
+                 "maps' heuristic after Arvo 2004: the pixel's world size, near the light depth's discontinuities), "
+                 "edges (adaptive shadow maps, "
                  "Fernando et al. 2001: full resolution near last frame's shadow edges, coarser elsewhere), fitted "
                  "(fitted virtual shadow maps, Giegl & Wimmer 2007: the footprints gathered into a grid, read back "
                  "and fitted into a quadtree on the CPU)",
