@@ -47,7 +47,8 @@ LightView cascadeView(const LayoutInput& in, const CameraFrustum& cam, float a, 
   if (light.type == Light::Type::Spot)
     return fitPerspective(light, lightViewMatrix(light, in.jitter.rotationRad), receivers, casters, size, true,
                           in.params->b("layout.snap"), in.jitter);
-  return lispsmView(light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter);
+  return lispsmView(light, in.cameraView, receivers, casters, lispsmN(*in.params), size, in.params->b("layout.snap"),
+                    in.jitter);
 }
 
 class CascadedState : public SdsmState {

@@ -120,7 +120,8 @@ class FacePartitionedLayout : public Layout {
       if (glm::length(dir) < 1e-6f) dir = -glm::vec3(inv[2]);
       const glm::vec3 d = glm::normalize(dir);
       const glm::mat4 faceView = glm::lookAt(eye, eye + d, std::abs(glm::dot(d, up)) > 0.99f ? glm::vec3(inv[0]) : up);
-      LightView v = lispsmView(layoutLight(in), faceView, receivers, casters, lispsmN(*in.params), size, in.jitter);
+      LightView v = lispsmView(layoutLight(in), faceView, receivers, casters, lispsmN(*in.params), size,
+                               in.params->b("layout.snap"), in.jitter);
       v.splitNear = a;
       v.splitFar = slice + 1 == slices ? 1e30f : b;  // the GLSL module picks the slice by view depth
       space.views.push_back(v);

@@ -104,6 +104,19 @@ LightView warpedView(const glm::mat4& lightView, const glm::vec3& eye, float sin
   return ls;
 }
 
+// Near the fallback the warped map turns into the unsnapped focused map (w -> 0). With
+// layout.snap the fallback is the snapped one, so the warped map is carried the same way: the
+// affine map from the unsnapped focused window to the snapped one, weighted by 1 - w, applied
+// after the warp. It is the identity at w = 1 and gives the snapped map at w = 0, so the map stays
+// continuous; both windows hold the receivers, and so does every blend of them.
+void snapTowardFallback(LightView& warped, const LightView& unsnapped, const LightView& snapped, float w) {
+  const glm::mat4 toSnapped = snapped.proj * glm::inverse(unsnapped.proj);
+  glm::mat4 blend;
+  for (int c = 0; c < 4; ++c) blend[c] = glm::mix(toSnapped[c], glm::mat4(1.0f)[c], w);
+  warped.proj = blend * warped.proj;
+  warped.viewProj = warped.proj * warped.view;
+}
+
 }  // namespace
 
 glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& viewDir, float cosGamma, float w,
@@ -126,26 +139,28 @@ glm::mat4 warpBasis(const Light& light, const glm::vec3& eye, const glm::vec3& v
 }
 
 LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
-                     const std::vector<glm::vec3>& casters, const LispsmN& nChoice, int size,
+                     const std::vector<glm::vec3>& casters, const LispsmN& nChoice, int size, bool snap,
                      const LayoutJitter& jitter) {
   const glm::mat4 invView = glm::inverse(cameraView);
   const glm::vec3 eye = glm::vec3(invView[3]);
   const glm::vec3 viewDir = -glm::normalize(glm::vec3(invView[2]));
   const float cosGamma = glm::dot(viewDir, glm::normalize(light.direction));
   const float sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
-  auto focused = [&] {
+  auto focused = [&](bool snapped) {
     glm::mat4 view = lightViewMatrix(light, jitter.rotationRad);
     if (light.type == Light::Type::Spot)
-      return fitPerspective(light, view, receivers, casters, size, true, false, jitter);
-    return fitOrthographic(view, receivers, casters, size, false, jitter);
+      return fitPerspective(light, view, receivers, casters, size, true, snapped, jitter);
+    return fitOrthographic(view, receivers, casters, size, snapped, jitter);
   };
   if (light.type == Light::Type::Spot || sinGamma < kFallbackSinGamma || nChoice.mode == LispsmN::Mode::Infinity)
-    return focused();
+    return focused(snap);
   const float w = viewWarpWeight(sinGamma);
   const glm::mat4 lightView = warpBasis(light, eye, viewDir, cosGamma, w, jitter.rotationRad);
   const LightViewBox box = lightViewBox(lightView, receivers, casters);
-  return warpedView(lightView, eye, sinGamma, viewDir, receivers, box.lo, box.hi, box.zMin, box.zMax, nChoice,
-                    std::max(w, 1e-6f), size, jitter);
+  LightView warped = warpedView(lightView, eye, sinGamma, viewDir, receivers, box.lo, box.hi, box.zMin, box.zMax,
+                                nChoice, std::max(w, 1e-6f), size, jitter);
+  if (snap && w < 1.0f) snapTowardFallback(warped, focused(false), focused(true), w);
+  return warped;
 }
 
 float viewWarpWeight(float sinGamma) {
@@ -212,8 +227,9 @@ class LispsmLayout : public Layout {
     auto casters = boxCorners(bounds);
     auto receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
     if (receivers.empty()) receivers = casters;
-    return LightSpace::single(
-        lispsmView(layoutLight(in), in.cameraView, receivers, casters, lispsmN(*in.params), size, in.jitter), size);
+    return LightSpace::single(lispsmView(layoutLight(in), in.cameraView, receivers, casters, lispsmN(*in.params), size,
+                                         in.params->b("layout.snap"), in.jitter),
+                              size);
   }
 };
 

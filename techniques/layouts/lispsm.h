@@ -9,7 +9,8 @@ void registerWarpedLayouts(std::vector<std::unique_ptr<Layout>>& out);
 
 // The LiSPSM view of `receivers` (with `casters` along their light rays) for a camera with view
 // matrix `cameraView` with the chosen n; a spot light, or a view (anti)parallel to the light,
-// gets the focused map instead. Cascades call it once per split (z-partitioning and warping).
+// gets the focused map instead, snapped to whole texels when `snap` (layout.snap); the warp fades
+// into that map continuously. Cascades call it once per split (z-partitioning and warping).
 // The free parameter n: a named endpoint (the survey's slider: z_n PSM-like, n_opt, infinity =
 // focused) times a scale.
 struct LispsmN {
@@ -36,5 +37,6 @@ struct LightViewBox {
 LightViewBox lightViewBox(const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                           const std::vector<glm::vec3>& casters);
 LightView lispsmView(const Light& light, const glm::mat4& cameraView, const std::vector<glm::vec3>& receivers,
-                     const std::vector<glm::vec3>& casters, const LispsmN& n, int size, const LayoutJitter& jitter);
+                     const std::vector<glm::vec3>& casters, const LispsmN& n, int size, bool snap,
+                     const LayoutJitter& jitter);
 }  // namespace sl
