@@ -67,6 +67,12 @@ struct BenchEntry {
   std::vector<double> convergence;  // wrong_pixel_pct per measured frame
   bool hasFlicker = false;
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;
+  // World-space flicker along a path: the path's first view shaded at every frame with the maps
+  // fitted to that frame's camera (FrameInput::fitCamera, the scene time held), mean per pixel
+  // of |frame-to-frame change|. The truth at a fixed world point does not change, so this is the
+  // shimmer of the map alone, free of the screen-space metric's floor (an edge that the moving
+  // pixel grid crosses at other frames than the true edge).
+  double worldFlicker = 0;
   long long nonfinite = 0;            // NaN/Inf visibility pixels in the last frame
   long long shadowTexels = 0;         // Viewport::shadowTexels after the last frame
   std::string status;                 // the parts' status lines after the last frame
@@ -84,6 +90,7 @@ struct BenchResult {
   double referenceFlicker = 0;
   std::vector<float> referenceChangeMap;  // per pixel, along a path
   std::vector<uint8_t> pathValid;         // pixels covered in every frame of the path (flicker is over these)
+  std::vector<uint8_t> worldValid;        // pixels covered in the path's first frame (world-space flicker)
   ReferenceImage lastReference;           // reference of the last frame (the one `error` compares with)
   std::vector<BenchEntry> entries;
   std::vector<std::string> shaderErrors;  // any: the affected entries measured a broken shader

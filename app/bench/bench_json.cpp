@@ -56,7 +56,10 @@ nlohmann::json benchToJson(const BenchResult& r) {
                   {"image_wrong_pct", e.image.imageWrongPct}, {"valid_pixels", e.error.validPixels}};
     x["convergence"] = e.convergence;
     if (e.hasFlicker)
-      x["flicker"] = {{"excess", e.flicker}, {"technique", e.flickerTechnique}, {"reference", e.flickerReference}};
+      x["flicker"] = {{"excess", e.flicker},
+                      {"technique", e.flickerTechnique},
+                      {"reference", e.flickerReference},
+                      {"world", e.worldFlicker}};
     else
       x["flicker"] = nullptr;
     x["nonfinite_pixels"] = e.nonfinite;
@@ -79,15 +82,16 @@ void writeBenchCsv(const BenchResult& r, const std::string& file) {
   if (!f) throw std::runtime_error(file + ": cannot write");
   std::string sweepKeys;
   f << "label,technique,sweep,ms_median,ms_p95,ms_ratio,ms_ratio_p25,ms_ratio_p75,wrong_pixel_pct,false_shadow_pct,"
-       "false_light_pct,image_wrong_pct,rmse,flicker_excess,nonfinite_pixels,frames,timer\n";
+       "false_light_pct,image_wrong_pct,rmse,flicker_excess,flicker_world,nonfinite_pixels,frames,timer\n";
   for (const auto& e : r.entries) {
     std::string sweep;
     for (const auto& [k, v] : e.sweepPoint) sweep += (sweep.empty() ? "" : " ") + k + "=" + v;
     f << csvField(e.label) << "," << csvField(e.technique) << "," << csvField(sweep) << "," << e.msMedian << ","
       << e.msP95 << "," << e.msRatio << "," << e.msRatioP25 << "," << e.msRatioP75 << "," << e.error.wrongPixelPct
       << "," << e.error.falseShadowPct << "," << e.error.falseLightPct << "," << e.image.imageWrongPct << ","
-      << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << "," << e.nonfinite << ","
-      << e.frames << "," << e.timer << "\n";
+      << e.error.rmse << "," << (e.hasFlicker ? std::to_string(e.flicker) : std::string()) << ","
+      << (e.hasFlicker ? std::to_string(e.worldFlicker) : std::string()) << "," << e.nonfinite << "," << e.frames << ","
+      << e.timer << "\n";
   }
 }
 

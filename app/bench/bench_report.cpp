@@ -341,14 +341,15 @@ std::string resultsTable(const BenchResult& r) {
        "id='results'><thead><tr><th>entry</th><th>ms/frame<br>median</th><th>ms/frame<br>p95</th>"
        "<th>× entry 1<br>(p25–p75)</th><th>wrong<br>%</th><th>image<br>wrong %</th><th>false shadow<br>%</th>"
        "<th>false light<br>%</th><th>RMSE</th>"
-    << (path ? "<th>flicker<br>excess</th>" : "") << "<th>NaN/Inf<br>pixels</th></tr></thead><tbody>\n";
+    << (path ? "<th>flicker<br>excess</th><th>world<br>flicker</th>" : "")
+    << "<th>NaN/Inf<br>pixels</th></tr></thead><tbody>\n";
   for (const auto& e : r.entries) {
     s << "<tr><td>" << xmlEscaped(e.label) << "</td><td>" << fixed(e.msMedian, 2) << "</td><td>" << fixed(e.msP95, 2)
       << "</td><td data-v='" << e.msRatio << "'>" << fixed(e.msRatio, 2) << " (" << fixed(e.msRatioP25, 2) << "–"
       << fixed(e.msRatioP75, 2) << ")</td><td>" << fixed(e.error.wrongPixelPct, 2) << "</td><td>"
       << fixed(e.image.imageWrongPct, 2) << "</td><td>" << fixed(e.error.falseShadowPct, 2) << "</td><td>"
       << fixed(e.error.falseLightPct, 2) << "</td><td>" << fixed(e.error.rmse, 4) << "</td>";
-    if (path) s << "<td>" << fixed(e.flicker, 4) << "</td>";
+    if (path) s << "<td>" << fixed(e.flicker, 4) << "</td><td>" << fixed(e.worldFlicker, 5) << "</td>";
     s << "<td>" << e.nonfinite << "</td></tr>\n";
   }
   s << "</tbody></table>\n<p class='caption'>Click a column header to sort. <b>× entry 1</b>: the entries are "

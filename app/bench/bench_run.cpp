@@ -139,9 +139,21 @@ struct EntryRun {
   std::map<std::string, std::vector<double>> passMs;
   std::vector<std::string> passOrder;
   std::vector<std::vector<float>> frames;  // visibility per frame, along a path (flicker)
+  // Along a path: the same technique shading the path's first view with maps fitted to each
+  // frame's camera (world-space flicker), and its visibility per frame.
+  std::unique_ptr<Viewport> worldViewport;
+  std::vector<std::vector<float>> worldFrames;
 };
 
-EntryRun startEntry(const BenchPlanEntry& p, int frames) {
+// Frame f of the world-space flicker: the first frame's view and time, fitted to frame f's camera.
+FrameInput worldFrame(const BenchFrames& fr, int f) {
+  FrameInput in = fr.inputs.front();
+  in.fitCamera = fr.inputs[f].camera;
+  in.cut = f == 0;
+  return in;
+}
+
+EntryRun startEntry(const BenchPlanEntry& p, int frames, bool withWorldFlicker) {
   EntryRun run;
   BenchEntry& out = run.out;
   out.technique = p.technique.presetId;
@@ -152,6 +164,7 @@ EntryRun startEntry(const BenchPlanEntry& p, int frames) {
   out.sweepPoint = p.sweepPoint;
   out.frames = frames;
   run.viewport = std::make_unique<Viewport>(p.technique);
+  if (withWorldFlicker) run.worldViewport = std::make_unique<Viewport>(p.technique);
   return run;
 }
 
@@ -217,6 +230,7 @@ void finishEntry(EntryRun& run, const EntryRun& base, const BenchResult& r, cons
     out.flickerReference = r.referenceFlicker;
     out.flicker = flickerExcess(out.changeMap, r.referenceChangeMap, commonValid.data());
   }
+  if (!run.worldFrames.empty()) out.worldFlicker = meanTemporalChange(run.worldFrames, r.worldValid.data());
 }
 
 }  // namespace
@@ -258,13 +272,22 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
   r.lastReference = refs.back();
 
   std::vector<EntryRun> runs;
-  for (const auto& p : plan) runs.push_back(startEntry(p, o.frames));
+  if (!fr.still()) r.worldValid = refs.front().valid;
+  for (const auto& p : plan) runs.push_back(startEntry(p, o.frames, !fr.still()));
   prepareEntries(renderer, runs, plan, o, fr);
   log << "bench: " << runs.size() << " entries x " << o.frames << " frames, rendered in turn at each frame\n";
   for (int f = 0; f < o.frames; ++f)
     for (EntryRun& run : runs) {
       renderer.render(fr.inputs[f], {run.viewport.get()});
       recordFrame(renderer, run, refs[fr.still() ? 0 : f], f + 1 == o.frames, !fr.still());
+    }
+  // World-space flicker after the measured frames, which it must not touch (the renderer's last
+  // frame is what the next one's motion is relative to).
+  for (int f = 0; f < o.frames; ++f)
+    for (EntryRun& run : runs) {
+      if (!run.worldViewport) continue;
+      renderer.render(worldFrame(fr, f), {run.worldViewport.get()});
+      run.worldFrames.push_back(viewportVisibility(*run.worldViewport));
     }
 
   // The last frame's colour against the same shading with the truth's visibility.
@@ -277,7 +300,9 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     const BenchEntry& out = run.out;
     log << "bench: [" << e + 1 << "/" << runs.size() << "] " << out.label << ": " << out.msMedian
         << " ms/frame (median), x" << out.msRatio << " of entry 1 (p25-p75 " << out.msRatioP25 << "-" << out.msRatioP75
-        << "), wrong " << out.error.wrongPixelPct << " %, image-wrong " << out.image.imageWrongPct << " %\n";
+        << "), wrong " << out.error.wrongPixelPct << " %, image-wrong " << out.image.imageWrongPct << " %";
+    if (out.hasFlicker) log << ", flicker excess " << out.flicker << ", world flicker " << out.worldFlicker;
+    log << "\n";
   }
   for (EntryRun& run : runs) r.entries.push_back(std::move(run.out));
   r.shaderErrors = shaders.errors();

@@ -21,7 +21,9 @@ static const char* kBenchUsage =
     "  --frames N measured frames after --warmup frames (default 10 and 3). With --camera the\n"
     "  camera stands still and `convergence` is the error per frame against one reference;\n"
     "  with --path the camera moves at 30 fps and `flicker` compares temporal change with the\n"
-    "  reference traced per frame. References are cached (see `shadowlab reference`).\n"
+    "  reference traced per frame, and `flicker.world` is the mean change at fixed world points\n"
+    "  (the first frame's view shaded with maps fitted to each frame's camera: the truth is still).\n"
+    "  References are cached (see `shadowlab reference`).\n"
     "  --approach N renders N frames of coherent motion before the measured frames, so accumulating\n"
     "  techniques start with a filled history (default 0: empty history): with --camera a rotation\n"
     "  into the view, with --path the N path frames before --time (the path clamps at its start).\n";

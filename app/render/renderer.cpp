@@ -339,8 +339,8 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.scene = scene_;
   li.sceneGeneration = sceneGeneration_;
   li.time = in.time;
-  li.cameraView = view_;
-  li.cameraProj = proj_;
+  li.cameraView = in.fitCamera ? cameraView(*in.fitCamera) : view_;
+  li.cameraProj = in.fitCamera ? cameraProjection(*in.fitCamera, static_cast<float>(in.width) / in.height) : proj_;
   li.params = &t.params;
   const bool cameraMoved = view_ != vp.prev_.view || proj_ != vp.prev_.proj;
   li.jitter = vp.accumulation->jitter(t.params, cameraMoved);

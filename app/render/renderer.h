@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -132,6 +133,10 @@ struct FrameInput {
   double time = 0.0;
   int width = 640, height = 360;
   bool cut = false;  // camera jumped or scene changed: accumulations forget their history
+  // The camera the layouts fit their light views to (and pick them by), when not `camera`: bench
+  // shades one fixed view with maps fitted to a moving camera, so that what changes at a fixed
+  // world point is the map alone (world-space flicker).
+  std::optional<Camera> fitCamera;
 };
 
 struct FrameStats {
