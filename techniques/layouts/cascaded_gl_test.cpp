@@ -71,6 +71,32 @@ TEST(CascadedGl, NoMoreWrongPixelsThanFocusedAtEqualTexelsOnTerrain) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The survey: "z-partitioning works even in cases where warping fails". On `dueling-sunset` the
+// camera looks straight into a low sun (sin gamma = 0): LiSPSM falls back to the focused map,
+// while face partitioning warps each face from the side and cascades spend texels by depth. At
+// equal texels both partitionings must beat the warp (face at 1 M texels, cascades at 4 M).
+TEST(CascadedGl, PartitioningBeatsWarpingWhenTheViewLooksIntoTheLight) {
+  GlHarness h;
+  Scene scene = loadScene("dueling-sunset", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  const Camera& cam = scene.cameras.front();
+  auto wrong = [&](const char* preset, const char* size) {
+    Viewport vp(makeTechnique(preset, {size}));
+    Frame fr = renderWith(h, scene, cam, vp, 320, 180);
+    EXPECT_EQ(fr.nonfinite(), 0) << preset;
+    return wrongPct(scene, fr);
+  };
+  const double warp1 = wrong("lispsm", "shadowmap.size=1024"), face1 = wrong("face-partitioned", "shadowmap.size=512");
+  const double warp4 = wrong("lispsm", "shadowmap.size=2048"), z4 = wrong("cascaded", "shadowmap.size=1024");
+  std::printf(
+      "dueling-sunset wrong pixels: lispsm 1024² %.3f %%, face 4 x 512² %.3f %%; lispsm 2048² %.3f %%, "
+      "cascaded 4 x 1024² %.3f %%\n",
+      warp1, face1, warp4, z4);
+  EXPECT_LT(face1, 0.5 * warp1);
+  EXPECT_LT(z4, 0.75 * warp4);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 TEST(CascadedGl, CascadesViewShowsEverySplitOnlyWhenShown) {
   GlHarness h;
   Scene scene = loadScene("terrain", defaultAssetsDir());
