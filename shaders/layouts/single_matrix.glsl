@@ -12,6 +12,9 @@ uniform int u_shadowView;  // the view the shadow pass rasterizes (passes/shadow
 vec4 layoutClipIn(vec3 worldPos, int view) {
   vec4 c = lightViewProjMatrix[view] * vec4(worldPos, 1.0);
 #ifdef SL_LOG_WARP
+  // With LogPSM's perspective part w is the distance from the log's pole (1 at the map's near
+  // side), clamped where the log is (t/δ >= -0.999): a point behind the pole is off the map.
+  c.w = max(c.w, 1e-3);
   c.y = (2.0 * logWarp(c.y * 0.5 + 0.5, lightViewSplit[view].w) - 1.0) * c.w;  // layouts/logpsm.glsl
 #endif
   return c;
@@ -23,6 +26,13 @@ float layoutDepthIn(vec3 worldPos, int view) {
 }
 
 vec4 layoutClip(vec3 worldPos) { return layoutClipIn(worldPos, u_shadowView); }
+
+#ifdef SL_LOG_WARP
+// A caster fragment from behind the log's pole: a triangle reaching behind the viewer, whose
+// clamped corner the rasterizer stretched across the map (its fragments interpolate toward that
+// corner, w weighted 1/w). The shadow passes drop them (passes/shadow*.frag).
+bool layoutBehindPole(vec3 worldPos) { return (lightViewProjMatrix[u_shadowView] * vec4(worldPos, 1.0)).w < 1e-3; }
+#endif
 float layoutDepth(vec3 worldPos) { return layoutDepthIn(worldPos, u_shadowView); }
 
 ShadowCoord layoutShadowCoordIn(vec3 worldPos, int view) {

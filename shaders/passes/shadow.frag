@@ -4,6 +4,9 @@ in vec2 v_uv;
 
 void main() {
   materialAlphaTest(v_uv);
+#ifdef SL_LOG_WARP
+  if (layoutBehindPole(v_world)) discard;
+#endif
 #ifdef SL_PERSPECTIVE_MAP
   // Perspective maps store light-view linear depth like orthographic ones do, so biases mean
   // the same everywhere. (Orthographic depth is already linear: no per-fragment write, which

@@ -29,6 +29,9 @@ layout(location = 7) out vec4 o_moments7;
 
 void main() {
   materialAlphaTest(v_uv);
+#ifdef SL_LOG_WARP
+  if (layoutBehindPole(v_world)) discard;
+#endif
 #ifdef SL_PERSPECTIVE_MAP
   float z = layoutDepth(v_world);
   gl_FragDepth = clamp(z, 0.0, 1.0);

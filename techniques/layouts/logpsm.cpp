@@ -59,7 +59,10 @@ float logWarp(float t, float delta) {
 
 glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
   glm::vec4 c = view.viewProj * glm::vec4(world, 1.0f);
-  if (view.logDelta > 0.0f) c.y = (2.0f * logWarp(c.y * 0.5f + 0.5f, view.logDelta) - 1.0f) * c.w;
+  if (view.logDelta > 0.0f) {
+    c.w = std::max(c.w, 1e-3f);  // as layouts/single_matrix.glsl: behind the pole is off the map
+    c.y = (2.0f * logWarp(c.y * 0.5f + 0.5f, view.logDelta) - 1.0f) * c.w;
+  }
   return c;
 }
 
@@ -84,8 +87,45 @@ namespace {
 struct LogFit {
   LightSpace space;
   float delta = 0.0f, deltaView = 0.0f, deltaBudget = 0.0f, span = 0.0f, errorTexels = 0.0f;
-  bool tessellated = true;
+  bool tessellated = true, perspective = false;
 };
+
+// Lloyd et al.'s perspective part: x divided by the distance from the logarithm's pole, so a
+// texel narrows toward the viewer across the view too (the log already does it along). Clip
+// coordinates, in the light view (x, y along the view, z toward the light):
+//   W = (y - c_y) / (lo_y - c_y)      1 at the window's near side, 1 + 1/δ at its far side;
+//   Y = 2 (y - lo_y) / extent_y - 1   linear and not divided: the log warp maps it and scales by W
+//                                     (layouts/single_matrix.glsl, lightViewClip);
+//   X, Z: (x - eye_x) / W and z / W fitted to [-1, 1] over the body's corners (a projective map
+//         takes its extremes there; z only clips, depth is written per fragment).
+// The pole c_y = lo_y - δ extent_y is the log's, so both axes follow 1/(distance from it).
+glm::mat4 logPerspectiveProjection(const LightViewBox& box, const FocusBody& body, const glm::mat4& lightView,
+                                   float eyeX, float delta, glm::vec2 jitterTexels, float& texelWorldSize) {
+  const glm::vec3 extent = glm::max(box.hi - box.lo, glm::vec3(1e-4f));
+  const float poleY = box.lo.y - delta * extent.y;
+  const float wScale = 1.0f / (box.lo.y - poleY);
+  glm::vec2 uRange(1e30f, -1e30f), vRange(1e30f, -1e30f);
+  for (const auto& p : body.receivers) {
+    const glm::vec3 q(lightView * glm::vec4(p, 1.0f));
+    const float w = std::max((q.y - poleY) * wScale, 1e-6f);
+    uRange = glm::vec2(std::min(uRange.x, (q.x - eyeX) / w), std::max(uRange.y, (q.x - eyeX) / w));
+    for (float z : {box.zMin, box.zMax}) vRange = glm::vec2(std::min(vRange.x, z / w), std::max(vRange.y, z / w));
+  }
+  const float uSpan = std::max(uRange.y - uRange.x, 1e-6f);
+  uRange += jitterTexels.x * uSpan / float(std::max(body.size, 1));
+  const float vMargin = std::max(1e-4f, (vRange.y - vRange.x) * 1e-3f);
+  vRange += glm::vec2(-vMargin, vMargin);
+  glm::mat4 m(0.0f);  // m[column][row]; columns multiply light-view x, y, z, 1
+  m[1][3] = wScale, m[3][3] = -poleY * wScale;
+  const float jitterY = jitterTexels.y / float(std::max(body.size, 1));
+  m[1][1] = 2.0f / extent.y, m[3][1] = -2.0f * (box.lo.y / extent.y + jitterY) - 1.0f;
+  const float ax = 2.0f / uSpan, bx = -2.0f * uRange.x / uSpan - 1.0f;  // X = ax (x - eyeX) + bx W
+  m[0][0] = ax, m[1][0] = bx * m[1][3], m[3][0] = -ax * eyeX + bx * m[3][3];
+  const float az = 2.0f / (vRange.y - vRange.x), bz = -2.0f * vRange.x / (vRange.y - vRange.x) - 1.0f;
+  m[2][2] = az, m[1][2] = bz * m[1][3], m[3][2] = bz * m[3][3];
+  texelWorldSize = uSpan / float(std::max(body.size, 1));  // at the near side (W = 1)
+  return m;
+}
 
 // The orthographic window around the receivers in the view-aligned light basis, casters along
 // the light, and δ from the viewer's distance to the window's near side.
@@ -119,7 +159,6 @@ LogFit logFit(const LayoutInput& in) {
   v.nearPlane = -box.zMax - margin;
   v.farPlane = -box.zMin + margin;
   v.proj = glm::ortho(v.windowMin.x, v.windowMax.x, v.windowMin.y, v.windowMax.y, v.nearPlane, v.farPlane);
-  v.viewProj = v.proj * v.view;
   v.texelWorldSize = extent.x / float(body.size);  // at the near side; shaders measure the rest
 
   // The viewer sits (lo.y - eye's y) before the window's near side, plus z_n sin(gamma) for the
@@ -132,6 +171,11 @@ LogFit logFit(const LayoutInput& in) {
   fit.delta = std::max(fit.deltaView, fit.deltaBudget);
   if (!std::isfinite(fit.delta)) fit.delta = kNoWarpDelta;  // a degenerate body: no warp rather than NaN
   v.logDelta = fit.delta >= kNoWarpDelta ? 0.0f : fit.delta;
+  fit.perspective = v.logDelta > 0.0f && in.params->b("logpsm.perspective");
+  if (fit.perspective)
+    v.proj = logPerspectiveProjection(box, body, lightView, glm::vec3(lightView * glm::vec4(eye, 1.0f)).x, fit.delta,
+                                      in.jitter.offsetTexels, v.texelWorldSize);
+  v.viewProj = v.proj * v.view;
   fit.tessellated = in.params->b("logpsm.tessellate");
   fit.errorTexels = v.logDelta > 0.0f
                         ? logChordErrorTexels(fit.delta, fit.span, fit.tessellated ? kMaxTessLevel : 1, body.size)
@@ -149,11 +193,12 @@ class LogPsmState : public LayoutState {
   }
   std::string status() const override {
     if (fit_.delta <= 0.0f) return "logpsm: spot light, focused map (no warp)";
-    char text[200];
-    std::snprintf(text, sizeof text, "delta %.3g (%s); texel density near/far %.1fx; %s <= %.2f texels",
-                  double(fit_.delta), fit_.deltaBudget > fit_.deltaView ? "limited by the error budget" : "viewer",
-                  double(1.0f + 1.0f / fit_.delta),
-                  fit_.tessellated ? "chords" : "untessellated edges (tessellate off)", double(fit_.errorTexels));
+    char text[240];
+    std::snprintf(
+        text, sizeof text, "delta %.3g (%s); texel density near/far %.1fx; %s <= %.2f texels%s", double(fit_.delta),
+        fit_.deltaBudget > fit_.deltaView ? "limited by the error budget" : "viewer", double(1.0f + 1.0f / fit_.delta),
+        fit_.tessellated ? "chords along the view" : "untessellated edges (tessellate off)", double(fit_.errorTexels),
+        fit_.perspective && fit_.tessellated ? "; across it (perspective part) per edge, up to 64 pieces" : "");
     return text;
   }
 
@@ -189,6 +234,11 @@ class LogPsmLayout : public Layout {
              .help = "largest distance between a tessellated caster edge and the true warped curve; the warp is "
                      "weakened until the scene's longest edge meets it at the largest tessellation level",
              .logScale = true},
+            {.key = "logpsm.perspective",
+             .type = ParamType::Bool,
+             .defaultValue = 1,
+             .help = "Lloyd et al.'s perspective part: x divided by the distance from the log's pole, so texels "
+                     "also narrow across the view near the viewer (off: the log warp of y alone, x orthographic)"},
             {.key = "logpsm.tessellate",
              .type = ParamType::Bool,
              .defaultValue = 1,
