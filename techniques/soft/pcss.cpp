@@ -164,13 +164,16 @@ void addSoftPresets(std::vector<Preset>& out) {
   // Beyond every paper (the pixel-correct paper's future work): the pixel-correct history over
   // maps seen from a different point of the area light each frame converges to its visibility.
   // pc.reject off: a per-frame test in a penumbra disagrees with the mean by design.
+  // Receiver-plane bias: slope-scaled bias, large where a sample of the disk grazes a receiver,
+  // lifted Sponza's shadows off some receivers in every sample (fully lit pixels under casters:
+  // rmse 0.0330 against 0.0147, techniques/soft/README.md).
   out.push_back({"pixel-correct-soft",
                  "pixel-correct history over maps from a jittered point of the area light (Halton over the disk): "
                  "converges to the area light's visibility at rest",
                  "focused",
                  "depth-nearest",
                  "pixel-correct",
-                 {"pc.area_light=on", "pc.reject=1"}});
+                 {"pc.area_light=on", "pc.reject=1", "bias.mode=receiver-plane"}});
   out.push_back({"pcss-cascaded",
                  "PCSS over 4 cascades: search region and penumbra in each split's own texels",
                  "cascaded",
