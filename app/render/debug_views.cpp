@@ -21,11 +21,22 @@ void addBox(std::vector<float>& out, const std::vector<glm::vec3>& c, const glm:
     }
 }
 
-std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, float farZ) {
+// The world corners of a view's clip cube. `undividedY`: the view's clip y is not divided by w
+// (LogPSM: y is the linear coordinate its log maps, and the log fixes -1 and 1), so a corner is
+// the world point with clip (x w, y, z w, w): inv (x w, y, z w, w) = w a + y b, w fixed by a
+// homogeneous coordinate of 1.
+std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, float farZ, bool undividedY = false) {
   glm::mat4 inv = glm::inverse(viewProj);
   std::vector<glm::vec3> out;
   for (int i = 0; i < 8; ++i) {
-    glm::vec4 p = inv * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? farZ : nearZ, 1.0f);
+    const float x = i & 1 ? 1.0f : -1.0f, y = i & 2 ? 1.0f : -1.0f, z = i & 4 ? farZ : nearZ;
+    if (undividedY) {
+      const glm::vec4 a = inv * glm::vec4(x, 0.0f, z, 1.0f), b = inv * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+      const float w = (1.0f - y * b.w) / a.w;
+      out.emplace_back(w * glm::vec3(a) + y * glm::vec3(b));
+      continue;
+    }
+    glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
     out.emplace_back(glm::vec3(p) / p.w);
   }
   return out;
@@ -123,7 +134,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
                                                   {0.90f, 0.55f, 0.70f}, {0.60f, 0.60f, 0.60f}};
              const auto& views = vp.lightSpace.views;
              for (size_t i = 0; i < views.size(); ++i)
-               addBox(lines, unprojectCube(views[i].viewProj, -1.0f, 1.0f),
+               addBox(lines, unprojectCube(views[i].viewProj, -1.0f, 1.0f, views[i].logDelta > 0.0f),
                       views.size() == 1 ? glm::vec3(0.2f, 0.9f, 1.0f) : palette[i % 8]);
              glNamedBufferSubData(linesVbo_, 0,
                                   static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
