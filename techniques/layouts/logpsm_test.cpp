@@ -92,16 +92,14 @@ TEST(LogPsm, TheLayoutReportsItsWarpAndFallsBackForASpotLight) {
 // ground's long triangles put the ground's stored depth in the wrong texels (false shadow). Shown
 // with the log warp alone: with the perspective part the rasterizer's perspective-correct
 // interpolation (by 1/W, W growing with the distance from the log's pole) follows the log closely
-// enough that on `columns` the untessellated map is nearly right too (0.014 % wrong pixels).
+// enough that on `columns` the untessellated map is nearly right too (0.014 % wrong pixels; not
+// tested here: its tessellation on `columns` takes minutes under the sanitizers).
 TEST(LogPsmGl, TessellatedCastersMatchTheReferenceAndUnsubdividedOnesDoNot) {
   test::GlHarness h;
   const Scene scene = loadScene("columns", defaultAssetsDir());
   const test::Frame on = test::renderOnce(h, scene, "logpsm", {"logpsm.perspective=off"}, 320, 180);
   const test::Frame off =
       test::renderOnce(h, scene, "logpsm", {"logpsm.perspective=off", "logpsm.tessellate=off"}, 320, 180);
-  const test::Frame perspective = test::renderOnce(h, scene, "logpsm", {}, 320, 180);
-  EXPECT_EQ(perspective.nonfinite(), 0);
-  EXPECT_LT(test::visibilityError(scene, perspective).wrongPixelPct, 0.5);
   const test::Frame lispsm = test::renderOnce(h, scene, "lispsm", {}, 320, 180);
   EXPECT_EQ(on.nonfinite(), 0);
   const ErrorMetrics eOn = test::visibilityError(scene, on), eOff = test::visibilityError(scene, off);
@@ -142,7 +140,7 @@ TEST(LogPsm, ThePerspectivePartNarrowsTexelsAcrossTheViewNearTheViewer) {
 TEST(LogPsmGl, ThePerspectivePartBeatsTheLogAloneOnTerrain) {
   test::GlHarness h;
   const Scene scene = loadScene("terrain", defaultAssetsDir());
-  const test::Frame on = test::renderOnce(h, scene, "logpsm", {}, 320, 180);
+  const test::Frame on = test::renderOnce(h, scene, "logpsm", {"logpsm.perspective=on"}, 320, 180);
   const test::Frame off = test::renderOnce(h, scene, "logpsm", {"logpsm.perspective=off"}, 320, 180);
   EXPECT_EQ(on.nonfinite(), 0);
   const double eOn = test::visibilityError(scene, on).wrongPixelPct;
