@@ -163,8 +163,8 @@ LogFit logFit(const LayoutInput& in) {
 
   // The viewer sits (lo.y - eye's y) before the window's near side, plus z_n sin(gamma) for the
   // near plane; the logarithm's pole goes that far before t = 0, so u ~ ln(view distance).
-  const float eyeY = (lightView * glm::vec4(eye, 1.0f)).y;
-  const float distance = std::max(lo.y - eyeY, 0.0f) + std::max(zn, 1e-3f) * std::max(sinGamma, 1e-3f);
+  const glm::vec3 eyeLight(lightView * glm::vec4(eye, 1.0f));
+  const float distance = std::max(lo.y - eyeLight.y, 0.0f) + std::max(zn, 1e-3f) * std::max(sinGamma, 1e-3f);
   fit.deltaView = in.params->f("logpsm.delta_scale") * distance / extent.y / std::max(w, 1e-6f);
   fit.span = std::min(longestCasterEdge(*in.scene, in.sceneGeneration) / extent.y, 1.0f);
   fit.deltaBudget = logDeltaForError(fit.span, in.params->f("logpsm.max_error"), body.size);
@@ -173,8 +173,8 @@ LogFit logFit(const LayoutInput& in) {
   v.logDelta = fit.delta >= kNoWarpDelta ? 0.0f : fit.delta;
   fit.perspective = v.logDelta > 0.0f && in.params->b("logpsm.perspective");
   if (fit.perspective)
-    v.proj = logPerspectiveProjection(box, body, lightView, glm::vec3(lightView * glm::vec4(eye, 1.0f)).x, fit.delta,
-                                      in.jitter.offsetTexels, v.texelWorldSize);
+    v.proj =
+        logPerspectiveProjection(box, body, lightView, eyeLight.x, fit.delta, in.jitter.offsetTexels, v.texelWorldSize);
   v.viewProj = v.proj * v.view;
   fit.tessellated = in.params->b("logpsm.tessellate");
   fit.errorTexels = v.logDelta > 0.0f
