@@ -83,6 +83,7 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
     PassPrograms programs(shaders_, spec, setup);
     gpu_->draw(programs, in.time, in.time, 0, GpuScene::Only::SemiTransparent);
   };
+  part.bindVolumes = [this] { bindVolumes(); };
   part.replaceLightSpace = [&vp](const LightSpace& ls) {
     vp.lightSpace = ls;
     vp.lightViews_->upload(vp.lightSpace);

@@ -226,7 +226,9 @@ class Renderer {
   // shadeWithVisibility's own targets: the substituted visibility and the colour it gives.
   std::unique_ptr<Texture2D> substVisibility_, substColor_;
   Framebuffer substFbo_;
-  std::unique_ptr<VolumesBuffer> volumes_;  // the volumes pass's copy of Scene::volumes
+  // Scene::volumes on the GPU, for the volumes pass and the parts (PartContext::bindVolumes).
+  std::unique_ptr<VolumesBuffer> volumes_;
+  void bindVolumes();
   FrameStats stats_;
   glm::mat4 view_{1.0f}, proj_{1.0f};
 };

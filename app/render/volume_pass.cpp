@@ -9,10 +9,15 @@
 
 namespace sl {
 
+void Renderer::bindVolumes() {
+  if (!volumes_) volumes_ = std::make_unique<VolumesBuffer>();
+  volumes_->upload(*scene_);
+  volumes_->bind();
+}
+
 void Renderer::addVolumesPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::string& prelude,
                               const Texture2D* depth, const std::vector<std::string>& reads) {
   if (!sceneEffects(*scene_).media) return;
-  if (!volumes_) volumes_ = std::make_unique<VolumesBuffer>();
   std::vector<std::string> inputs = reads;
   inputs.push_back("color" + tag);
   g.add({"volumes" + tag, inputs, {"color" + tag}, [this, &vp, prelude, depth] {
@@ -22,12 +27,11 @@ void Renderer::addVolumesPass(FrameGraph& g, Viewport& vp, const std::string& ta
                             prelude};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
-           volumes_->upload(*scene_);
            vp.colorFbo_.bind();
            p.use();
            TextureUnits units;
            bindTechnique(p, units, vp);
-           volumes_->bind();
+           bindVolumes();
            units.bind(p, "u_sceneDepth", depth->id());
            p.set("u_invViewProj", glm::inverse(proj_ * view_));
            p.set("u_cameraPosition", glm::vec3(glm::inverse(view_)[3]));

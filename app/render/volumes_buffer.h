@@ -1,6 +1,7 @@
 // The scene's participating media as the SSBO that shaders/common/volume_density.glsl reads
-// (binding 6): the deep map's compress pass and the camera view's volumes pass upload it the
-// same way. Re-uploaded only when the volumes change.
+// (binding 6). The Renderer owns one, bound for its volumes pass and for the parts through
+// PartContext::bindVolumes (the deep map's compress pass). Re-uploaded only when the volumes
+// change.
 #pragma once
 
 #include "scene/scene.h"

@@ -132,7 +132,6 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
 // Per texel: sort the list, merge it with the volumes ray-marched along the texel's light ray
 // into one transmittance function, compress it to at most deep.nodes nodes.
 void DeepState::compressPass(const PartContext& ctx) {
-  volumes_.upload(*ctx.scene);
   const ProgramSpec spec{"deep compress", {{GL_COMPUTE_SHADER, "passes/deep_compress.comp"}}, ctx.techniquePrelude};
   Program& p = ctx.shaders->get(spec);
   if (!p.valid()) return;
@@ -142,7 +141,7 @@ void DeepState::compressPass(const PartContext& ctx) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
-  volumes_.bind();
+  ctx.bindVolumes();
   glBindImageTexture(0, nodes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   glBindImageTexture(1, counts_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
   p.set("u_deepNodesOut", 0);  // image units (the layout bindings say the same)

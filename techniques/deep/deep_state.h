@@ -7,7 +7,6 @@
 
 #include "depth/depth_map_state.h"
 #include "gl/gl_util.h"
-#include "render/volumes_buffer.h"
 #include "technique.h"
 
 #include <string>
@@ -49,7 +48,6 @@ class DeepState : public RepresentationState {
   int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, layers_ = 1;
   Texture2D nodes_, counts_;
   GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, emptyFbo_ = 0;
-  VolumesBuffer volumes_;
   size_t bufferTexels_ = 0, bufferFragments_ = 0;
   unsigned overflow_[2] = {0, 0};
 };

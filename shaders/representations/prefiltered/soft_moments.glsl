@@ -26,27 +26,34 @@ const float kSoftMinBlockerFraction = 0.02;
 // the whole search box gives no blocker (a receiver not beyond the box's mean depth: one that
 // falls away behind its blockers, or blockers at several depths), the box is split into k x k
 // sub-boxes (k = 2^levels, at most 4) and each is estimated alone; the blocked fraction is their
-// mean and the blocker depth their blocked-weighted mean. A box with an estimate keeps it.
+// mean and the blocker gap their blocked-weighted mean. A box with an estimate keeps it.
+// Each sub-box is compared with the receiver's plane at its centre (sl_receiverPlane, set by the
+// visibility term when the module defines SL_RECEIVER_PLANE_ALWAYS), not with the pixel's own
+// depth: over a planar receiver the mean of a sub-box is that plane depth, so ground sloped in
+// the light's view no longer reads as its own blocker in the sub-boxes beyond the pixel.
+const float kSoftMinSubBoxTexels = 8.0;
 vec2 softBlocker(vec3 uvLayer, float width, float receiverDepth) {
   vec4 m[SL_MOMENT_TARGETS];
   momentsInBox(uvLayer, width, m);
   vec2 whole = representationBlocker(m, receiverDepth);
 #ifdef SL_SOFT_SUBDIVIDE_LEVELS
   int k = 1 << int(clamp(SL_SOFT_SUBDIVIDE_LEVELS + 0.5, 0.0, 2.0));
+  while (k > 1 && width / float(k) < kSoftMinSubBoxTexels) k /= 2;
   if (k == 1 || whole.x >= kSoftMinBlockerFraction) return whole;
   vec2 texel = 1.0 / vec2(textureSize(u_moments0, 0).xy);
-  float blocked = 0.0, weightedDepth = 0.0;
+  float blocked = 0.0, weightedGap = 0.0;
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
       if (i >= k || j >= k) continue;
       vec2 offset = (vec2(i, j) + 0.5 - 0.5 * float(k)) * (width / float(k)) * texel;
+      float planeDepth = clamp(receiverDepth + dot(sl_receiverPlane.zw, offset), 0.0, 1.0);
       momentsInBox(vec3(uvLayer.xy + offset, uvLayer.z), width / float(k), m);
-      vec2 b = representationBlocker(m, receiverDepth);
+      vec2 b = representationBlocker(m, planeDepth);
       if (!(b.x >= kSoftMinBlockerFraction)) continue;  // none here (or NaN)
       blocked += b.x;
-      weightedDepth += b.x * b.y;
+      weightedGap += b.x * max(planeDepth - b.y, 0.0);
     }
-  if (blocked > 0.0) return vec2(blocked / float(k * k), weightedDepth / blocked);
+  if (blocked > 0.0) return vec2(blocked / float(k * k), receiverDepth - weightedGap / blocked);
 #endif
   return whole;
 }

@@ -8,6 +8,9 @@ uniform float u_vssm_bleed;
 // 2^levels x 2^levels sub-boxes are estimated one by one (soft_moments.glsl).
 uniform float u_vssm_subdivide;
 #define SL_SOFT_SUBDIVIDE_LEVELS u_vssm_subdivide
+// The sub-boxes compare with the receiver's plane (its gradient in the map, whatever bias.mode).
+#define SL_RECEIVER_PLANE_ALWAYS
+#include "common/receiver_plane.glsl"
 
 void representationMoments(float z, out vec4 m[SL_MOMENT_TARGETS]) { m[0] = vec4(z, z * z, 0.0, 0.0); }
 
