@@ -31,6 +31,9 @@ const float kSoftMinBlockerFraction = 0.02;
 // visibility term when the module defines SL_RECEIVER_PLANE_ALWAYS), not with the pixel's own
 // depth: over a planar receiver the mean of a sub-box is that plane depth, so ground sloped in
 // the light's view no longer reads as its own blocker in the sub-boxes beyond the pixel.
+// Sub-boxes narrower than this are not used (the level drops): a box read from the 32-bit table
+// is a difference of sums over up to the whole map, and their rounding over a small box's area
+// moves the mean depth by more than the variance floor tolerates (false blockers in streaks).
 const float kSoftMinSubBoxTexels = 8.0;
 vec2 softBlocker(vec3 uvLayer, float width, float receiverDepth) {
   vec4 m[SL_MOMENT_TARGETS];
