@@ -9,7 +9,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   libglfw3-dev libimgui-dev libglm-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgtest-dev libembree-dev
-  xvfb xauth xdotool
+  xvfb xauth xdotool python3
   clang libclang-rt-dev
 )
 

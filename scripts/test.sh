@@ -5,9 +5,18 @@
 # and run it again; in between, the scene and tour loaders are fuzzed for 30 s each (scripts/fuzz.sh).
 # SHADOWLAB_SKIP_ASAN=1 / SHADOWLAB_SKIP_FUZZ=1 skip those locally; CI runs all three.
 # Arguments go to both ctest runs (e.g. -R Scene). Exits non-zero if either run fails.
+# The last lines are the stage breakdown (seconds per build and test stage) and the slowest tests.
+#
+# scripts/test.sh --fast [ctest args]: the check for every edit. Builds incrementally, then runs
+# the unit tier (no GL) and the GL smoke test (labels in tests/labels.cmake), nothing else.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
+
+fast=0
+if [ "${1:-}" = --fast ]; then
+  fast=1
+  shift
+fi
 
 logs="$(mktemp -d)"
 trap 'rm -rf "$logs"' EXIT
@@ -15,8 +24,47 @@ trap 'rm -rf "$logs"' EXIT
 # ctest's closing lines: "N% tests passed, M tests failed out of K", the time, failures.
 summary() { sed -n '/tests passed, /,$p' "$1"; }
 
+# Stage timing: "name seconds" lines, printed last.
+stage_start=$(date +%s)
+stage() {
+  local now
+  now=$(date +%s)
+  echo "$1 $((now - stage_start))" >>"$logs/stages.txt"
+  stage_start=$now
+}
+print_stages() {
+  echo "== time per stage (s) =="
+  awk '{ printf "  %-28s %6d\n", $1, $2; total += $2 } END { printf "  %-28s %6d\n", "total", total }' "$logs/stages.txt"
+}
+# The slowest tests of a ctest log, and those over the stage's limit (seconds).
+slowest() {
+  local log="$1" limit="$2"
+  echo "slowest tests:"
+  sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \([^ ]*\) .*[^0-9]\([0-9.]*\) sec$/\2 \1/p' "$log" | sort -rn |
+    head -n 8 | awk '{ printf "  %8.1f s  %s\n", $1, $2 }'
+  local over
+  over=$(sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \([^ ]*\) .*[^0-9]\([0-9.]*\) sec$/\2 \1/p' "$log" |
+    awk -v l="$limit" '$1 > l { n++ } END { print n + 0 }')
+  echo "tests over ${limit} s: $over"
+}
+
+scripts/setup.sh
+stage build
+
+if [ "$fast" = 1 ]; then
+  status=0
+  (cd build && ctest --output-on-failure -j2 -L 'unit|smoke' "$@") 2>&1 | tee "$logs/fast.txt" || status=$?
+  stage "fast tier (unit + smoke)"
+  echo
+  summary "$logs/fast.txt"
+  print_stages
+  exit "$status"
+fi
+
+
 normal=0
 (cd build && ctest --output-on-failure -j2 "$@") 2>&1 | tee "$logs/normal.txt" || normal=$?
+stage "tests (build/)"
 
 # The scene and tour loaders under libFuzzer, 30 s per target (scripts/fuzz.sh; builds
 # build-fuzz/, about 10 minutes on 2 cores the first time: the tour target links the whole
@@ -27,6 +75,7 @@ if [ "${SHADOWLAB_SKIP_FUZZ:-0}" != 1 ]; then
   echo "== libFuzzer: scene and tour loaders (build-fuzz/) =="
   fuzz=0
   scripts/fuzz.sh 30 2>&1 | tee "$logs/fuzz.txt" || fuzz=$?
+  stage "fuzz build + 3x30 s run"
 fi
 
 asan=skipped
@@ -35,6 +84,7 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
   echo "== AddressSanitizer + UBSan build (build-asan/) =="
   asan=0
   if cmake --preset asan >/dev/null && cmake --build --preset asan -j"$(nproc)"; then
+    stage "asan build"
     # The preset sets LP_NUM_THREADS=0 and MESA_SHADER_CACHE_DISABLE=true: llvmpipe rasterizes
     # in the calling thread and no shader-cache thread starts. With either kind of Mesa thread
     # alive at exit, LeakSanitizer's own thread tracer crashed ("Tracer caught signal 11", no
@@ -48,6 +98,7 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
     # Where every failure is a test that passed and then crashed LeakSanitizer's tracer (no
     # report of any sanitizer), the run counts as passed and says so for each such test.
     if [ "$asan" != 0 ] && scripts/asan-tracer-check.py build-asan | tee "$logs/asan-tracer.txt"; then asan=0; fi
+    stage "tests (build-asan/)"
   else
     echo "asan: configure or build failed" | tee "$logs/asan.txt"
     asan=1
@@ -68,5 +119,12 @@ else
 fi
 echo "== libFuzzer (build-fuzz/) =="
 if [ "$fuzz" = skipped ]; then echo "skipped (SHADOWLAB_SKIP_FUZZ=1)"; else tail -n 1 "$logs/fuzz.txt"; fi
+echo "== normal build: per-test times =="
+slowest "$logs/normal.txt" 30
+if [ "$asan" != skipped ]; then
+  echo "== AddressSanitizer + UBSan build: per-test times =="
+  slowest "$logs/asan.txt" 120
+fi
+print_stages
 if [ "$normal" != 0 ] || { [ "$asan" != 0 ] && [ "$asan" != skipped ]; } ||
   { [ "$fuzz" != 0 ] && [ "$fuzz" != skipped ]; }; then exit 1; fi

@@ -8,6 +8,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -76,42 +77,53 @@ Difference compare(const std::vector<unsigned char>& a, const unsigned char* b) 
   return d;
 }
 
-class Golden : public ::testing::TestWithParam<std::string> {};
+// One test per (scene, preset), so a failure names its case and each stays short.
+struct GoldenCase {
+  std::string scene, preset;
+};
 
-TEST_P(Golden, EveryPresetRendersAsBefore) {
+std::vector<GoldenCase> goldenCases() {
+  std::vector<GoldenCase> cases;
+  for (const char* scene : {"basic", "columns", "spotlight", "dueling-frusta"})
+    for (const Preset& preset : allPresets()) cases.push_back({scene, preset.id});
+  return cases;
+}
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
+
+TEST_P(Golden, RendersAsBefore) {
+  const GoldenCase& c = GetParam();
   test::GlHarness h;
-  const Scene scene = loadScene(GetParam(), defaultAssetsDir());
+  const Scene scene = loadScene(c.scene, defaultAssetsDir());
   h.renderer.setScene(scene);
   fs::create_directories(goldenDir());
-  for (const Preset& preset : allPresets()) {
-    SCOPED_TRACE(GetParam() + " " + preset.id);
-    const std::vector<unsigned char> image = renderPreset(h, scene, preset.id);
-    const fs::path file = goldenDir() / (GetParam() + "-" + preset.id + ".png");
-    if (updating()) {
-      ASSERT_TRUE(stbi_write_png(file.string().c_str(), kWidth, kHeight, 4, image.data(), kWidth * 4)) << file;
-      continue;
-    }
-    int w = 0, hgt = 0, channels = 0;
-    unsigned char* golden = stbi_load(file.string().c_str(), &w, &hgt, &channels, 4);
-    if (!golden) {
-      ADD_FAILURE() << "no golden image " << file
-                    << " (a new preset: render it with SHADOWLAB_UPDATE_GOLDENS=1, look at it, commit it)";
-      continue;
-    }
-    EXPECT_EQ(w, kWidth);
-    EXPECT_EQ(hgt, kHeight);
-    if (w == kWidth && hgt == kHeight) {
-      const Difference d = compare(image, golden);
-      EXPECT_LE(d.failing, kFailingFraction) << "max channel difference " << d.max << ", mean " << d.mean;
-      EXPECT_LE(d.mean, kMeanTolerance) << "failing fraction " << d.failing;
-    }
-    stbi_image_free(golden);
+  const std::vector<unsigned char> image = renderPreset(h, scene, c.preset);
+  const fs::path file = goldenDir() / (c.scene + "-" + c.preset + ".png");
+  if (updating()) {
+    ASSERT_TRUE(stbi_write_png(file.string().c_str(), kWidth, kHeight, 4, image.data(), kWidth * 4)) << file;
+    return;
   }
+  int w = 0, hgt = 0, channels = 0;
+  unsigned char* golden = stbi_load(file.string().c_str(), &w, &hgt, &channels, 4);
+  ASSERT_TRUE(golden) << "no golden image " << file
+                      << " (a new preset: render it with SHADOWLAB_UPDATE_GOLDENS=1, look at it, commit it)";
+  EXPECT_EQ(w, kWidth);
+  EXPECT_EQ(hgt, kHeight);
+  if (w == kWidth && hgt == kHeight) {
+    const Difference d = compare(image, golden);
+    EXPECT_LE(d.failing, kFailingFraction) << "max channel difference " << d.max << ", mean " << d.mean;
+    EXPECT_LE(d.mean, kMeanTolerance) << "failing fraction " << d.failing;
+  }
+  stbi_image_free(golden);
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, Golden, ::testing::Values("basic", "columns", "spotlight", "dueling-frusta"));
+INSTANTIATE_TEST_SUITE_P(Scenes, Golden, ::testing::ValuesIn(goldenCases()), [](const auto& info) {
+  std::string name = info.param.scene + "__" + info.param.preset;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+});
 
 }  // namespace
 }  // namespace sl

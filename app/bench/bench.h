@@ -83,6 +83,8 @@ struct BenchEntry {
 struct BenchResult {
   BenchOptions options;
   std::string sceneName, renderer, timer, date, cpu;
+  std::string commit, buildType;  // provenance: git commit of the source ("" outside a checkout), CMAKE_BUILD_TYPE
+  bool dirty = false;             // tracked files differed from that commit
   unsigned cores = 0;
   int referenceSamples = 0;
   int referencesTraced = 0, referencesCached = 0;

@@ -24,6 +24,9 @@ nlohmann::json benchToJson(const BenchResult& r) {
   j["machine"] = {{"cores", r.cores}, {"cpu", r.cpu}};
   j["date"] = r.date;
   j["command"] = r.options.commandLine;
+  j["provenance"] = {{"commit", r.commit.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.commit)},
+                     {"dirty", r.dirty},
+                     {"build_type", r.buildType}};
   j["warmup"] = r.options.warmup;
   // Entries are rendered in turn at each frame index; ms_ratio is relative to the first entry.
   j["timing_order"] = "interleaved";

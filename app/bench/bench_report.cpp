@@ -407,7 +407,9 @@ void writeBenchReport(const BenchResult& r, const std::string& dir) {
     << (r.timer == "cpu-fence" ? " (glFinish + steady clock around each pass)" : " (GL_TIME_ELAPSED queries)") << ", "
     << r.cores << " cores" << (r.cpu.empty() ? "" : " (" + xmlEscaped(r.cpu) + ")") << ", " << xmlEscaped(r.date)
     << ". Reference: Embree ray-traced visibility of the same G-buffer, " << r.referenceSamples
-    << " light sample(s) per pixel.<br>Command: <code>" << xmlEscaped(r.options.commandLine) << "</code></p>\n";
+    << " light sample(s) per pixel.<br>Command: <code>" << xmlEscaped(r.options.commandLine) << "</code><br>Source: "
+    << (r.commit.empty() ? std::string("not a git checkout") : "commit <code>" + xmlEscaped(r.commit) + "</code>")
+    << (r.dirty ? " with uncommitted changes" : "") << ", build type " << xmlEscaped(r.buildType) << "</p>\n";
 
   if (!r.shaderErrors.empty()) {
     s << "<p style='border:2px solid #c00;padding:8px;color:#900'><b>Shader errors during this run</b>: entries "

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <map>
@@ -56,6 +57,27 @@ std::string cpuModel() {
       if (c != std::string::npos) return line.substr(line.find_first_not_of(' ', c + 1));
     }
   return "";
+}
+
+// First line a shell command prints ("" when it fails): git, for the bench's provenance.
+std::string firstLineOf(const std::string& command) {
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buf[256];
+    if (fgets(buf, sizeof buf, pipe)) out = buf;
+    pclose(pipe);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+// Which source the numbers came from: the commit of the source folder, whether its tracked files
+// differed from it, and the build type the program was compiled with.
+void recordProvenance(BenchResult& r) {
+  const std::string git = "git -C '" + std::string(SHADOWLAB_SOURCE_DIR) + "' ";
+  r.commit = firstLineOf(git + "rev-parse HEAD 2>/dev/null");
+  r.dirty = !r.commit.empty() && !firstLineOf(git + "status --porcelain --untracked-files=no 2>/dev/null").empty();
+  r.buildType = SHADOWLAB_BUILD_TYPE;
 }
 
 // The frames every entry renders: a still camera and time (convergence), or the path at 30 fps.
@@ -242,6 +264,7 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
   r.date = isoDateUtc();
   r.cores = std::thread::hardware_concurrency();
   r.cpu = cpuModel();
+  recordProvenance(r);
 
   Scene scene = loadScene(o.scene, defaultAssetsDir());
   r.sceneName = scene.name;
