@@ -29,12 +29,12 @@ stage_start=$(date +%s)
 stage() {
   local now
   now=$(date +%s)
-  echo "$1 $((now - stage_start))" >>"$logs/stages.txt"
+  printf '%s\t%s\n' "$1" "$((now - stage_start))" >>"$logs/stages.txt"
   stage_start=$now
 }
 print_stages() {
   echo "== time per stage (s) =="
-  awk '{ printf "  %-28s %6d\n", $1, $2; total += $2 } END { printf "  %-28s %6d\n", "total", total }' "$logs/stages.txt"
+  awk -F'\t' '{ printf "  %-28s %6d\n", $1, $2; total += $2 } END { printf "  %-28s %6d\n", "total", total }' "$logs/stages.txt"
 }
 # The slowest tests of a ctest log, and those over the stage's limit (seconds).
 slowest() {
