@@ -24,7 +24,7 @@ set(_explorer_suites ExplorerSmoke TourPlayer)
 # Names that read the real scenes of ../shared/scenes-real (they skip where it is absent).
 set(_real_regex "Real|[Ss]ponza|/tree|/engine|\"tree\"|\"engine\"")
 # Measured over 15 s in the normal build (scripts/test.sh prints every test's time).
-set(_slow_regex "^MomentMap\\.EveryRepresentation|^MomentSoftGl\\.FiniteAndInRange|^EveryPreset")
+set(_slow_regex "^MomentMap\\.EveryRepresentation|^MomentSoftGl\\.FiniteAndInRange|(^|/)EveryPreset\\.")
 # (ctest's names of parameterised tests end in "  # GetParam() = ...": no '$' anchors.)
 set(_smoke_regex "^Render\\.OnlyShownViewsCostAPass|^Scenes/Golden\\.RendersAsBefore/basic__(standard|pcf|pixel_correct) ")
 
