@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Fuzzes the scene and tour loaders with libFuzzer: scripts/fuzz.sh [SECONDS per target, default 30].
-# Builds fuzz/ with clang, ASan and UBSan into build-fuzz/ (-DSHADOWLAB_FUZZ=ON: the
-# loaders), then runs each target for SECONDS from a corpus of the repository's scenes, the real
+# Builds the targets of fuzz/ in the ASan build (CMakePresets.json preset asan: clang, ASan and
+# UBSan, -DSHADOWLAB_FUZZ=ON; into build-asan/, on the core the ASan suite tests), then runs each
+# target for SECONDS from a corpus of the repository's scenes, the real
 # glTF files under $SHADOWLAB_SHARED/scenes-real (../shared by default, when present) and
 # tests/fuzz-regressions/. A crash, sanitizer report, leak, or an input slower than 10 s fails;
-# the input is kept under build-fuzz/artifacts/ (add it to tests/fuzz-regressions/<target>/ and a
+# the input is kept under build-asan/fuzz-artifacts/ (add it to tests/fuzz-regressions/<target>/ and a
 # test to tests/scene_fuzz_regression_test.cpp once fixed). Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,15 +16,16 @@ if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ not found (scripts/setup.sh installs clang and libclang-rt-dev)" >&2
   exit 1
 fi
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSHADOWLAB_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build-fuzz -j2
+TARGETS="scene_json_fuzz gltf_fuzz tour_fuzz"
+cmake --preset asan >/dev/null
+# shellcheck disable=SC2086 # one word per target
+cmake --build --preset asan --target $TARGETS
 
 shared="${SHADOWLAB_SHARED:-../shared}/scenes-real"
-mkdir -p build-fuzz/artifacts
-TARGETS="scene_json_fuzz gltf_fuzz tour_fuzz"
+mkdir -p build-asan/fuzz-artifacts
 failed=""
 for target in $TARGETS; do
-  corpus="build-fuzz/corpus/$target"
+  corpus="build-asan/fuzz-corpus/$target"
   mkdir -p "$corpus"
   seeds=()
   case "$target" in
@@ -40,17 +42,17 @@ for target in $TARGETS; do
   echo "== $target: ${seconds}s =="
   # -timeout: one input slower than 10 s is a hang; -rss_limit_mb: a 2 GiB input is a bug too.
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "build-fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=262144 \
-    -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$target-" "$corpus" "${seeds[@]}" \
-    2>"build-fuzz/$target.log"; then
+    "build-asan/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=262144 \
+    -print_final_stats=1 -artifact_prefix="build-asan/fuzz-artifacts/$target-" "$corpus" "${seeds[@]}" \
+    2>"build-asan/fuzz-$target.log"; then
     failed="$failed $target"
-    tail -n 40 "build-fuzz/$target.log"
+    tail -n 40 "build-asan/fuzz-$target.log"
   else
-    grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "build-fuzz/$target.log" || true
+    grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "build-asan/fuzz-$target.log" || true
   fi
 done
 if [ -n "$failed" ]; then
-  echo "fuzz: FAILED:$failed (inputs in build-fuzz/artifacts/, logs in build-fuzz/*.log)"
+  echo "fuzz: FAILED:$failed (inputs in build-asan/fuzz-artifacts/, logs in build-asan/fuzz-*.log)"
   exit 1
 fi
 echo "fuzz: no crash, hang or leak in $seconds s per target"

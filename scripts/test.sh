@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # One command: install what is missing, build, run the whole test suite (GPU tests run
 # headless on Mesa's llvmpipe through EGL; the window smoke test under Xvfb), then build the
-# same suite with AddressSanitizer + UBSan (CMakePresets.json, preset asan, into build-asan/)
-# and run it again; in between, the scene and tour loaders are fuzzed for 30 s each (scripts/fuzz.sh).
+# same suite with clang, AddressSanitizer + UBSan and the libFuzzer targets (CMakePresets.json,
+# preset asan, into build-asan/), run it again, and fuzz the scene, glTF and tour loaders for 30 s
+# each on that build (scripts/fuzz.sh).
 # SHADOWLAB_SKIP_ASAN=1 / SHADOWLAB_SKIP_FUZZ=1 skip those locally; CI runs all three.
 # Arguments go to both ctest runs (e.g. -R Scene). Exits non-zero if either run fails.
 # The last lines are the stage breakdown (seconds per build and test stage) and the slowest tests.
@@ -63,18 +64,6 @@ normal=0
 (cd build && ctest --output-on-failure -j2 "$@") 2>&1 | tee "$logs/normal.txt" || normal=$?
 stage "tests (build/)"
 
-# The scene and tour loaders under libFuzzer, 30 s per target (scripts/fuzz.sh; builds
-# build-fuzz/, about 10 minutes on 2 cores the first time: the tour target links the whole
-# core). SHADOWLAB_SKIP_FUZZ=1 skips it locally.
-fuzz=skipped
-if [ "${SHADOWLAB_SKIP_FUZZ:-0}" != 1 ]; then
-  echo
-  echo "== libFuzzer: scene and tour loaders (build-fuzz/) =="
-  fuzz=0
-  scripts/fuzz.sh 30 2>&1 | tee "$logs/fuzz.txt" || fuzz=$?
-  stage "fuzz build + 3x30 s run"
-fi
-
 asan=skipped
 if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
   echo
@@ -82,15 +71,16 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
   asan=0
   if cmake --preset asan >/dev/null && cmake --build --preset asan -j"$(nproc)"; then
     stage "asan build"
-    # The preset sets LP_NUM_THREADS=0 and MESA_SHADER_CACHE_DISABLE=true: llvmpipe rasterizes
-    # in the calling thread and no shader-cache thread starts. With either kind of Mesa thread
-    # alive at exit, LeakSanitizer's own thread tracer crashed ("Tracer caught signal 11", no
-    # leak reported) in one or two GL tests or explorer runs of most suite runs, a different one
-    # each time. Measured on the tests it hit: DeepGl.TexelCurveFollowsTheReference crashed it in
-    # 4 of 4 runs without rasterizer threads but with the cache thread, 0 of 4 without both; two
-    # others in 3 of 3 runs with rasterizer threads, 0 of 4 without. It still strikes
-    # ReferenceIndependentReal.EngineAgreesWithTheGridCaster every time (Embree's threads, it
-    # seems; cause not found), hence scripts/asan-tracer-check.py below.
+    # The preset sets LP_NUM_THREADS=0: llvmpipe rasterizes in the calling thread. With Mesa
+    # threads alive at exit, LeakSanitizer's own thread tracer crashes ("Tracer caught signal 11",
+    # no leak reported) in some GL tests, a different set each run: with rasterizer threads two
+    # tests crashed it in 3 of 3 runs, 0 of 4 without. Mesa's shader cache stays on (its thread
+    # too): without it every process compiles its programs with LLVM again, three quarters of a
+    # GL test's time (EveryPreset on sponza: 63 s without, 17 s with, normal build), and the
+    # programs the normal run above compiled are found in it. The cache thread crashed the tracer
+    # in DeepGl.TexelCurveFollowsTheReference in 4 of 4 runs, and
+    # ReferenceIndependentReal.EngineAgreesWithTheGridCaster crashes it every time (Embree's
+    # threads, it seems); hence scripts/asan-tracer-check.py below.
     ctest --preset asan "$@" 2>&1 | tee "$logs/asan.txt" || asan=$?
     # Where every failure is a test that passed and then crashed LeakSanitizer's tracer (no
     # report of any sanitizer), the run counts as passed and says so for each such test.
@@ -100,6 +90,17 @@ if [ "${SHADOWLAB_SKIP_ASAN:-0}" != 1 ]; then
     echo "asan: configure or build failed" | tee "$logs/asan.txt"
     asan=1
   fi
+fi
+
+# The loaders under libFuzzer, 30 s per target, on the ASan build (its fuzz targets were built
+# with it). SHADOWLAB_SKIP_FUZZ=1 skips it locally.
+fuzz=skipped
+if [ "${SHADOWLAB_SKIP_FUZZ:-0}" != 1 ]; then
+  echo
+  echo "== libFuzzer: scene, glTF and tour loaders (build-asan/) =="
+  fuzz=0
+  scripts/fuzz.sh 30 2>&1 | tee "$logs/fuzz.txt" || fuzz=$?
+  stage "fuzz (3 x 30 s)"
 fi
 
 # Both results last, the normal run's first, so neither scrolls away behind the other.
@@ -114,7 +115,7 @@ else
   grep -q 'tests passed, ' "$logs/asan.txt" || cat "$logs/asan.txt"
   [ ! -s "$logs/asan-tracer.txt" ] || cat "$logs/asan-tracer.txt"
 fi
-echo "== libFuzzer (build-fuzz/) =="
+echo "== libFuzzer (build-asan/) =="
 if [ "$fuzz" = skipped ]; then echo "skipped (SHADOWLAB_SKIP_FUZZ=1)"; else tail -n 1 "$logs/fuzz.txt"; fi
 echo "== normal build: per-test times =="
 slowest "$logs/normal.txt" 30

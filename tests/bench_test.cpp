@@ -23,9 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A fresh folder per test, also used as XDG_CACHE_HOME so tests never share a cache.
-struct TempDir {
+struct BenchTempDir {
   fs::path path;
-  TempDir() {
+  BenchTempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     path = fs::temp_directory_path() /
            ("shadowlab-bench-test-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
@@ -33,7 +33,7 @@ struct TempDir {
     fs::create_directories(path);
     ::setenv("XDG_CACHE_HOME", (path / "cache").c_str(), 1);
   }
-  ~TempDir() { fs::remove_all(path); }
+  ~BenchTempDir() { fs::remove_all(path); }
 };
 
 std::string readFile(const fs::path& p) {
@@ -43,16 +43,16 @@ std::string readFile(const fs::path& p) {
   return s.str();
 }
 
-struct RunResult {
+struct CommandResult {
   int code = -1;
   std::string out;  // stdout + stderr
 };
 
-RunResult run(const std::string& args, const fs::path& dir) {
+CommandResult runCommand(const std::string& args, const fs::path& dir) {
   const fs::path log = dir / "log.txt";
   std::string cmd = std::string("'") + SHADOWLAB_BINARY + "' " + args + " > '" + log.string() + "' 2>&1";
   int status = std::system(cmd.c_str());
-  RunResult r;
+  CommandResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = readFile(log);
   test::expectNoSanitizerReport(r.out, args);
@@ -62,10 +62,10 @@ RunResult run(const std::string& args, const fs::path& dir) {
 nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(readFile(p)); }
 
 TEST(Bench, JsonHasEveryFieldAndReport) {
-  TempDir t;
+  BenchTempDir t;
   const fs::path json = t.path / "b.json", report = t.path / "report";
-  RunResult r =
-      run("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
+  CommandResult r =
+      runCommand("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
           "--frames 3 --warmup 1 --json '" +
               json.string() + "' --report '" + report.string() + "'",
           t.path);
@@ -129,10 +129,10 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
 }
 
 TEST(Bench, PathMeasuresFlicker) {
-  TempDir t;
+  BenchTempDir t;
   const fs::path json = t.path / "b.json";
-  RunResult r =
-      run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
+  CommandResult r =
+      runCommand("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
           "--json '" +
               json.string() + "'",
           t.path);
@@ -148,7 +148,7 @@ TEST(Bench, PathMeasuresFlicker) {
   EXPECT_GE(f["excess"].get<double>(), 0.0);
   EXPECT_EQ(j["reference"]["traced"].get<int>() + j["reference"]["cached"].get<int>(), 4);
   // The per-frame references are cached: a second run traces nothing.
-  r = run("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 --json '" +
+  r = runCommand("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 --json '" +
               json.string() + "'",
           t.path);
   ASSERT_EQ(r.code, 0) << r.out;
@@ -159,7 +159,7 @@ TEST(Bench, PathMeasuresFlicker) {
 // those it gives when benched alone, along a moving camera and after an approach (where the
 // previous frame feeds reprojection and "camera moved").
 TEST(Bench, RenderingInTurnDoesNotChangeAnEntrysImages) {
-  TempDir t;
+  BenchTempDir t;
   BenchOptions o;
   o.scene = "basic";
   o.path = "orbit";
@@ -189,10 +189,10 @@ TEST(Bench, RenderingInTurnDoesNotChangeAnEntrysImages) {
 }
 
 TEST(Bench, SeesShadowMapResolution) {
-  TempDir t;
+  BenchTempDir t;
   const fs::path json = t.path / "b.json";
-  RunResult r =
-      run("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
+  CommandResult r =
+      runCommand("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
           "--frames 1 --warmup 1 --json '" +
               json.string() + "'",
           t.path);
@@ -207,21 +207,21 @@ TEST(Bench, SeesShadowMapResolution) {
 }
 
 TEST(Bench, BadKeysFailClearly) {
-  TempDir t;
+  BenchTempDir t;
   const std::string base = "bench --scene basic --techniques standard,pcf --size 64x36 --frames 1 --json '" +
                            (t.path / "b.json").string() + "' ";
-  RunResult r = run(base + "--sweep no.such.key=1,2", t.path);
+  CommandResult r = runCommand(base + "--sweep no.such.key=1,2", t.path);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("no.such.key"), std::string::npos) << r.out;
-  r = run(base + "--set bogus=3", t.path);
+  r = runCommand(base + "--set bogus=3", t.path);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("bogus"), std::string::npos) << r.out;
-  r = run(base + "--sweep shadowmap.size=256,99999", t.path);  // out of range
+  r = runCommand(base + "--sweep shadowmap.size=256,99999", t.path);  // out of range
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("shadowmap.size"), std::string::npos) << r.out;
-  r = run(base + "--sweep shadowmap.size", t.path);  // no values
+  r = runCommand(base + "--sweep shadowmap.size", t.path);  // no values
   EXPECT_NE(r.code, 0);
-  r = run(std::string("bench --scene basic --techniques nosuchtechnique --json '") + (t.path / "b.json").string() + "'",
+  r = runCommand(std::string("bench --scene basic --techniques nosuchtechnique --json '") + (t.path / "b.json").string() + "'",
           t.path);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("nosuchtechnique"), std::string::npos) << r.out;
@@ -229,24 +229,24 @@ TEST(Bench, BadKeysFailClearly) {
 }
 
 TEST(ReferenceCache, CommandCachesItsResult) {
-  TempDir t;
+  BenchTempDir t;
   const std::string args = "reference --scene basic --size 96x54 --out '";
-  RunResult a = run(args + (t.path / "a.png").string() + "'", t.path);
+  CommandResult a = runCommand(args + (t.path / "a.png").string() + "'", t.path);
   ASSERT_EQ(a.code, 0) << a.out;
   EXPECT_NE(a.out.find("traced in"), std::string::npos) << a.out;
-  RunResult b = run(args + (t.path / "b.png").string() + "'", t.path);
+  CommandResult b = runCommand(args + (t.path / "b.png").string() + "'", t.path);
   ASSERT_EQ(b.code, 0) << b.out;
   EXPECT_NE(b.out.find("reference: cached"), std::string::npos) << b.out;
   EXPECT_EQ(readFile(t.path / "a.png"), readFile(t.path / "b.png"));
   // Another camera is another key.
-  RunResult c =
-      run("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'", t.path);
+  CommandResult c =
+      runCommand("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'", t.path);
   ASSERT_EQ(c.code, 0) << c.out;
   EXPECT_NE(c.out.find("traced in"), std::string::npos) << c.out;
 }
 
 TEST(ReferenceCache, CacheReturnsIdenticalValuesInProcess) {
-  TempDir t;
+  BenchTempDir t;
   HeadlessContext context;
   ShaderLibrary shaders(defaultShaderDir());
   Renderer renderer(shaders);

@@ -10,14 +10,14 @@
 
 namespace sl {
 
-struct RunResult {
+struct CliRunResult {
   int code = -1;
   std::string output;
 };
 
-static RunResult run(const std::string& args) {
+static CliRunResult runCli(const std::string& args) {
   std::string cmd = std::string(SHADOWLAB_BINARY) + " " + args + " 2>&1";
-  RunResult r;
+  CliRunResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
   std::array<char, 4096> buf{};
@@ -29,7 +29,7 @@ static RunResult run(const std::string& args) {
 }
 
 TEST(Cli, ListShowsEveryPresetParameterAndScene) {
-  RunResult r = run("list");
+  CliRunResult r = runCli("list");
   ASSERT_EQ(r.code, 0) << r.output;
   for (const auto& p : allPresets()) EXPECT_NE(r.output.find(p.id), std::string::npos) << p.id;
   for (const auto& d : commonParams()) EXPECT_NE(r.output.find(d.key), std::string::npos) << d.key;
@@ -41,7 +41,7 @@ TEST(Cli, ListShowsEveryPresetParameterAndScene) {
 
 TEST(Cli, RenderWritesPngAndStats) {
   std::string png = ::testing::TempDir() + "cli_render.png", stats = ::testing::TempDir() + "cli_render.json";
-  RunResult r = run("render --scene basic --technique pcf --set shadowmap.size=512 --size 96x64 --frames 3 --out " +
+  CliRunResult r = runCli("render --scene basic --technique pcf --set shadowmap.size=512 --size 96x64 --frames 3 --out " +
                     png + " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
@@ -58,8 +58,8 @@ TEST(Cli, RenderWritesPngAndStats) {
 
 TEST(Cli, RenderStatsOfAVirtualMapCountAtlasAndPageTable) {
   std::string png = ::testing::TempDir() + "cli_virtual.png", stats = ::testing::TempDir() + "cli_virtual.json";
-  RunResult r =
-      run("render --scene basic --technique virtual --set virtual.size=4096 --set virtual.pool=512 "
+  CliRunResult r =
+      runCli("render --scene basic --technique virtual --set virtual.size=4096 --set virtual.pool=512 "
           "--size 96x64 --frames 2 --out " +
           png + " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
@@ -74,11 +74,11 @@ TEST(Cli, RenderStatsOfAVirtualMapCountAtlasAndPageTable) {
 
 TEST(Cli, RenderViewAddsItsPass) {
   std::string png = ::testing::TempDir() + "cli_view.png", stats = ::testing::TempDir() + "cli_view.json";
-  RunResult r = run("render --scene basic --view aliasing --size 64x40 --out " + png + " --stats " + stats);
+  CliRunResult r = runCli("render --scene basic --view aliasing --size 64x40 --out " + png + " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
   EXPECT_EQ(j["passes"].back(), "view.aliasing[0]");
-  r = run("render --scene basic --view nosuch --size 64x40 --out " + png);
+  r = runCli("render --scene basic --view nosuch --size 64x40 --out " + png);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("unknown view 'nosuch'"), std::string::npos) << r.output;
 }
@@ -100,20 +100,20 @@ TEST(Cli, BadInputGetsAClearErrorNamingTheFile) {
   };
   for (const auto& c : cases) {
     std::string path = test::writeTempFile(c.file, c.text);
-    RunResult r = run("render --scene " + path + out);
+    CliRunResult r = runCli("render --scene " + path + out);
     EXPECT_EQ(r.code, 1) << c.file << ": " << r.output;
     EXPECT_NE(r.output.find(c.file), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("Segmentation"), std::string::npos);
   }
-  RunResult r = run("render --scene basic --set shadowmap.size=99999" + out);
+  CliRunResult r = runCli("render --scene basic --set shadowmap.size=99999" + out);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("shadowmap.size"), std::string::npos) << r.output;
-  r = run("render --scene basic --technique nosuch" + out);
+  r = runCli("render --scene basic --technique nosuch" + out);
   EXPECT_NE(r.output.find("unknown technique 'nosuch'"), std::string::npos) << r.output;
-  r = run("render --scene basic --size 0x10 --out " + ::testing::TempDir() + "bad.png");
+  r = runCli("render --scene basic --size 0x10 --out " + ::testing::TempDir() + "bad.png");
   EXPECT_NE(r.output.find("WIDTHxHEIGHT"), std::string::npos) << r.output;
-  r = run("render --scene nosuchscene" + out);
+  r = runCli("render --scene nosuchscene" + out);
   EXPECT_NE(r.output.find("nosuchscene"), std::string::npos) << r.output;
 }
 

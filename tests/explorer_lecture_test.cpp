@@ -35,15 +35,15 @@ ExplorerState stateWith(const std::vector<std::string>& presets) {
 
 ParamSet& paramsOf(ExplorerState& state, int slot) { return state.slots[size_t(slot)].viewport->technique.params; }
 
-struct TempDir {
+struct LectureTempDir {
   fs::path path;
-  TempDir() {
+  LectureTempDir() {
     path = fs::temp_directory_path() / ("shadowlab-lecture-test-" + std::to_string(getpid()) + "-" +
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(path);
     fs::create_directories(path);
   }
-  ~TempDir() { fs::remove_all(path); }
+  ~LectureTempDir() { fs::remove_all(path); }
 };
 
 TEST(ExplorerLink, ALinkedParameterGoesToEveryViewportThatDeclaresIt) {
@@ -114,7 +114,7 @@ ExplorerSettings sampleSettings() {
 }
 
 TEST(ExplorerSettings, SaveAndLoadRoundTripAtomically) {
-  TempDir dir;
+  LectureTempDir dir;
   const std::string path = (dir.path / "sub" / "settings.json").string();
   saveSettings(path, sampleSettings());
   EXPECT_TRUE(fs::exists(path));
@@ -136,7 +136,7 @@ TEST(ExplorerSettings, SaveAndLoadRoundTripAtomically) {
 }
 
 TEST(ExplorerSettings, ACorruptFileIsReportedAndSetAsideNeverLost) {
-  TempDir dir;
+  LectureTempDir dir;
   for (const std::string text :
        {std::string("{\"scene\": \"basic\", \"viewports\": [ {\"preset\": "), std::string("[1, 2, 3]"),
         std::string("{\"ui_scale\": \"big\"}"),
@@ -289,7 +289,7 @@ TEST(ExplorerExports, ScreenshotFolderIsOutsideTheWorkingDirectory) {
 }
 
 TEST(ExplorerExports, TextFilesAreWrittenWithTheirFullPathAndBadFoldersNamed) {
-  TempDir dir;
+  LectureTempDir dir;
   const std::string path = writeTextFile((dir.path / "new").string(), "a.csv", "x,y\n");
   EXPECT_EQ(path, (dir.path / "new" / "a.csv").string());
   EXPECT_TRUE(fs::exists(path));

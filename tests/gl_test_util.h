@@ -105,6 +105,9 @@ inline ErrorMetrics visibilityError(const Scene& scene, const Frame& f, double t
   return visibilityError(ReferenceTracer(scene, time), f, options);
 }
 
+// The percentage of pixels whose visibility is wrong against the ray-traced reference.
+inline double wrongPct(const Scene& scene, const Frame& f) { return visibilityError(scene, f).wrongPixelPct; }
+
 // One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.
 inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset,
                         const std::vector<std::string>& sets, int w, int hgt) {

@@ -13,7 +13,7 @@ using test::GlHarness;
 
 namespace {
 
-constexpr int kW = 32, kH = 20;  // 640 pixels, most of them ground
+constexpr int kMetricW = 32, kMetricH = 20;  // 640 pixels, most of them ground
 
 // A ground plane under a directional light `elevationDeg` above the horizon, plus a box whose
 // shadow gives the techniques something to get wrong.
@@ -37,8 +37,8 @@ Scene groundScene(float elevationDeg) {
 FrameInput frameOf(const Scene& scene) {
   FrameInput in;
   in.camera = scene.cameras.front();
-  in.width = kW;
-  in.height = kH;
+  in.width = kMetricW;
+  in.height = kMetricH;
   return in;
 }
 

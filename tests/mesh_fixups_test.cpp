@@ -1,6 +1,7 @@
 // Loader fix-ups that the renderer relies on: finite unit normals from glTF files that carry
 // zero or NaN ones, and front faces that stay front faces under mirroring transforms (glTF
 // nodes and scene JSON objects and models).
+#include "tests/assets_dir.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene.h"
 
@@ -27,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 std::string writeFile(const std::string& name, const std::string& text) {
   static const fs::path dir = [] {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 
 namespace sl {
 
@@ -174,45 +175,77 @@ TEST(Render, OnlyShownViewsCostAPass) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-// One test per builtin scene (the whole product of scenes, presets and cameras is the longest
-// test of the suite: split, ctest runs the scenes side by side and each stays within its
-// timeout under the sanitizers).
-class EveryPreset : public ::testing::TestWithParam<std::string> {};
+// One test per (builtin scene, preset), every camera of the scene, every view of the preset
+// shown. ctest runs the tests of one scene in one process (CMakeLists.txt adds them as
+// EveryPreset/<scene>), so they share a GL context, the compiled programs and the loaded scene:
+// split into one process per test, the sweep loaded Sponza 123 times.
+struct ScenePreset {
+  std::string scene, preset;
+};
+void PrintTo(const ScenePreset& c, std::ostream* os) { *os << c.scene << " " << c.preset; }
+
+
+std::vector<ScenePreset> everyScenePreset() {
+  std::vector<ScenePreset> cases;
+  for (const std::string& scene : builtinSceneIds(defaultAssetsDir()))
+    for (const auto& preset : allPresets()) cases.push_back({scene, preset.id});
+  return cases;
+}
+
+class EveryPreset : public ::testing::TestWithParam<ScenePreset> {
+ protected:
+  static void SetUpTestSuite() { harness_ = std::make_unique<GlHarness>(); }
+  static void TearDownTestSuite() {
+    harness_->requireAllUniformsSet = false;  // checked by each test
+    harness_.reset();
+    sceneId_.clear();
+  }
+  // The scene of this test, loaded once per process; nullptr (and the test skipped) where it is
+  // built on shared/scenes-real and that folder is absent.
+  const Scene* scene(const std::string& id) {
+    if (sceneId_ != id) {
+      try {
+        scene_ = loadScene(id, defaultAssetsDir());
+      } catch (const SceneError& e) {
+        if (std::string(e.what()).find("scenes-real") != std::string::npos) return nullptr;
+        throw;
+      }
+      sceneId_ = id;
+      harness_->renderer.setScene(scene_);
+    }
+    return &scene_;
+  }
+  static inline std::unique_ptr<GlHarness> harness_;
+  static inline Scene scene_;
+  static inline std::string sceneId_;
+};
 
 TEST_P(EveryPreset, IsFiniteAndErrorFreeFromEveryCamera) {
-  const std::string id = GetParam();
-  Scene scene;
-  try {
-    scene = loadScene(id, defaultAssetsDir());
-  } catch (const SceneError& e) {
-    // Scenes built on shared/scenes-real are absent on machines without that folder.
-    if (std::string(e.what()).find("scenes-real") != std::string::npos) GTEST_SKIP() << e.what();
-    throw;
+  const auto& [id, preset] = GetParam();
+  const Scene* s = scene(id);
+  if (!s) GTEST_SKIP() << id << " needs shared/scenes-real";
+  GlHarness& h = *harness_;
+  resetGlDebugErrorCount();
+  Viewport vp(makeTechnique(preset, {"shadowmap.size=256"}));
+  vp.shownViews = vp.availableViews();
+  for (const auto& cam : s->cameras) {
+    FrameInput in;
+    in.camera = cam;
+    in.width = 64;
+    in.height = 40;
+    h.renderer.render(in, {&vp});
+    Frame f = test::readFrame(h.renderer, vp, 64, 40);
+    EXPECT_EQ(f.nonfinite(), 0) << id << " " << preset << " " << cam.name;
   }
-  GlHarness h;
-  h.renderer.setScene(scene);
-  for (const auto& preset : allPresets()) {
-    Viewport vp(makeTechnique(preset.id, {"shadowmap.size=256"}));
-    vp.shownViews = vp.availableViews();
-    for (const auto& cam : scene.cameras) {
-      FrameInput in;
-      in.camera = cam;
-      in.width = 64;
-      in.height = 40;
-      h.renderer.render(in, {&vp});
-      Frame f = test::readFrame(h.renderer, vp, 64, 40);
-      EXPECT_EQ(f.nonfinite(), 0) << id << " " << preset.id << " " << cam.name;
-    }
-  }
-  EXPECT_TRUE(h.shaders.errors().empty());
+  EXPECT_TRUE(h.shaders.errors().empty()) << h.shaders.errors().front();
+  for (const auto& report : h.shaders.checkUnsetUniforms()) ADD_FAILURE() << report;
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(BuiltinScenes, EveryPreset, ::testing::ValuesIn(builtinSceneIds(defaultAssetsDir())),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryPreset, ::testing::ValuesIn(everyScenePreset()), [](const auto& info) {
+  std::string name = info.param.scene + "__" + info.param.preset;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+});
 
 }  // namespace sl

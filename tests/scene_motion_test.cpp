@@ -1,5 +1,6 @@
 // Tests for scene motion: oscillating and rotating instances, the builtin moving scene, and the
 // motion envelope that light views fitted over all of a scene's motion use.
+#include "tests/assets_dir.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +12,7 @@
 namespace sl {
 namespace {
 
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 TEST(SceneMotion, OscillateAndRotate) {
   Motion none;

@@ -1,4 +1,5 @@
 // Tests for the scene module: JSON validation errors, glTF import, builtin scenes, motion, paths.
+#include "tests/assets_dir.h"
 #include "scene/scene.h"
 #include "scene/scene_effects.h"
 #include "scene/shapes.h"
@@ -27,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 fs::path tempDir() {
   static const fs::path dir = [] {

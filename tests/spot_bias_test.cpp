@@ -28,7 +28,7 @@ const char* kSpotScene = R"({
 
 // Evaluates, on a 16x16 grid in each of the planes y = 4 (in front of the light), 5 (through
 // it) and 6 (behind it), the layout's texel size and the normal-offset projection.
-const char* kProbe = R"(#include "common/bias.glsl"
+const char* kSpotBiasProbe = R"(#include "common/bias.glsl"
 layout(location = 0) out vec4 o_probe;
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
@@ -43,7 +43,7 @@ void main() {
 
 TEST(SpotBias, TexelSizeIsFiniteAndSaneAtAndBehindTheLightPlane) {
   const std::string dir = test::copyShaders("spot_bias_probe");
-  std::ofstream(std::filesystem::path(dir) / "probe_bias.frag") << kProbe;
+  std::ofstream(std::filesystem::path(dir) / "probe_bias.frag") << kSpotBiasProbe;
   GlHarness h(dir);
   Scene scene = loadScene(test::writeTempFile("spot_probe.json", kSpotScene), defaultAssetsDir());
   Technique t = makeTechnique("standard", {"shadowmap.size=256", "bias.mode=normal-offset"});

@@ -16,14 +16,14 @@
 namespace sl {
 namespace {
 
-struct RunResult {
+struct TourRunResult {
   int code = -1;
   std::string output;
 };
 
-RunResult run(const std::string& args) {
+TourRunResult runTour(const std::string& args) {
   const std::string cmd = std::string(SHADOWLAB_BINARY) + " " + args + " 2>&1";
-  RunResult r;
+  TourRunResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
   std::array<char, 4096> buf{};
@@ -51,7 +51,7 @@ TEST(FigureCli, StepWritesAPngOfAllPanels) {
   const std::string tour = writeTour("figure_two.json", kTwoSteps);
   const std::string png = ::testing::TempDir() + "figure_step1.png";
   std::filesystem::remove(png);
-  const RunResult r = run("figure --tour " + tour + " --step 1 --size 96x64 --out " + png);
+  const TourRunResult r = runTour("figure --tour " + tour + " --step 1 --size 96x64 --out " + png);
   ASSERT_EQ(r.code, 0) << r.output;
   int w = 0, h = 0, n = 0;
   ASSERT_TRUE(stbi_info(png.c_str(), &w, &h, &n)) << png;
@@ -64,7 +64,7 @@ TEST(FigureCli, AllWritesEveryStepAndThePlot) {
   const std::string tour = writeTour("figure_all.json", kTwoSteps);
   const std::string dir = ::testing::TempDir() + "figure_all";
   std::filesystem::remove_all(dir);
-  const RunResult r = run("figure --tour " + tour + " --all --size 80x48 --out " + dir);
+  const TourRunResult r = runTour("figure --tour " + tour + " --all --size 80x48 --out " + dir);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/step-01.png"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/step-02.png"));
@@ -78,15 +78,15 @@ TEST(FigureCli, AllWritesEveryStepAndThePlot) {
 
 TEST(FigureCli, BadInputIsAClearError) {
   const std::string tour = writeTour("figure_bad.json", kTwoSteps);
-  RunResult r = run("figure --tour " + tour + " --step 3 --out /tmp/never.png");
+  TourRunResult r = runTour("figure --tour " + tour + " --step 3 --out /tmp/never.png");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("has steps 1 to 2"), std::string::npos) << r.output;
   const std::string broken = writeTour("figure_broken.json", R"({"steps": [{"title": "x", "viewports": ["nope"]}]})");
-  r = run("figure --tour " + broken + " --step 1 --out /tmp/never.png");
+  r = runTour("figure --tour " + broken + " --step 1 --out /tmp/never.png");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("figure_broken.json: steps[0] (\"x\").viewports[0].technique"), std::string::npos)
       << r.output;
-  r = run("figure --tour " + tour + " --out /tmp/never.png");
+  r = runTour("figure --tour " + tour + " --out /tmp/never.png");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("--step N or --all"), std::string::npos) << r.output;
 }

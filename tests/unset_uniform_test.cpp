@@ -13,7 +13,7 @@ using test::GlHarness;
 
 namespace {
 
-const char* kProbe = R"(layout(location = 0) out vec4 o_color;
+const char* kUnsetUniformProbe = R"(layout(location = 0) out vec4 o_color;
 uniform float u_gain;
 uniform float u_offest;  // misspelt: C++ sets u_offset
 uniform sampler2D u_unboundTexture;
@@ -48,7 +48,7 @@ bool mentions(const std::vector<std::string>& reports, const std::string& a, con
 
 TEST(UnsetUniforms, MisspeltUniformIsReportedOnceNamingProgramAndUniform) {
   const std::string dir = test::copyShaders("unset_uniform_probe");
-  std::ofstream(std::filesystem::path(dir) / "probe_unset.frag") << kProbe;
+  std::ofstream(std::filesystem::path(dir) / "probe_unset.frag") << kUnsetUniformProbe;
   GlHarness h(dir);
   h.requireAllUniformsSet = false;  // this test leaves them unset on purpose
   Program& p = h.shaders.get(
@@ -82,7 +82,7 @@ TEST(UnsetUniforms, MisspeltUniformIsReportedOnceNamingProgramAndUniform) {
 
 TEST(UnsetUniforms, SettingEveryUniformReportsNothing) {
   const std::string dir = test::copyShaders("unset_uniform_probe_ok");
-  std::ofstream(std::filesystem::path(dir) / "probe_unset.frag") << kProbe;
+  std::ofstream(std::filesystem::path(dir) / "probe_unset.frag") << kUnsetUniformProbe;
   GlHarness h(dir);
   Program& p = h.shaders.get(
       {"probe", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_unset.frag"}}, ""});

@@ -10,7 +10,7 @@
 namespace sl {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kVirtualW = 160, kVirtualH = 90;
 
 struct VirtualRun {
   test::Frame frame;
@@ -28,18 +28,18 @@ VirtualRun render(test::GlHarness& h, const Scene& scene, const std::string& pre
   for (int f = 0; f < frames; ++f) {
     FrameInput in;
     in.camera = scene.cameras.front();
-    in.width = kW;
-    in.height = kH;
+    in.width = kVirtualW;
+    in.height = kVirtualH;
     h.renderer.render(in, {&vp});
   }
-  r.frame = test::readFrame(h.renderer, vp, kW, kH);
+  r.frame = test::readFrame(h.renderer, vp, kVirtualW, kVirtualH);
   r.status = vp.status();
   r.texels = vp.shadowTexels();
   for (const auto& p : h.renderer.stats().passes) r.passes.push_back(p.name);
   return r;
 }
 
-double wrongPct(const Scene& scene, const test::Frame& f) { return test::visibilityError(scene, f).wrongPixelPct; }
+using test::wrongPct;
 
 void expectSane(const test::Frame& f, const std::string& what) {
   EXPECT_EQ(f.nonfinite(), 0) << what;
@@ -86,8 +86,8 @@ TEST(VirtualShadowMap, MovingTheLightRedrawsThePages) {
   Viewport vp(makeTechnique("virtual"));
   FrameInput in;
   in.camera = scene.cameras.front();
-  in.width = kW;
-  in.height = kH;
+  in.width = kVirtualW;
+  in.height = kVirtualH;
   h.renderer.render(in, {&vp});
   h.renderer.render(in, {&vp});
   EXPECT_NE(vp.status().find("drawn 0,"), std::string::npos) << vp.status();
@@ -110,8 +110,8 @@ TEST(VirtualShadowMap, MovingObjectsRedrawOnlyThePagesUnderThem) {
     FrameInput in;
     in.camera = scene.cameras.front();
     in.time = t;
-    in.width = kW;
-    in.height = kH;
+    in.width = kVirtualW;
+    in.height = kVirtualH;
     h.renderer.render(in, {&vp});
   };
   auto number = [](const std::string& status, const std::string& key) {
@@ -140,7 +140,7 @@ TEST(VirtualShadowMap, MovingObjectsRedrawOnlyThePagesUnderThem) {
     ASSERT_EQ(moved[i], expected[i]) << "pixel " << i / 2;
     ASSERT_NEAR(moved[i + 1], expected[i + 1], 1e-3f) << "pixel " << i / 2;
   }
-  test::Frame f = test::readFrame(h.renderer, vp, kW, kH);
+  test::Frame f = test::readFrame(h.renderer, vp, kVirtualW, kVirtualH);
   expectSane(f, "moving");
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
@@ -158,7 +158,7 @@ TEST(VirtualShadowMap, TinyPoolIsReportedAndDegradesToCoarserPages) {
   // Coarser, so less accurate, but still a shadow map of the scene and not garbage.
   const double wrongFull = wrongPct(scene, full.frame), wrongTiny = wrongPct(scene, tiny.frame);
   const VirtualRun uniform = render(h, scene, "uniform", {"shadowmap.size=256"});
-  std::printf("columns %dx%d: virtual %.3f %%, pool of 4 tiles %.3f %%, uniform 256² %.3f %%\n", kW, kH, wrongFull,
+  std::printf("columns %dx%d: virtual %.3f %%, pool of 4 tiles %.3f %%, uniform 256² %.3f %%\n", kVirtualW, kVirtualH, wrongFull,
               wrongTiny, wrongPct(scene, uniform.frame));
   EXPECT_LT(wrongFull, wrongTiny);
   EXPECT_LE(wrongTiny, wrongPct(scene, uniform.frame) + 0.5);
@@ -174,7 +174,7 @@ TEST(VirtualShadowMap, AsAccurateAsAFocused4096MapOnColumnsAndTerrain) {
     const VirtualRun virt = render(h, scene, "virtual", {});
     expectSane(virt.frame, name);
     const double ws = wrongPct(scene, standard.frame), wv = wrongPct(scene, virt.frame);
-    std::printf("%s %dx%d: standard 4096² %.3f %% (%lld texels), virtual %.3f %% (%lld texels; %s)\n", name, kW, kH, ws,
+    std::printf("%s %dx%d: standard 4096² %.3f %% (%lld texels), virtual %.3f %% (%lld texels; %s)\n", name, kVirtualW, kVirtualH, ws,
                 standard.texels, wv, virt.texels, virt.status.c_str());
     EXPECT_LE(wv, ws + 0.05) << name;
     EXPECT_LE(virt.texels * 4, standard.texels + 4 * 65536) << name;
@@ -227,7 +227,7 @@ TEST(VirtualShadowMap, TiledRefinesOnlyNearTheLightDepthsDiscontinuities) {
   const VirtualRun tiled = render(h, scene, "tiled", {}, 2);
   const int d = requestedPages(distanceOnly.status), f = requestedPages(first.status);
   const int t = requestedPages(tiled.status);
-  std::printf("terrain %dx%d: tiled %d pages (%.3f %%), distance alone %d (%.3f %%)\n", kW, kH, t,
+  std::printf("terrain %dx%d: tiled %d pages (%.3f %%), distance alone %d (%.3f %%)\n", kVirtualW, kVirtualH, t,
               wrongPct(scene, tiled.frame), d, wrongPct(scene, distanceOnly.frame));
   EXPECT_EQ(f, d) << "no page drawn yet: no discontinuity known, every pixel keeps its level";
   EXPECT_LT(t, d) << tiled.status;
@@ -253,7 +253,7 @@ TEST(VirtualShadowMap, FittedCriterionFitsAQuadtreeOnTheCpu) {
   EXPECT_EQ(std::stoi(fitted.status.substr(at + 7)), requestedPages(fitted.status)) << "leaves are the pages asked for";
   EXPECT_GT(requestedPages(fitted.status), 0) << fitted.status;
   const double wrongMatched = wrongPct(scene, matched.frame), wrongFitted = wrongPct(scene, fitted.frame);
-  std::printf("columns %dx%d: virtual %.3f %% (%s)\n  fitted %.3f %% (%s)\n", kW, kH, wrongMatched,
+  std::printf("columns %dx%d: virtual %.3f %% (%s)\n  fitted %.3f %% (%s)\n", kVirtualW, kVirtualH, wrongMatched,
               matched.status.c_str(), wrongFitted, fitted.status.c_str());
   EXPECT_LE(wrongFitted, wrongMatched + 0.01);
   EXPECT_EQ(matched.status.find("quadtree"), std::string::npos) << "only the fitted criterion fits a quadtree";
@@ -276,20 +276,20 @@ TEST(VirtualShadowMap, RequestedResolutionViewFollowsTheCriterion) {
     vp.shownViews = {"requested-resolution"};
     FrameInput in;
     in.camera = scene.cameras.front();
-    in.width = kW;
-    in.height = kH;
+    in.width = kVirtualW;
+    in.height = kVirtualH;
     for (int f = 0; f < 2; ++f) h.renderer.render(in, {&vp});
     EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
     const Texture2D* view = vp.viewTexture("requested-resolution");
     return view ? view->readRgba8() : std::vector<unsigned char>{};
   };
   const std::vector<unsigned char> matched = requestedView("virtual"), tiled = requestedView("tiled");
-  ASSERT_EQ(matched.size(), size_t(4) * kW * kH);
+  ASSERT_EQ(matched.size(), size_t(4) * kVirtualW * kVirtualH);
   ASSERT_EQ(tiled.size(), matched.size());
   int differing = 0;
   for (size_t i = 0; i < matched.size(); i += 4)
     differing += std::abs(int(matched[i]) - int(tiled[i])) + std::abs(int(matched[i + 1]) - int(tiled[i + 1])) > 24;
-  EXPECT_GT(differing, kW * kH / 10) << "the view shows the same levels under both criteria";
+  EXPECT_GT(differing, kVirtualW * kVirtualH / 10) << "the view shows the same levels under both criteria";
 }
 
 // Per-page instance culling (shadowmap.cull_instances): an instance outside a page's square is

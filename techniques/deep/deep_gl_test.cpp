@@ -1,6 +1,7 @@
 // Deep shadow maps on the GPU: the density matches the C++ one, deep passes run only where
 // there are semi-transparent casters, transmittance matches cases computed by hand and the
 // reference, and bad cases (overflow, opacity 0/1, thin strands) stay finite and in [0,1].
+#include "tests/assets_dir.h"
 #include "deep/deep_curve.h"
 #include "deep/deep_state.h"
 #include "scene/volume_density.h"
@@ -18,10 +19,10 @@
 namespace sl {
 namespace {
 
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 // The file name carries the pid: ctest runs these tests in parallel processes.
-Scene sceneFrom(const std::string& json) {
+Scene deepSceneFrom(const std::string& json) {
   return loadScene(test::writeTempFile("deep_gl_" + std::to_string(::getpid()) + ".json", json), kAssets);
 }
 
@@ -99,7 +100,7 @@ TEST(DeepGl, TransmittanceByHand) {
   test::GlHarness h;
   // Constant-density slab 0.5 thick, sigma 2: exp(-1); the camera looks down on the ground
   // below it (the volume is not drawn).
-  const Scene box = sceneFrom(
+  const Scene box = deepSceneFrom(
       R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]}],"volumes":[{"shape":"box","center":[0,1,0],"size":[2,0.5,2],"extinction":2}],)" +
       kTopCamera + "}");
   EXPECT_NEAR(centreValue(test::renderOnce(h, box, "deep", {"deep.size=64"}, 32, 32)), std::exp(-1.0f), 0.02f);
@@ -108,7 +109,7 @@ TEST(DeepGl, TransmittanceByHand) {
   for (int k = 1; k <= 3; ++k)
     high += R"(,{"shape":"plane","size":[2,2],"opacity":0.4,"transform":{"translate":[0,)" +
             std::to_string(3.2 + 0.2 * k) + ",0]}}";
-  const Scene above = sceneFrom(high + "]," + kTopCamera + "}");
+  const Scene above = deepSceneFrom(high + "]," + kTopCamera + "}");
   EXPECT_NEAR(centreValue(test::renderOnce(h, above, "deep", {"deep.size=64"}, 32, 32)), 0.216f, 0.02f);
 }
 
@@ -117,20 +118,20 @@ TEST(DeepGl, ExtremesStayFiniteAndInRange) {
   test::GlHarness h;
   const auto ground = std::string(R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]})");
   const auto sheet = [&](const char* opacity) {
-    return sceneFrom(ground + R"(,{"shape":"plane","size":[2,2],"opacity":)" + opacity +
+    return deepSceneFrom(ground + R"(,{"shape":"plane","size":[2,2],"opacity":)" + opacity +
                      R"(,"transform":{"translate":[0,3.5,0]}}],)" + kTopCamera + "}");
   };
   EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
   EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("1"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
   const auto medium = [&](const char* sigma) {
-    return sceneFrom(ground + R"(],"volumes":[{"shape":"sphere","center":[0,1,0],"radius":0.5,"extinction":)" + sigma +
+    return deepSceneFrom(ground + R"(],"volumes":[{"shape":"sphere","center":[0,1,0],"radius":0.5,"extinction":)" + sigma +
                      "}]," + kTopCamera + "}");
   };
   EXPECT_NEAR(centreValue(test::renderOnce(h, medium("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
   EXPECT_NEAR(centreValue(test::renderOnce(h, medium("1000000"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
   // 0.2 mm strands on a 64² map over a 4 m ground: most texels miss them.
   const Scene thin =
-      sceneFrom(ground + R"(,{"name":"ball","shape":"sphere","radius":0.3,"transform":{"translate":[0,1,0]}}],)" +
+      deepSceneFrom(ground + R"(,{"name":"ball","shape":"sphere","radius":0.3,"transform":{"translate":[0,1,0]}}],)" +
                 R"("hair":[{"on":"ball","count":300,"width":0.0002,"length":0.4}],)" + kTopCamera + "}");
   const test::Frame f = test::renderOnce(h, thin, "deep", {"deep.size=64"}, 48, 48);
   EXPECT_EQ(f.nonfinite(), 0);
@@ -179,7 +180,7 @@ TEST(DeepGl, TexelCurveFollowsTheReference) {
   for (int k = 1; k <= 3; ++k)
     high += R"(,{"shape":"plane","size":[2,2],"opacity":0.4,"transform":{"translate":[0,)" +
             std::to_string(3.2 + 0.2 * k) + ",0]}}";
-  const Scene scene = sceneFrom(high + "]," + kTopCamera + "}");
+  const Scene scene = deepSceneFrom(high + "]," + kTopCamera + "}");
   h.renderer.setScene(scene);
   Viewport vp(makeTechnique("deep", {"deep.size=64"}));
   FrameInput in;

@@ -1,5 +1,6 @@
 // The scene side of deep shadow maps: hair and volume validation, scene effects, the density
 // function and the reference's transmittance on cases computed by hand.
+#include "tests/assets_dir.h"
 #include "reference/reference.h"
 #include "scene/scene.h"
 #include "scene/scene_effects.h"
@@ -18,7 +19,7 @@ namespace sl {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 std::string writeScene(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / ("shadowlab_deep_test_" + std::to_string(::getpid()));

@@ -2,6 +2,7 @@
 // looking straight down through a constant slab gets the single-scattering colour computed by
 // hand, lit through the technique's own visibility: `standard` lights the medium fully, `deep`
 // by its own transmittance.
+#include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 
 #include <gtest/gtest.h>
@@ -14,10 +15,10 @@
 namespace sl {
 namespace {
 
-const std::string kAssets = std::string(SHADOWLAB_SOURCE_DIR) + "/assets";
+using test::kAssets;
 
 // The file name carries the pid: ctest runs these tests in parallel processes.
-Scene sceneFrom(const std::string& json) {
+Scene volumesSceneFrom(const std::string& json) {
   return loadScene(test::writeTempFile("volumes_gl_" + std::to_string(::getpid()) + ".json", json), kAssets);
 }
 
@@ -62,8 +63,8 @@ TEST(VolumesPass, SlabColourByHand) {
   const std::string camera =
       R"("cameras":[{"position":[0.01,3,0.02],"target":[0,0,0],"fov_deg":20}],"light":{"type":"directional","direction":[0,-1,0]})";
   const std::string ground = R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]}],)";
-  const Scene bare = sceneFrom(ground + camera + "}");
-  const Scene slab = sceneFrom(
+  const Scene bare = volumesSceneFrom(ground + camera + "}");
+  const Scene slab = volumesSceneFrom(
       ground + R"("volumes":[{"shape":"box","center":[0,1,0],"size":[2,0.5,2],"extinction":2}],)" + camera + "}");
   // The ground fully lit: sqrt(albedo) (shading.glsl: sqrt(albedo * (0.18 + 0.82 * direct))).
   const float lit = centreColour(h, bare, "standard", {});

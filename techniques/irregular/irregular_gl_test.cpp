@@ -14,7 +14,7 @@
 namespace sl {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kIrregularW = 160, kIrregularH = 90;
 
 struct Result {
   ErrorMetrics error;
@@ -49,11 +49,11 @@ test::Frame renderWith(test::GlHarness& h, const Scene& scene, Viewport& vp, con
   FrameInput in;
   in.camera = cam;
   in.time = time;
-  in.width = kW;
-  in.height = kH;
+  in.width = kIrregularW;
+  in.height = kIrregularH;
   for (int i = 0; i < frames; ++i) h.renderer.render(in, {&vp});
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return test::readFrame(h.renderer, vp, kW, kH);
+  return test::readFrame(h.renderer, vp, kIrregularW, kIrregularH);
 }
 
 std::string sharedDir() {

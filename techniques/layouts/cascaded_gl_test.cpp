@@ -24,7 +24,7 @@ Frame renderWith(GlHarness& h, const Scene& scene, const Camera& cam, Viewport& 
   return test::readFrame(h.renderer, vp, w, hgt);
 }
 
-double wrongPct(const Scene& scene, const Frame& f) { return test::visibilityError(scene, f).wrongPixelPct; }
+using test::wrongPct;
 
 TEST(CascadedGl, EveryVariantIsFiniteInRangeAndErrorFree) {
   GlHarness h;

@@ -9,7 +9,7 @@
 namespace sl {
 namespace {
 
-double wrongPct(const Scene& scene, const test::Frame& f) { return test::visibilityError(scene, f).wrongPixelPct; }
+using test::wrongPct;
 
 // Runs `preset` with `sets` on the case; checks the frame and returns its wrong pixels.
 double runCase(test::GlHarness& h, const Scene& scene, const Camera& cam, const std::string& preset,

@@ -14,7 +14,7 @@ namespace {
 
 using test::layoutFor;
 
-glm::vec3 ndc(const LightSpace& ls, const glm::vec3& p) {
+glm::vec3 tsmNdc(const LightSpace& ls, const glm::vec3& p) {
   glm::vec4 c = ls.primary().viewProj * glm::vec4(p, 1.0f);
   EXPECT_GT(c.w, 0.0f);
   return glm::vec3(c) / c.w;
@@ -28,13 +28,13 @@ TEST(Tsm, TrapezoidCoversEveryVisibleReceiverAndItsCasters) {
       const LightView& v = ls.primary();
       const glm::vec3 L = glm::normalize(scene.light.direction);
       for (const auto& p : clipFrustumToBox(cameraView(cam), cameraProjection(cam, 16.0f / 9.0f), scene.boundsAt(0))) {
-        glm::vec3 q = ndc(ls, p);
+        glm::vec3 q = tsmNdc(ls, p);
         EXPECT_LE(std::abs(q.x), 1.0001f) << id << "/" << cam.name;
         EXPECT_LE(std::abs(q.y), 1.0001f) << id << "/" << cam.name;
         EXPECT_LE(std::abs(q.z), 1.0001f) << id << "/" << cam.name;
         // A caster toward the light on the same ray must not be clipped either.
         const float lightDepth = -(v.view * glm::vec4(p, 1.0f)).z;
-        glm::vec3 caster = ndc(ls, p - L * (lightDepth - v.nearPlane) * 0.999f);
+        glm::vec3 caster = tsmNdc(ls, p - L * (lightDepth - v.nearPlane) * 0.999f);
         EXPECT_LE(std::abs(caster.z), 1.0001f) << id << "/" << cam.name;
       }
     }
@@ -77,7 +77,7 @@ TEST(Tsm, FocusLineLandsAtItsShareOfTheMapAndNearTexelsAreDenser) {
     const glm::vec3 focus = cam.position + dir * (std::max(zMin, 0.0f) + 0.3f * (zMax - std::max(zMin, 0.0f)));
     // Along the centre line the map runs from the top edge (near) to the base (far): the focus
     // point's share of that run.
-    const glm::vec2 a = glm::vec2(ndc(ls, nearC)), b = glm::vec2(ndc(ls, farC)), f = glm::vec2(ndc(ls, focus));
+    const glm::vec2 a = glm::vec2(tsmNdc(ls, nearC)), b = glm::vec2(tsmNdc(ls, farC)), f = glm::vec2(tsmNdc(ls, focus));
     EXPECT_NEAR((f.y + 1.0f) * 0.5f, share, 0.03f) << share;
     EXPECT_LT(a.y, f.y);
     EXPECT_LT(f.y, b.y);
@@ -86,7 +86,7 @@ TEST(Tsm, FocusLineLandsAtItsShareOfTheMapAndNearTexelsAreDenser) {
   const glm::vec3 dir = glm::normalize(glm::vec3(cam.target.x - cam.position.x, 0.0f, cam.target.z - cam.position.z));
   const glm::vec3 p = glm::vec3(cam.position.x, 0.0f, cam.position.z) + dir * 3.0f;
   auto density = [&](const LightSpace& ls) {
-    return glm::length(glm::vec2(ndc(ls, p + glm::vec3(0.1f, 0, 0.1f))) - glm::vec2(ndc(ls, p)));
+    return glm::length(glm::vec2(tsmNdc(ls, p + glm::vec3(0.1f, 0, 0.1f))) - glm::vec2(tsmNdc(ls, p)));
   };
   EXPECT_GT(density(trap), 2.0f * density(focused));
 }

@@ -13,7 +13,7 @@
 namespace sl {
 namespace {
 
-double wrongPct(const Scene& scene, const test::Frame& f) { return test::visibilityError(scene, f).wrongPixelPct; }
+using test::wrongPct;
 
 void expectSane(const test::Frame& f, const std::string& what) {
   EXPECT_EQ(f.nonfinite(), 0) << what;

@@ -17,27 +17,50 @@ Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
 
 const char* kSoftMomentPresets[] = {"vssm", "convolution-soft"};
 
-TEST(MomentSoftGl, FiniteAndInRangeFromPointToHugeLights) {
+// One test per (light case, preset): a failure names its case, and none runs long under the
+// sanitizers.
+struct SoftMomentCase {
+  test::LightCase light;
+  const char* preset;
+};
+void PrintTo(const SoftMomentCase& c, std::ostream* os) { *os << c.light.scene << " radius " << c.light.radius << " " << c.preset; }
+
+
+std::vector<SoftMomentCase> softMomentCases() {
+  std::vector<SoftMomentCase> cases;
+  for (const test::LightCase& c : test::softLightCases())
+    for (const char* preset : kSoftMomentPresets) cases.push_back({c, preset});
+  return cases;
+}
+
+class MomentSoftLights : public ::testing::TestWithParam<SoftMomentCase> {};
+
+TEST_P(MomentSoftLights, FiniteAndInRangeFromPointToHugeLights) {
+  const SoftMomentCase& c = GetParam();
   GlHarness h;
-  for (const test::LightCase& c : test::softLightCases()) {
-    const Scene scene = test::loadLightCase(c);
-    h.renderer.setScene(scene);
-    for (const char* preset : kSoftMomentPresets)
-      for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
-               {"focused", "none"}, {"cascaded", "none"}, {"uniform", "pixel-correct"}}) {
-        // The preset's representation and overrides over each layout.
-        const Preset* p = findPreset(preset);
-        std::vector<std::string> sets = p->overrides;
-        sets.push_back("shadowmap.size=128");
-        Viewport vp(test::compose(layout, p->representation, accumulation, sets));
-        vp.shownViews = vp.availableViews();
-        test::expectFiniteShadowAndLight(render(h, scene, vp, 64, 40), std::string(c.scene) + " radius " +
-                                                                           std::to_string(c.radius) + " " + preset +
-                                                                           " " + layout + " " + accumulation);
-      }
+  const Scene scene = test::loadLightCase(c.light);
+  h.renderer.setScene(scene);
+  for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
+           {"focused", "none"}, {"cascaded", "none"}, {"uniform", "pixel-correct"}}) {
+    // The preset's representation and overrides over each layout.
+    const Preset* p = findPreset(c.preset);
+    std::vector<std::string> sets = p->overrides;
+    sets.push_back("shadowmap.size=128");
+    Viewport vp(test::compose(layout, p->representation, accumulation, sets));
+    vp.shownViews = vp.availableViews();
+    test::expectFiniteShadowAndLight(render(h, scene, vp, 64, 40), std::string(c.light.scene) + " radius " +
+                                                                       std::to_string(c.light.radius) + " " +
+                                                                       c.preset + " " + layout + " " + accumulation);
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Cases, MomentSoftLights, ::testing::ValuesIn(softMomentCases()), [](const auto& info) {
+  const SoftMomentCase& c = info.param;
+  std::string name = std::string(c.light.scene) + "__" + c.preset + "__" + std::to_string(info.index);
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+});
 
 TEST(MomentSoftGl, StatusNamesTheLightAndTheTableIsTheOnlyExtraPass) {
   GlHarness h;

@@ -246,33 +246,54 @@ long long outsideUnit(const test::Frame& f) {
 
 // Every representation, every filter method and format, and the two layouts and accumulations
 // that stress it (LiSPSM: perspective depth; pixel-correct: jittered maps) on scenes with thin
-// casters and depth discontinuities.
-TEST(MomentMap, EveryRepresentationRendersFiniteVisibilityEverywhere) {
-  GlHarness h;
-  for (const std::string sceneId : {"thin-casters", "spotlight", "columns"}) {
-    Scene scene = loadScene(sceneId, defaultAssetsDir());
-    h.renderer.setScene(scene);
+// casters and depth discontinuities. One test per (scene, representation): a failure names both.
+struct SceneAndRepresentation {
+  std::string scene, representation;
+};
+void PrintTo(const SceneAndRepresentation& c, std::ostream* os) { *os << c.scene << " " << c.representation; }
+
+
+std::vector<SceneAndRepresentation> sceneRepresentationCases() {
+  std::vector<SceneAndRepresentation> cases;
+  for (const std::string scene : {"thin-casters", "spotlight", "columns"})
     for (const std::string rep : {"vsm", "esm", "evsm", "gaussian", "ewgf", "msm", "convolution", "lvsm"})
-      for (const std::string method : {"blur", "mipmap", "sat"})
-        for (const std::string format : {"float16", "float32"})
-          for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
-                   {"focused", "none"}, {"lispsm", "none"}, {"uniform", "pixel-correct"}}) {
-            if (method == "sat" && rep == "esm") continue;  // not offered: log-space averages are no sums
-            Viewport vp(compose(layout, rep, accumulation,
-                                {"shadowmap.size=128", "filter.method=" + method, "filter.format=" + format}));
-            FrameInput in;
-            in.camera = scene.cameras.front();
-            in.width = 48;
-            in.height = 32;
-            h.renderer.render(in, {&vp});
-            test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
-            EXPECT_EQ(outsideUnit(f), 0) << sceneId << " " << rep << " " << method << " " << format << " " << layout
-                                         << " " << accumulation;
-          }
-  }
+      cases.push_back({scene, rep});
+  return cases;
+}
+
+class MomentMapEverywhere : public ::testing::TestWithParam<SceneAndRepresentation> {};
+
+TEST_P(MomentMapEverywhere, RendersFiniteVisibilityForEveryMethodFormatAndLayout) {
+  const auto& [sceneId, rep] = GetParam();
+  GlHarness h;
+  Scene scene = loadScene(sceneId, defaultAssetsDir());
+  h.renderer.setScene(scene);
+  for (const std::string method : {"blur", "mipmap", "sat"})
+    for (const std::string format : {"float16", "float32"})
+      for (const auto& [layout, accumulation] : std::vector<std::pair<std::string, std::string>>{
+               {"focused", "none"}, {"lispsm", "none"}, {"uniform", "pixel-correct"}}) {
+        if (method == "sat" && rep == "esm") continue;  // not offered: log-space averages are no sums
+        Viewport vp(compose(layout, rep, accumulation,
+                            {"shadowmap.size=128", "filter.method=" + method, "filter.format=" + format}));
+        FrameInput in;
+        in.camera = scene.cameras.front();
+        in.width = 48;
+        in.height = 32;
+        h.renderer.render(in, {&vp});
+        test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
+        EXPECT_EQ(outsideUnit(f), 0) << sceneId << " " << rep << " " << method << " " << format << " " << layout
+                                     << " " << accumulation;
+      }
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Cases, MomentMapEverywhere, ::testing::ValuesIn(sceneRepresentationCases()),
+                         [](const auto& info) {
+                           std::string name = info.param.scene + "__" + info.param.representation;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace sl

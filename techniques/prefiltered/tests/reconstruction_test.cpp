@@ -33,7 +33,7 @@ std::vector<float> hardDepths() {
 
 // Every pair of hard depths, three coverages, and receivers at both depths (exactly at the
 // occluder: the case of a receiver shadowing itself) and across [0, 1].
-std::vector<MomentCase> hardCases() {
+std::vector<MomentCase> momentHardCases() {
   std::vector<MomentCase> cases;
   const std::vector<float> depths = hardDepths();
   for (float z1 : depths)
@@ -62,7 +62,7 @@ void expectFiniteUnit(const std::vector<float>& v, const std::vector<MomentCase>
 TEST(PrefilteredReconstruction, FiniteAndWithinUnitIntervalInTheHardCases) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
-  const std::vector<MomentCase> cases = hardCases();
+  const std::vector<MomentCase> cases = momentHardCases();
   for (const auto& preset : kPresets)
     for (const std::string format : {"float16", "float32"}) {
       std::vector<std::string> sets = {"filter.format=" + format};
@@ -78,7 +78,7 @@ TEST(PrefilteredReconstruction, FiniteAndWithinUnitIntervalInTheHardCases) {
 TEST(PrefilteredReconstruction, SoftFiniteAndWithinUnitIntervalInTheHardCases) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
-  const std::vector<MomentCase> cases = hardCases();
+  const std::vector<MomentCase> cases = momentHardCases();
   std::vector<std::pair<std::string, std::string>> runs = {{"vssm", "vssm.bleed=0"}, {"vssm", "vssm.bleed=0.5"}};
   for (int m = 1; m <= 7; ++m) runs.push_back({"convolution-soft", "csmz.terms=" + std::to_string(m)});
   for (const auto& [preset, set] : runs) {
@@ -129,7 +129,7 @@ TEST(PrefilteredReconstruction, SoftBlockerDepthOfOnePlanarBlockerOverAPlanarRec
 TEST(PrefilteredReconstruction, ExponentsAtAndBeyondWhatTheFormatHolds) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
-  const std::vector<MomentCase> cases = hardCases();
+  const std::vector<MomentCase> cases = momentHardCases();
   for (const std::string format : {"float16", "float32"}) {
     for (const std::string c : {"5.54", "42", "100"}) {
       for (const auto& [preset, keys] : std::vector<std::pair<std::string, std::vector<std::string>>>{
@@ -151,7 +151,7 @@ TEST(PrefilteredReconstruction, ExponentsAtAndBeyondWhatTheFormatHolds) {
 TEST(PrefilteredReconstruction, ConvolutionFiniteForEveryNumberOfTerms) {
   test::GlHarness h(test::probeShaderDir());
   test::MomentProbe probe(h);
-  const std::vector<MomentCase> cases = hardCases();
+  const std::vector<MomentCase> cases = momentHardCases();
   for (int m = 1; m <= 16; ++m)
     for (const std::string format : {"float16", "float32"})
       expectFiniteUnit(
