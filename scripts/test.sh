@@ -49,6 +49,10 @@ slowest() {
 scripts/setup.sh
 stage build
 
+# Mesa's shader cache in the build folder, not the home directory: a fresh clone starts cold (as
+# on CI), and the ASan run below finds the programs the normal run compiled.
+export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-$PWD/build/mesa-shader-cache}"
+
 if [ "$fast" = 1 ]; then
   status=0
   (cd build && ctest --output-on-failure -j2 -L 'unit|smoke' "$@") 2>&1 | tee "$logs/fast.txt" || status=$?

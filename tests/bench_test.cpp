@@ -64,11 +64,11 @@ nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(readFi
 TEST(Bench, JsonHasEveryFieldAndReport) {
   BenchTempDir t;
   const fs::path json = t.path / "b.json", report = t.path / "report";
-  CommandResult r =
-      runCommand("bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
-          "--frames 3 --warmup 1 --json '" +
-              json.string() + "' --report '" + report.string() + "'",
-          t.path);
+  CommandResult r = runCommand(
+      "bench --scene basic --techniques standard,pcf --sweep shadowmap.size=256,512 --size 160x90 "
+      "--frames 3 --warmup 1 --json '" +
+          json.string() + "' --report '" + report.string() + "'",
+      t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   for (const char* k : {"scene", "size", "camera", "renderer", "timer", "machine", "date", "command", "entries"})
@@ -131,11 +131,11 @@ TEST(Bench, JsonHasEveryFieldAndReport) {
 TEST(Bench, PathMeasuresFlicker) {
   BenchTempDir t;
   const fs::path json = t.path / "b.json";
-  CommandResult r =
-      runCommand("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
-          "--json '" +
-              json.string() + "'",
-          t.path);
+  CommandResult r = runCommand(
+      "bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 "
+      "--json '" +
+          json.string() + "'",
+      t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   EXPECT_EQ(j["path"], "orbit");
@@ -149,8 +149,8 @@ TEST(Bench, PathMeasuresFlicker) {
   EXPECT_EQ(j["reference"]["traced"].get<int>() + j["reference"]["cached"].get<int>(), 4);
   // The per-frame references are cached: a second run traces nothing.
   r = runCommand("bench --scene basic --techniques standard --path orbit --size 160x90 --frames 4 --warmup 0 --json '" +
-              json.string() + "'",
-          t.path);
+                     json.string() + "'",
+                 t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(readJson(json)["reference"]["cached"], 4);
 }
@@ -191,11 +191,11 @@ TEST(Bench, RenderingInTurnDoesNotChangeAnEntrysImages) {
 TEST(Bench, SeesShadowMapResolution) {
   BenchTempDir t;
   const fs::path json = t.path / "b.json";
-  CommandResult r =
-      runCommand("bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
-          "--frames 1 --warmup 1 --json '" +
-              json.string() + "'",
-          t.path);
+  CommandResult r = runCommand(
+      "bench --scene basic --techniques standard --sweep shadowmap.size=256,4096 --size 320x180 "
+      "--frames 1 --warmup 1 --json '" +
+          json.string() + "'",
+      t.path);
   ASSERT_EQ(r.code, 0) << r.out;
   nlohmann::json j = readJson(json);
   ASSERT_EQ(j["entries"].size(), 2u);
@@ -221,8 +221,9 @@ TEST(Bench, BadKeysFailClearly) {
   EXPECT_NE(r.out.find("shadowmap.size"), std::string::npos) << r.out;
   r = runCommand(base + "--sweep shadowmap.size", t.path);  // no values
   EXPECT_NE(r.code, 0);
-  r = runCommand(std::string("bench --scene basic --techniques nosuchtechnique --json '") + (t.path / "b.json").string() + "'",
-          t.path);
+  r = runCommand(
+      std::string("bench --scene basic --techniques nosuchtechnique --json '") + (t.path / "b.json").string() + "'",
+      t.path);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("nosuchtechnique"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(t.path / "b.json"));
@@ -239,8 +240,8 @@ TEST(ReferenceCache, CommandCachesItsResult) {
   EXPECT_NE(b.out.find("reference: cached"), std::string::npos) << b.out;
   EXPECT_EQ(readFile(t.path / "a.png"), readFile(t.path / "b.png"));
   // Another camera is another key.
-  CommandResult c =
-      runCommand("reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'", t.path);
+  CommandResult c = runCommand(
+      "reference --scene basic --camera top --size 96x54 --out '" + (t.path / "c.png").string() + "'", t.path);
   ASSERT_EQ(c.code, 0) << c.out;
   EXPECT_NE(c.out.find("traced in"), std::string::npos) << c.out;
 }

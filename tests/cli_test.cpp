@@ -41,8 +41,9 @@ TEST(Cli, ListShowsEveryPresetParameterAndScene) {
 
 TEST(Cli, RenderWritesPngAndStats) {
   std::string png = ::testing::TempDir() + "cli_render.png", stats = ::testing::TempDir() + "cli_render.json";
-  CliRunResult r = runCli("render --scene basic --technique pcf --set shadowmap.size=512 --size 96x64 --frames 3 --out " +
-                    png + " --stats " + stats);
+  CliRunResult r =
+      runCli("render --scene basic --technique pcf --set shadowmap.size=512 --size 96x64 --frames 3 --out " + png +
+             " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
   EXPECT_EQ(j["technique"], "pcf");
@@ -58,15 +59,16 @@ TEST(Cli, RenderWritesPngAndStats) {
 
 TEST(Cli, RenderStatsOfAVirtualMapCountAtlasAndPageTable) {
   std::string png = ::testing::TempDir() + "cli_virtual.png", stats = ::testing::TempDir() + "cli_virtual.json";
-  CliRunResult r =
-      runCli("render --scene basic --technique virtual --set virtual.size=4096 --set virtual.pool=512 "
-          "--size 96x64 --frames 2 --out " +
-          png + " --stats " + stats);
+  CliRunResult r = runCli(
+      "render --scene basic --technique virtual --set virtual.size=4096 --set virtual.pool=512 "
+      "--size 96x64 --frames 2 --out " +
+      png + " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
   // 512² atlas + page table of 32 pages per side (1024 + 256 + 64 + 16 + 4 + 1 texels).
   EXPECT_EQ(j["shadow_texels"], 512 * 512 + 1365);
-  EXPECT_NE(j["status"]["layout"].get<std::string>().find("virtual 4096² in 16 tiles"), std::string::npos) << j["status"];
+  EXPECT_NE(j["status"]["layout"].get<std::string>().find("virtual 4096² in 16 tiles"), std::string::npos)
+      << j["status"];
   EXPECT_EQ(j["passes"][1], "virtual.pages[0]");
   EXPECT_EQ(j["nonfinite_pixels"], 0);
   EXPECT_EQ(j["gl_errors"], 0);

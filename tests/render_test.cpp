@@ -184,7 +184,6 @@ struct ScenePreset {
 };
 void PrintTo(const ScenePreset& c, std::ostream* os) { *os << c.scene << " " << c.preset; }
 
-
 std::vector<ScenePreset> everyScenePreset() {
   std::vector<ScenePreset> cases;
   for (const std::string& scene : builtinSceneIds(defaultAssetsDir()))

@@ -158,8 +158,8 @@ TEST(VirtualShadowMap, TinyPoolIsReportedAndDegradesToCoarserPages) {
   // Coarser, so less accurate, but still a shadow map of the scene and not garbage.
   const double wrongFull = wrongPct(scene, full.frame), wrongTiny = wrongPct(scene, tiny.frame);
   const VirtualRun uniform = render(h, scene, "uniform", {"shadowmap.size=256"});
-  std::printf("columns %dx%d: virtual %.3f %%, pool of 4 tiles %.3f %%, uniform 256² %.3f %%\n", kVirtualW, kVirtualH, wrongFull,
-              wrongTiny, wrongPct(scene, uniform.frame));
+  std::printf("columns %dx%d: virtual %.3f %%, pool of 4 tiles %.3f %%, uniform 256² %.3f %%\n", kVirtualW, kVirtualH,
+              wrongFull, wrongTiny, wrongPct(scene, uniform.frame));
   EXPECT_LT(wrongFull, wrongTiny);
   EXPECT_LE(wrongTiny, wrongPct(scene, uniform.frame) + 0.5);
   EXPECT_EQ(glDebugErrorCount(), 0);
@@ -174,8 +174,8 @@ TEST(VirtualShadowMap, AsAccurateAsAFocused4096MapOnColumnsAndTerrain) {
     const VirtualRun virt = render(h, scene, "virtual", {});
     expectSane(virt.frame, name);
     const double ws = wrongPct(scene, standard.frame), wv = wrongPct(scene, virt.frame);
-    std::printf("%s %dx%d: standard 4096² %.3f %% (%lld texels), virtual %.3f %% (%lld texels; %s)\n", name, kVirtualW, kVirtualH, ws,
-                standard.texels, wv, virt.texels, virt.status.c_str());
+    std::printf("%s %dx%d: standard 4096² %.3f %% (%lld texels), virtual %.3f %% (%lld texels; %s)\n", name, kVirtualW,
+                kVirtualH, ws, standard.texels, wv, virt.texels, virt.status.c_str());
     EXPECT_LE(wv, ws + 0.05) << name;
     EXPECT_LE(virt.texels * 4, standard.texels + 4 * 65536) << name;
   }

@@ -119,20 +119,20 @@ TEST(DeepGl, ExtremesStayFiniteAndInRange) {
   const auto ground = std::string(R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]})");
   const auto sheet = [&](const char* opacity) {
     return deepSceneFrom(ground + R"(,{"shape":"plane","size":[2,2],"opacity":)" + opacity +
-                     R"(,"transform":{"translate":[0,3.5,0]}}],)" + kTopCamera + "}");
+                         R"(,"transform":{"translate":[0,3.5,0]}}],)" + kTopCamera + "}");
   };
   EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
   EXPECT_NEAR(centreValue(test::renderOnce(h, sheet("1"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
   const auto medium = [&](const char* sigma) {
-    return deepSceneFrom(ground + R"(],"volumes":[{"shape":"sphere","center":[0,1,0],"radius":0.5,"extinction":)" + sigma +
-                     "}]," + kTopCamera + "}");
+    return deepSceneFrom(ground + R"(],"volumes":[{"shape":"sphere","center":[0,1,0],"radius":0.5,"extinction":)" +
+                         sigma + "}]," + kTopCamera + "}");
   };
   EXPECT_NEAR(centreValue(test::renderOnce(h, medium("0"), "deep", {"deep.size=64"}, 32, 32)), 1.0f, 1e-3f);
   EXPECT_NEAR(centreValue(test::renderOnce(h, medium("1000000"), "deep", {"deep.size=64"}, 32, 32)), 0.0f, 1e-3f);
   // 0.2 mm strands on a 64² map over a 4 m ground: most texels miss them.
   const Scene thin =
       deepSceneFrom(ground + R"(,{"name":"ball","shape":"sphere","radius":0.3,"transform":{"translate":[0,1,0]}}],)" +
-                R"("hair":[{"on":"ball","count":300,"width":0.0002,"length":0.4}],)" + kTopCamera + "}");
+                    R"("hair":[{"on":"ball","count":300,"width":0.0002,"length":0.4}],)" + kTopCamera + "}");
   const test::Frame f = test::renderOnce(h, thin, "deep", {"deep.size=64"}, 48, 48);
   EXPECT_EQ(f.nonfinite(), 0);
   for (size_t i = 0; i < f.visibility.size(); i += 2) {

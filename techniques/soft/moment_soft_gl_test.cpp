@@ -23,8 +23,9 @@ struct SoftMomentCase {
   test::LightCase light;
   const char* preset;
 };
-void PrintTo(const SoftMomentCase& c, std::ostream* os) { *os << c.light.scene << " radius " << c.light.radius << " " << c.preset; }
-
+void PrintTo(const SoftMomentCase& c, std::ostream* os) {
+  *os << c.light.scene << " radius " << c.light.radius << " " << c.preset;
+}
 
 std::vector<SoftMomentCase> softMomentCases() {
   std::vector<SoftMomentCase> cases;
@@ -49,8 +50,8 @@ TEST_P(MomentSoftLights, FiniteAndInRangeFromPointToHugeLights) {
     Viewport vp(test::compose(layout, p->representation, accumulation, sets));
     vp.shownViews = vp.availableViews();
     test::expectFiniteShadowAndLight(render(h, scene, vp, 64, 40), std::string(c.light.scene) + " radius " +
-                                                                       std::to_string(c.light.radius) + " " +
-                                                                       c.preset + " " + layout + " " + accumulation);
+                                                                       std::to_string(c.light.radius) + " " + c.preset +
+                                                                       " " + layout + " " + accumulation);
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }

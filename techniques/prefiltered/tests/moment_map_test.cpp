@@ -252,7 +252,6 @@ struct SceneAndRepresentation {
 };
 void PrintTo(const SceneAndRepresentation& c, std::ostream* os) { *os << c.scene << " " << c.representation; }
 
-
 std::vector<SceneAndRepresentation> sceneRepresentationCases() {
   std::vector<SceneAndRepresentation> cases;
   for (const std::string scene : {"thin-casters", "spotlight", "columns"})
@@ -281,8 +280,8 @@ TEST_P(MomentMapEverywhere, RendersFiniteVisibilityForEveryMethodFormatAndLayout
         in.height = 32;
         h.renderer.render(in, {&vp});
         test::Frame f = test::readFrame(h.renderer, vp, in.width, in.height);
-        EXPECT_EQ(outsideUnit(f), 0) << sceneId << " " << rep << " " << method << " " << format << " " << layout
-                                     << " " << accumulation;
+        EXPECT_EQ(outsideUnit(f), 0) << sceneId << " " << rep << " " << method << " " << format << " " << layout << " "
+                                     << accumulation;
       }
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
   EXPECT_EQ(glDebugErrorCount(), 0);
