@@ -1,5 +1,6 @@
 // The one list of technique families. A new paper adds its register call here and nothing else.
 #include "technique.h"
+#include "param_hints.h"
 
 #include "adaptive/virtual_layout.h"
 #include "deep/deep_representation.h"
@@ -332,7 +333,12 @@ Technique makeTechnique(const std::string& presetId, const std::vector<std::stri
   // A preset's overrides of its own layout's parameters do not apply over another layout.
   for (const auto& o : preset->overrides)
     if (t.params.has(o.substr(0, o.find('='))) || layoutId == preset->layout) t.params.setAssignment(o);
-  for (const auto& o : overrides) t.params.setAssignment(o);
+  for (const auto& o : overrides) {
+    const std::string key = o.substr(0, o.find('='));
+    if (o.find('=') != std::string::npos && !key.empty() && !t.params.has(key))
+      throw ParamError(unknownParameterMessage(presetId, t.params, key));
+    t.params.setAssignment(o);
+  }
   return t;
 }
 

@@ -1,5 +1,6 @@
 // Explorer state changes that need no window: the light-direction control.
 #include "explorer/explorer_state.h"
+#include "explorer/viewport_area.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -45,4 +46,28 @@ TEST(ExplorerLight, ChangingTheLightIsACut) {
 }
 
 }  // namespace
+// A tour step's caption reads "left, middle, right" for three viewports: they sit in one row of
+// equal tiles, and only four make a 2x2 grid.
+TEST(ExplorerLayout, ThreeViewportsSitInOneRowFourInTwo) {
+  ImGui::CreateContext();
+  for (int n = 1; n <= 4; ++n) EXPECT_EQ(viewportCountFor(size_t(n)), n);
+  EXPECT_EQ(viewportCountFor(0), 1);
+  EXPECT_EQ(viewportCountFor(7), kMaxViewports);
+  const ImVec2 area(1200, 600);
+  const MainAreaLayout three = layoutMainArea(ImVec2(0, 0), area, 3, false, ImVec2(1, 1));
+  ASSERT_EQ(three.tiles.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(three.tiles[i].headerMin.y, three.tiles[0].headerMin.y) << i;
+    EXPECT_NEAR(three.tiles[i].headerSize.x, area.x / 3, 10.0f) << i;
+    EXPECT_LE(three.tiles[i].headerMin.x + three.tiles[i].headerSize.x, area.x) << i;
+    if (i) EXPECT_GT(three.tiles[i].headerMin.x, three.tiles[i - 1].headerMin.x + three.tiles[i - 1].headerSize.x - 1);
+  }
+  const MainAreaLayout four = layoutMainArea(ImVec2(0, 0), area, 4, false, ImVec2(1, 1));
+  ASSERT_EQ(four.tiles.size(), 4u);
+  EXPECT_EQ(four.tiles[1].headerMin.y, four.tiles[0].headerMin.y);
+  EXPECT_GT(four.tiles[2].headerMin.y, four.tiles[0].headerMin.y);
+  EXPECT_EQ(four.tiles[2].headerMin.x, four.tiles[0].headerMin.x);
+  ImGui::DestroyContext();
+}
+
 }  // namespace sl

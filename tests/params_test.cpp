@@ -1,3 +1,4 @@
+#include "param_hints.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>
@@ -29,6 +30,37 @@ TEST(Params, BadValuesAreNamed) {
   EXPECT_NE(message("standard", "noequals").find("key=value"), std::string::npos);
   EXPECT_NE(message("standard", "bias.slope=nan").find("finite"), std::string::npos);
   EXPECT_NE(message("nosuch", "a=b").find("unknown technique"), std::string::npos);
+}
+
+// The every-preset sweep's ctests (CMakeLists.txt) pick a scene's presets by first letter, a-l
+// and m-z: an id starting otherwise would be tested by neither.
+TEST(Params, PresetIdsStartWithALowerCaseLetter) {
+  for (const auto& preset : allPresets())
+    EXPECT_TRUE(!preset.id.empty() && preset.id[0] >= 'a' && preset.id[0] <= 'z') << preset.id;
+}
+
+// A key another preset declares names those presets; a typo gets the nearest key.
+TEST(Params, UnknownKeysNameThePresetsThatDeclareThemOrTheNearestKey) {
+  auto message = [](const std::string& preset, const std::string& kv) {
+    try {
+      makeTechnique(preset, {kv});
+    } catch (const ParamError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string other = message("standard", "pcf.kernel=5");
+  EXPECT_NE(other.find("declared by the presets pcf"), std::string::npos) << other;
+  EXPECT_NE(other.find("--technique"), std::string::npos) << other;
+  EXPECT_EQ(other.find("standard,"), std::string::npos) << other;  // not by standard itself
+  const std::string typo = message("standard", "shadowmap.sise=512");
+  EXPECT_NE(typo.find("did you mean 'shadowmap.size'?"), std::string::npos) << typo;
+  const std::string nothing = message("standard", "zzz.qqq=1");
+  EXPECT_NE(nothing.find("see `shadowlab list`"), std::string::npos) << nothing;
+  EXPECT_EQ(message("pcf", "pcf.kernel=5"), "no error");
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  EXPECT_EQ(editDistance("same", "same"), 0u);
 }
 
 TEST(Params, EveryDeclarationIsComplete) {

@@ -112,7 +112,7 @@ TEST(TourPlayer, StepsSetSceneViewportsViewsAndLight) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the source tree
   ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
   EXPECT_EQ(state.scene->name, "columns");
-  EXPECT_EQ(state.viewportCount, 4);  // three viewports use the 2x2 layout
+  EXPECT_EQ(state.viewportCount, 3);  // exactly the step's three, no fourth from before
   EXPECT_EQ(state.slots[0].viewport->technique.presetId, "pcf");
   EXPECT_EQ(state.slots[0].viewport->technique.params.i("pcf.kernel"), 5);
   EXPECT_EQ(state.slots[2].viewport->technique.presetId, "psm");

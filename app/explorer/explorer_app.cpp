@@ -185,7 +185,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   state.slots.resize(kMaxViewports);
   for (size_t i = 0; i < techniques.size() && i < state.slots.size(); ++i)
     state.slots[i].viewport = std::make_unique<Viewport>(std::move(techniques[i]));
-  state.viewportCount = techniques.size() <= 1 ? 1 : techniques.size() == 2 ? 2 : 4;
+  state.viewportCount = viewportCountFor(techniques.size());
   ensureViewportSlots(state);
   const std::vector<std::string> offered = availableViewNames(state);
   for (const std::string& view : state.options.debugViews) {

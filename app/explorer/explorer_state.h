@@ -17,6 +17,9 @@ namespace sl {
 class ErrorPanel;
 
 constexpr int kMaxViewports = 4;
+// The viewports shown for n techniques: exactly n (1 to 4); three sit side by side, as a
+// caption's "left, middle, right" reads, four as 2x2 (layoutMainArea).
+inline int viewportCountFor(size_t n) { return n <= 1 ? 1 : n >= size_t(kMaxViewports) ? kMaxViewports : int(n); }
 
 struct ViewportSlot {
   std::unique_ptr<Viewport> viewport;

@@ -23,7 +23,7 @@ struct ViewportSettings {
 
 struct ExplorerSettings {
   std::string scene;
-  std::vector<ViewportSettings> viewports;  // the shown ones, 1, 2 or 4
+  std::vector<ViewportSettings> viewports;  // the shown ones, 1 to 4
   std::vector<std::string> views;           // debug views selected as thumbnails
   float uiScale = 1.0f;
   float cameraSpeed = 0.0f;  // scene diagonals per second; 0 = the default

@@ -14,7 +14,7 @@ const std::vector<Shortcut>& explorerShortcuts() {
       {"F1  or  ?", "show / hide this help", "Window"},
       {"Ctrl + =  /  Ctrl + -", "larger / smaller UI (for a projector)", "Window"},
       {"Ctrl + 0", "UI back to 100 %", "Window"},
-      {"1  2  4", "one, two or four viewports", "Window"},
+      {"1  2  3  4", "one to four viewports (three in a row)", "Window"},
       {"Tab  /  Shift + Tab", "cycle the big images: colour, then each debug view", "Window"},
       {"K", "show / hide the colour keys over the debug views", "Window"},
       {"F12  or  Ctrl + S", "screenshot of the whole window", "Window"},
@@ -96,6 +96,7 @@ void handleShortcuts(ExplorerState& state) {
   const bool shift = io.KeyShift;
   if (pressed(GLFW_KEY_1)) state.viewportCount = 1;
   if (pressed(GLFW_KEY_2)) state.viewportCount = 2;
+  if (pressed(GLFW_KEY_3)) state.viewportCount = 3;
   if (pressed(GLFW_KEY_4)) state.viewportCount = 4;
   if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, (keyPressMods(GLFW_KEY_TAB) & GLFW_MOD_SHIFT) || shift ? -1 : 1);
   if (pressed(GLFW_KEY_P)) state.paused = !state.paused;

@@ -86,8 +86,8 @@ void SoakDriver::nextAction(ExplorerState& state, Renderer& renderer) {
       setViewportPreset(state, 0, presets[presetIndex_++ % presets.size()].id);
       if (!state.slots[0].error.empty()) fail("preset: " + state.slots[0].error);
       break;
-    case 1: {  // 1, 2, 4 viewports
-      static const int counts[] = {1, 2, 4, 2};
+    case 1: {  // 1 to 4 viewports
+      static const int counts[] = {1, 2, 4, 3};
       state.viewportCount = counts[viewportStep_++ % 4];
       ensureViewportSlots(state);
       break;

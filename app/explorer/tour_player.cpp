@@ -38,8 +38,7 @@ void applyViewports(ExplorerState& state, const TourStep& s) {
     slot.enlargedView.clear();
     state.selectedViews.insert(v.views.begin(), v.views.end());
   }
-  const size_t n = s.viewports.size();
-  state.viewportCount = n <= 1 ? 1 : n == 2 ? 2 : 4;
+  state.viewportCount = viewportCountFor(s.viewports.size());
   ensureViewportSlots(state);
   applySelectedViews(state);
 }

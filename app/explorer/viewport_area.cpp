@@ -128,8 +128,9 @@ MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount
   MainAreaLayout layout;
   layout.areaMin = areaMin;
   layout.areaSize = areaSize;
-  const int columns = viewportCount >= 2 ? 2 : 1;
-  const int rows = viewportCount >= 3 ? 2 : 1;
+  // 1 to 3 side by side (a caption's "left, middle, right"), 4 as 2x2.
+  const int columns = viewportCount >= 4 ? 2 : std::max(1, viewportCount);
+  const int rows = viewportCount >= 4 ? 2 : 1;
   const float tileW = std::floor((areaSize.x - kGap * float(columns + 1)) / float(columns));
   const float tileH = std::floor((areaSize.y - kGap * float(rows + 1)) / float(rows));
   const float headerH = std::floor(ImGui::GetTextLineHeight() + 8.0f);

@@ -1,4 +1,4 @@
-// The main area right of the side panel: 1, 2 or 4 tiles, each with a technique label, the
+// The main area right of the side panel: 1 to 4 tiles (three in a row, four as 2x2), each with a technique label, the
 // rendered image and a strip of debug-view thumbnails.
 #pragma once
 
@@ -23,7 +23,7 @@ struct MainAreaLayout {
   int renderWidth = 0, renderHeight = 0;  // image size in framebuffer pixels: what to render at
 };
 
-// Tiles the area: 1 = full, 2 = side by side, 4 = 2x2. All images get the same size because
+// Tiles the area: 1 = full, 2 or 3 = side by side, 4 = 2x2. All images get the same size because
 // the renderer draws every viewport of a frame at one resolution.
 MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, bool withThumbnails,
                               ImVec2 framebufferScale);
