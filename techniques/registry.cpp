@@ -144,124 +144,170 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
   return list;
 }
 
+namespace {
+
+// The depth test over the focused (or whole-scene) map, with its filters.
+void addDepthTestPresets(std::vector<Preset>& v) {
+  v.insert(
+      v.end(),
+      {
+          {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
+          {"uniform",
+           "one shadow map over the whole scene, nearest depth test",
+           "uniform",
+           "depth-nearest",
+           "none",
+           {}},
+          {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
+          {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
+          {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
+      });
+}
+
+// The pixel-correct paper's presets (Scherzer et al. 2007) and the LiSPSM layout it pairs with.
+void addPixelCorrectPresets(std::vector<Preset>& v) {
+  v.insert(v.end(),
+           {
+               {"pixel-correct",
+                "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
+                "focused",
+                "depth-nearest",
+                "pixel-correct",
+                {}},
+               {"lispsm",
+                "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
+                "lispsm",
+                "depth-nearest",
+                "none",
+                {}},
+               {"pixel-correct-lispsm",
+                "pixel-correct over a LiSPSM layout, as the paper pairs them",
+                "lispsm",
+                "depth-nearest",
+                "pixel-correct",
+                {}},
+               {"pixel-correct-at-rest",
+                "pixel-correct that shows the layout's plain test while the camera moves and keeps the most confident "
+                "test at rest",
+                "focused",
+                "depth-nearest",
+                "pixel-correct",
+                {"pc.while_moving=test", "pc.keep_best=on"}},
+               {"pixel-correct-pcf",
+                "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
+                "focused",
+                "depth-pcf",
+                "pixel-correct",
+                {"pcf.kernel=3"}},
+           });
+}
+
+// Warping and partitioning layouts with the nearest test, and pixel-correct over cascades.
+void addWarpingPresets(std::vector<Preset>& v) {
+  v.insert(
+      v.end(),
+      {
+          {"psm",
+           "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
+           "nearest depth test",
+           "psm",
+           "depth-nearest",
+           "none",
+           {}},
+          {"logpsm",
+           "logarithmic warp along the view (after Lloyd et al. 2008), casters tessellated within an error budget, "
+           "nearest depth test",
+           "logpsm",
+           "depth-nearest",
+           "none",
+           {}},
+          {"tsm",
+           "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % "
+           "rule, "
+           "nearest depth test",
+           "tsm",
+           "depth-nearest",
+           "none",
+           {}},
+          {"cascaded",
+           "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
+           "each, practical split scheme, blended borders, nearest depth test",
+           "cascaded",
+           "depth-nearest",
+           "none",
+           {}},
+          {"pixel-correct-cascaded",
+           "pixel-correct over cascades: jitter and confidence in each split's own texels",
+           "cascaded",
+           "depth-nearest",
+           "pixel-correct",
+           {}},
+          {"face-partitioned",
+           "face partitioning (Lloyd et al. 2006): one LiSPSM map per side face of the view frustum, nearest depth "
+           "test",
+           "face-partitioned",
+           "depth-nearest",
+           "none",
+           // Measured: its warped maps' texels are anisotropic, and the slope bias measures the smaller
+           // side; one texel of slope leaves acne near the horizon (techniques/layouts/README.md).
+           {"bias.slope=2"}},
+          {"sdsm",
+           "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
+           "a GPU reduction (one frame of latency), nearest depth test",
+           "cascaded",
+           "depth-nearest",
+           "none",
+           {"fit.sdsm=on"}},
+      });
+}
+
+// The virtual map's pages under each page criterion.
+void addVirtualPresets(std::vector<Preset>& v) {
+  v.insert(
+      v.end(),
+      {
+          {"virtual",
+           "paged virtual shadow map (Lefohn et al. 2007): 16384² virtual texels over the scene, only the pages and "
+           "mip "
+           "levels the visible pixels need, in one 1920² atlas, cached while nothing moves; nearest depth test",
+           "virtual",
+           "depth-nearest",
+           "none",
+           {}},
+          {"tiled",
+           "the virtual map's pages chosen by a distance heuristic (after Arvo 2004, tiled shadow maps): each pixel's "
+           "world size decides its level, the atlas is the texel budget; nearest depth test",
+           "virtual",
+           "depth-nearest",
+           "none",
+           {"virtual.criterion=distance"}},
+          {"adaptive",
+           "adaptive shadow maps over the virtual map's pages (Fernando et al. 2001, Lefohn et al. 2006): full "
+           "resolution only near last frame's shadow edges, 3 levels coarser elsewhere; nearest depth test",
+           "virtual",
+           "depth-nearest",
+           "none",
+           {"virtual.criterion=edges"}},
+          {"fitted-virtual",
+           "fitted virtual shadow maps (Giegl & Wimmer 2007) over the virtual map's pages: the pixels' footprints "
+           "gathered into a grid over the light's view, read back and fitted into a quadtree on the CPU, whose leaves "
+           "are the pages drawn; nearest depth test",
+           "virtual",
+           "depth-nearest",
+           "none",
+           {"virtual.criterion=fitted"}},
+      });
+}
+
+}  // namespace
+
 const std::vector<Preset>& allPresets() {
   static const std::vector<Preset> presets = [] {
-    std::vector<Preset> v = {
-        {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
-        {"uniform", "one shadow map over the whole scene, nearest depth test", "uniform", "depth-nearest", "none", {}},
-        {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
-        {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
-        {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
-        {"pixel-correct",
-         "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
-         "focused",
-         "depth-nearest",
-         "pixel-correct",
-         {}},
-        {"lispsm",
-         "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
-         "lispsm",
-         "depth-nearest",
-         "none",
-         {}},
-        {"pixel-correct-lispsm",
-         "pixel-correct over a LiSPSM layout, as the paper pairs them",
-         "lispsm",
-         "depth-nearest",
-         "pixel-correct",
-         {}},
-        {"pixel-correct-at-rest",
-         "pixel-correct that shows the layout's plain test while the camera moves and keeps the most confident "
-         "test at rest",
-         "focused",
-         "depth-nearest",
-         "pixel-correct",
-         {"pc.while_moving=test", "pc.keep_best=on"}},
-        {"pixel-correct-pcf",
-         "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
-         "focused",
-         "depth-pcf",
-         "pixel-correct",
-         {"pcf.kernel=3"}},
-        {"psm",
-         "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
-         "nearest depth test",
-         "psm",
-         "depth-nearest",
-         "none",
-         {}},
-        {"logpsm",
-         "logarithmic warp along the view (after Lloyd et al. 2008), casters tessellated within an error budget, "
-         "nearest depth test",
-         "logpsm",
-         "depth-nearest",
-         "none",
-         {}},
-        {"tsm",
-         "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % rule, "
-         "nearest depth test",
-         "tsm",
-         "depth-nearest",
-         "none",
-         {}},
-        {"cascaded",
-         "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
-         "each, practical split scheme, blended borders, nearest depth test",
-         "cascaded",
-         "depth-nearest",
-         "none",
-         {}},
-        {"pixel-correct-cascaded",
-         "pixel-correct over cascades: jitter and confidence in each split's own texels",
-         "cascaded",
-         "depth-nearest",
-         "pixel-correct",
-         {}},
-        {"face-partitioned",
-         "face partitioning (Lloyd et al. 2006): one LiSPSM map per side face of the view frustum, nearest depth test",
-         "face-partitioned",
-         "depth-nearest",
-         "none",
-         // Measured: its warped maps' texels are anisotropic, and the slope bias measures the smaller
-         // side; one texel of slope leaves acne near the horizon (techniques/layouts/README.md).
-         {"bias.slope=2"}},
-        {"sdsm",
-         "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
-         "a GPU reduction (one frame of latency), nearest depth test",
-         "cascaded",
-         "depth-nearest",
-         "none",
-         {"fit.sdsm=on"}},
-        {"virtual",
-         "paged virtual shadow map (Lefohn et al. 2007): 16384² virtual texels over the scene, only the pages and mip "
-         "levels the visible pixels need, in one 1920² atlas, cached while nothing moves; nearest depth test",
-         "virtual",
-         "depth-nearest",
-         "none",
-         {}},
-        {"tiled",
-         "the virtual map's pages chosen by a distance heuristic (after Arvo 2004, tiled shadow maps): each pixel's "
-         "world size decides its level, the atlas is the texel budget; nearest depth test",
-         "virtual",
-         "depth-nearest",
-         "none",
-         {"virtual.criterion=distance"}},
-        {"adaptive",
-         "adaptive shadow maps over the virtual map's pages (Fernando et al. 2001, Lefohn et al. 2006): full "
-         "resolution only near last frame's shadow edges, 3 levels coarser elsewhere; nearest depth test",
-         "virtual",
-         "depth-nearest",
-         "none",
-         {"virtual.criterion=edges"}},
-        {"fitted-virtual",
-         "fitted virtual shadow maps (Giegl & Wimmer 2007) over the virtual map's pages: the pixels' footprints "
-         "gathered into a grid over the light's view, read back and fitted into a quadtree on the CPU, whose leaves "
-         "are the pages drawn; nearest depth test",
-         "virtual",
-         "depth-nearest",
-         "none",
-         {"virtual.criterion=fitted"}},
-    };
+    std::vector<Preset> v;
+    addDepthTestPresets(v);
+    addPixelCorrectPresets(v);
+    addWarpingPresets(v);
+    addVirtualPresets(v);
     addPrefilteredPresets(v);
     addIrregularPresets(v);
     addReconstructionPresets(v);

@@ -83,6 +83,36 @@ struct ErrorAxis {
   }
 };
 
+// A chart's W x H canvas and the margins (left, right, top, bottom) around its plot rectangle.
+struct ChartFrame {
+  double W, H, L, R, T, B;
+};
+
+// The <svg> element's start and the white plot rectangle.
+std::string chartStart(const ChartFrame& f, const char* ariaLabel) {
+  std::ostringstream s;
+  s << "<svg viewBox='0 0 " << f.W << " " << f.H << "' class='chart' role='img' aria-label='" << ariaLabel << "'>\n";
+  s << "<rect x='" << f.L << "' y='" << f.T << "' width='" << f.W - f.L - f.R << "' height='" << f.H - f.T - f.B
+    << "' fill='#fff' stroke='#888'/>\n";
+  return s.str();
+}
+
+// A vertical grid line at x with its tick value under the plot.
+std::string xGridLine(const ChartFrame& f, double x, double value) {
+  std::ostringstream s;
+  s << "<line x1='" << x << "' x2='" << x << "' y1='" << f.T << "' y2='" << f.H - f.B << "' class='grid'/><text x='"
+    << x << "' y='" << f.H - f.B + 22 << "' text-anchor='middle'>" << num(value) << "</text>\n";
+  return s.str();
+}
+
+// A horizontal grid line at y with its tick value left of the plot.
+std::string yGridLine(const ChartFrame& f, double y, double value) {
+  std::ostringstream s;
+  s << "<line x1='" << f.L << "' x2='" << f.W - f.R << "' y1='" << y << "' y2='" << y << "' class='grid'/><text x='"
+    << f.L - 8 << "' y='" << y + 5 << "' text-anchor='end'>" << num(value) << "</text>\n";
+  return s.str();
+}
+
 struct Box {
   double x0, y0, x1, y1;
   bool hits(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
@@ -170,11 +200,10 @@ std::string shortLabel(const BenchEntry& e) {
 std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
   const double W = 960, H = 540, L = 80, R = 30, T = 30, B = 70;
   const auto& es = r.entries;
-  double xmin = 1e30, xmax = 0, ymax = 0;
+  double xmin = 1e30, xmax = 0;
   for (const auto& e : es) {
     xmin = std::min(xmin, std::max(e.msMedian, 1e-3));
     xmax = std::max(xmax, std::max(e.msMedian, 1e-3));
-    ymax = std::max(ymax, e.error.wrongPixelPct);
   }
   const bool logX = xmax / xmin > 6;
   double x0 = logX ? xmin / 1.3 : 0, x1 = logX ? xmax * 1.3 : xmax * 1.15;
@@ -188,16 +217,11 @@ std::string scatterSvg(const BenchResult& r, const std::vector<Style>& styles) {
     return L + f * (W - L - R);
   };
   auto Y = [&](double v) { return H - B - ya.frac(v) * (H - T - B); };
+  const ChartFrame frame{W, H, L, R, T, B};
   std::ostringstream s;
-  s << "<svg viewBox='0 0 " << W << " " << H << "' class='chart' role='img' aria-label='error against time'>\n";
-  s << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
-    << "' fill='#fff' stroke='#888'/>\n";
-  for (double t : logX ? logTicks(x0, x1) : linearTicks(x0, x1))
-    s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B << "' class='grid'/><text x='"
-      << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t) << "</text>\n";
-  for (double t : ya.ticks())
-    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
-      << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
+  s << chartStart(frame, "error against time");
+  for (double t : logX ? logTicks(x0, x1) : linearTicks(x0, x1)) s << xGridLine(frame, X(t), t);
+  for (double t : ya.ticks()) s << yGridLine(frame, Y(t), t);
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 20 << "' text-anchor='middle' class='axis'>time per frame, ms"
     << (logX ? " (log scale)" : "") << " — median, " << xmlEscaped(r.timer) << " timer</text>\n";
   s << "<text transform='translate(22," << (T + H - B) / 2
@@ -244,28 +268,18 @@ std::string convergenceSvg(const BenchResult& r, const std::vector<Style>& style
   const double W = 960, H = std::max(420.0, 120.0 + 22.0 * r.entries.size()), L = 80, T = 20, B = 60;
   const double R = std::clamp(76.0 + 7.6 * longest, 250.0, 480.0);
   int n = 1;
-  double ymax = 0;
-  for (const auto& e : r.entries) {
-    n = std::max<int>(n, static_cast<int>(e.convergence.size()));
-    for (double v : e.convergence) ymax = std::max(ymax, v);
-  }
+  for (const auto& e : r.entries) n = std::max<int>(n, static_cast<int>(e.convergence.size()));
   std::vector<double> ys;
   for (const auto& e : r.entries) ys.insert(ys.end(), e.convergence.begin(), e.convergence.end());
   ErrorAxis ya(ys);
-  (void)ymax;
   auto X = [&](double f) { return L + (n > 1 ? (f - 1) / (n - 1) : 0.5) * (W - L - R); };
   auto Y = [&](double v) { return H - B - ya.frac(v) * (H - T - B); };
+  const ChartFrame frame{W, H, L, R, T, B};
   std::ostringstream s;
-  s << "<svg viewBox='0 0 " << W << " " << H << "' class='chart' role='img' aria-label='error per frame'>\n";
-  s << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
-    << "' fill='#fff' stroke='#888'/>\n";
+  s << chartStart(frame, "error per frame");
   for (double t : linearTicks(1, n))
-    if (t >= 1 && std::abs(t - std::round(t)) < 1e-9)
-      s << "<line x1='" << X(t) << "' x2='" << X(t) << "' y1='" << T << "' y2='" << H - B << "' class='grid'/><text x='"
-        << X(t) << "' y='" << H - B + 22 << "' text-anchor='middle'>" << num(t) << "</text>\n";
-  for (double t : ya.ticks())
-    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(t) << "' y2='" << Y(t) << "' class='grid'/><text x='"
-      << L - 8 << "' y='" << Y(t) + 5 << "' text-anchor='end'>" << num(t) << "</text>\n";
+    if (t >= 1 && std::abs(t - std::round(t)) < 1e-9) s << xGridLine(frame, X(t), t);
+  for (double t : ya.ticks()) s << yGridLine(frame, Y(t), t);
   s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 16 << "' text-anchor='middle' class='axis'>frame "
     << (!r.options.path.empty()
             ? "along the path at 30 fps" +

@@ -94,10 +94,8 @@ void handleShortcuts(ExplorerState& state) {
       state.screenshotRequested = true;
   }
   const bool shift = io.KeyShift;
-  if (pressed(GLFW_KEY_1)) state.viewportCount = 1;
-  if (pressed(GLFW_KEY_2)) state.viewportCount = 2;
-  if (pressed(GLFW_KEY_3)) state.viewportCount = 3;
-  if (pressed(GLFW_KEY_4)) state.viewportCount = 4;
+  for (int n = 1; n <= kMaxViewports; ++n)  // GLFW_KEY_1 .. GLFW_KEY_4 are consecutive
+    if (pressed(GLFW_KEY_0 + n)) state.viewportCount = n;
   if (pressed(GLFW_KEY_TAB)) cycleEnlargedView(state, (keyPressMods(GLFW_KEY_TAB) & GLFW_MOD_SHIFT) || shift ? -1 : 1);
   if (pressed(GLFW_KEY_P)) state.paused = !state.paused;
   if (pressed(GLFW_KEY_K)) state.showColourKeys = !state.showColourKeys;

@@ -163,7 +163,7 @@ void drawCameraPanel(ExplorerState& state) {
 void drawViewportPanels(ExplorerState& state) {
   ImGui::Separator();
   ImGui::TextUnformatted("Viewports");
-  for (int n : {1, 2, 3, 4}) {
+  for (int n = 1; n <= kMaxViewports; ++n) {
     ImGui::SameLine();
     if (ImGui::RadioButton(std::to_string(n).c_str(), state.viewportCount == n)) state.viewportCount = n;
   }

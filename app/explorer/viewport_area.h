@@ -1,5 +1,5 @@
-// The main area right of the side panel: 1 to 4 tiles (three in a row, four as 2x2), each with a technique label, the
-// rendered image and a strip of debug-view thumbnails.
+// The main area right of the side panel: 1 to 4 tiles (three in a row, four as 2x2), each with a
+// technique label, the rendered image and a strip of debug-view thumbnails.
 #pragma once
 
 #include "explorer/explorer_state.h"
