@@ -334,20 +334,6 @@ const Preset* findPreset(const std::string& id) {
   return nullptr;
 }
 
-bool LightSpace::perspective() const {
-  for (const LightView& v : views)
-    if (v.perspective) return true;
-  return false;
-}
-
-LightSpace LayoutState::compute(const LayoutInput& in) { return layout_.compute(in); }
-
-std::string Technique::label() const {
-  std::string s = presetId + " (" + layout->id() + " + " + representation->id();
-  if (accumulation->id() != "none") s += " + " + accumulation->id();
-  return s + ")";
-}
-
 Technique makeTechnique(const std::string& presetId, const std::vector<std::string>& overrides) {
   const Preset* preset = findPreset(presetId);
   if (!preset) {

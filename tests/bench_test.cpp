@@ -5,6 +5,7 @@
 #include "bench/reference_cache.h"
 #include "gl/headless_context.h"
 #include "sanitizer_report.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 // The command line as a user meets it: list, render with stats, and clear errors for bad input.
 #include "gl_test_util.h"
 #include "sanitizer_report.h"
+#include "technique.h"
 
 #include <nlohmann/json.hpp>
 

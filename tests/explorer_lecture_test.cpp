@@ -7,6 +7,7 @@
 #include "explorer/settings.h"
 #include "explorer/shortcuts.h"
 #include "render/view_keys.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 

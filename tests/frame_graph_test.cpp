@@ -1,5 +1,5 @@
 // The frame graph culls what nobody reads; tested without a GPU (no-op passes).
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 
 #include <gtest/gtest.h>
 

@@ -6,6 +6,7 @@
 #include "metrics/metrics.h"
 #include "reference/reference.h"
 #include "render/renderer.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 // pixels fail or the mean difference exceeds kMeanTolerance.
 // SHADOWLAB_UPDATE_GOLDENS=1 writes the images instead (then look at them before committing).
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -6,6 +6,7 @@
 
 #include "metrics/metrics.h"
 #include "reference/reference.h"
+#include "technique.h"
 
 namespace sl {
 namespace {

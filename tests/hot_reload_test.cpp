@@ -1,6 +1,7 @@
 // Hot reload: a changed shader is rebuilt; a broken one keeps the last good program and the
 // error names the file and line.
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <filesystem>
 #include <fstream>

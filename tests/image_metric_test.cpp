@@ -4,6 +4,7 @@
 // image, which is where the two figures part.
 #include "bench/reference_cache.h"
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Geometry of the layouts (no GPU): focusing covers what it must, snapping moves by texels.
 #include "gl/shader_library.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,8 @@ static LightSpace computeFor(const std::string& preset, const Scene& scene, cons
 }
 
 static float depth01(const LightSpace& ls, const glm::vec3& p) {
-  return (-(ls.primary().view * glm::vec4(p, 1.0f)).z - ls.primary().nearPlane) / (ls.primary().farPlane - ls.primary().nearPlane);
+  return (-(ls.primary().view * glm::vec4(p, 1.0f)).z - ls.primary().nearPlane) /
+         (ls.primary().farPlane - ls.primary().nearPlane);
 }
 
 TEST(Layout, FocusedCoversEveryVisibleReceiverAndTheCastersTowardTheLight) {
@@ -80,7 +81,8 @@ TEST(Layout, LispsmPutsMoreTexelsNearTheViewer) {
   glm::vec3 p = cam.position + glm::normalize(glm::vec3(viewDir.x, 0.0f, viewDir.z)) * 3.0f;
   p.y = 0.0f;
   auto texelsPerMetre = [&](const LightSpace& ls) {
-    glm::vec4 a = ls.primary().viewProj * glm::vec4(p, 1.0f), c = ls.primary().viewProj * glm::vec4(p + glm::vec3(0.0f, 0.0f, 0.1f), 1.0f);
+    glm::vec4 a = ls.primary().viewProj * glm::vec4(p, 1.0f),
+              c = ls.primary().viewProj * glm::vec4(p + glm::vec3(0.0f, 0.0f, 0.1f), 1.0f);
     glm::vec4 d = ls.primary().viewProj * glm::vec4(p + glm::vec3(0.1f, 0.0f, 0.0f), 1.0f);
     glm::vec2 pa = glm::vec2(a) / a.w;
     return 0.5f * ls.size / 0.1f * std::max(glm::length(glm::vec2(c) / c.w - pa), glm::length(glm::vec2(d) / d.w - pa));
@@ -94,7 +96,8 @@ TEST(Layout, FocusedIsSmallerThanUniformOnALargeScene) {
   cam.position = glm::vec3(10, 6, 10);  // looking down at a patch of ground near the viewer
   cam.target = glm::vec3(0, 0, 0);
   cam.farPlane = 60;
-  EXPECT_LT(computeFor("standard", scene, cam).primary().texelWorldSize, computeFor("uniform", scene, cam).primary().texelWorldSize * 0.5f);
+  EXPECT_LT(computeFor("standard", scene, cam).primary().texelWorldSize,
+            computeFor("uniform", scene, cam).primary().texelWorldSize * 0.5f);
 }
 
 TEST(Layout, SnappingMovesTheLightFrustumByWholeTexels) {

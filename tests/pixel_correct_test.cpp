@@ -7,6 +7,7 @@
 #include "metrics/metrics.h"
 #include "bench/reference_cache.h"
 #include "reference/reference.h"
+#include "technique.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,6 +1,7 @@
 // GPU tests of the foundation on llvmpipe at small sizes: analytic shadows, bias, culling,
 // every scene x preset free of NaN and GL errors.
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -2,6 +2,7 @@
 // size before the layout rejects points at or behind the light's plane, so that size must
 // stay finite and sane there, and no visibility may become NaN.
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -51,9 +52,10 @@ TEST(SpotBias, TexelSizeIsFiniteAndSaneAtAndBehindTheLightPlane) {
   LightSpace ls = t.layout->compute(li);
   ASSERT_TRUE(ls.primary().perspective);
   // What Renderer::techniquePrelude writes for this technique and scene.
-  const std::string prelude = "#define SL_BIAS_MODE 3\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#define SL_LIGHT_VIEWS 1\n#include \"" +
-                              t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
-                              t.representation->glslModule() + "\"\n#endif\n";
+  const std::string prelude =
+      "#define SL_BIAS_MODE 3\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#define SL_LIGHT_VIEWS 1\n#include "
+      "\"" +
+      t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" + t.representation->glslModule() + "\"\n#endif\n";
   Program& p = h.shaders.get(
       {"probe", {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_bias.frag"}}, prelude});
   ASSERT_TRUE(p.valid()) << p.error();

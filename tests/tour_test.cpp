@@ -4,6 +4,7 @@
 #include "gl_test_util.h"
 #include "tour/figure.h"
 #include "tour/tour.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cctype>

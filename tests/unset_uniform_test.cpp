@@ -2,6 +2,7 @@
 // a drawn program never had set, once, naming the program (GlHarness fails any other test
 // that leaves one behind).
 #include "gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <filesystem>

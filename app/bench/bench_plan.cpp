@@ -2,6 +2,7 @@
 #include "bench/bench.h"
 
 #include "cli/args.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <sstream>

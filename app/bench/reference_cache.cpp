@@ -1,5 +1,6 @@
 // Reference visibility with a disk cache; see reference_cache.h.
 #include "bench/reference_cache.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cctype>

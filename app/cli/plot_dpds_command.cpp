@@ -3,7 +3,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "gl/shader_library.h"
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 
 #include <iostream>
 #include <sstream>

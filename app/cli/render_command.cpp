@@ -4,6 +4,7 @@
 #include "gl/gl_util.h"
 #include "gl/headless_context.h"
 #include "render/renderer.h"
+#include "technique.h"
 
 #include <nlohmann/json.hpp>
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "metrics/metrics.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 #include "scene/scene.h"
 
 #include <atomic>

@@ -5,6 +5,7 @@
 #include "explorer/explorer_state.h"
 #include "reference/reference.h"
 #include "render/renderer.h"
+#include "technique.h"
 
 #include <epoxy/gl.h>
 #include <imgui.h>

@@ -19,6 +19,7 @@
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "render/renderer.h"
+#include "technique.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE

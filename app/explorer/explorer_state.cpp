@@ -1,6 +1,7 @@
 #include "explorer/explorer_state.h"
 
 #include "explorer/error_panel.h"
+#include "technique.h"
 
 #include <glm/glm.hpp>
 

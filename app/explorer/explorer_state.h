@@ -6,6 +6,7 @@
 #include "explorer/fly_camera.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "technique.h"
 
 #include <memory>
 #include <set>

@@ -1,7 +1,8 @@
 // drawPlotWidget, the live dp/ds plot and its window (see plot_window.h).
 #include "explorer/plot_window.h"
 
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cmath>

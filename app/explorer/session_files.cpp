@@ -2,6 +2,7 @@
 
 #include "explorer/error_panel.h"
 #include "explorer/screenshot.h"
+#include "technique.h"
 
 #include <GLFW/glfw3.h>
 

@@ -1,6 +1,7 @@
 #include "explorer/settings.h"
 
 #include "explorer/explorer_state.h"
+#include "technique.h"
 
 #include <nlohmann/json.hpp>
 

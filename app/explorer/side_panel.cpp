@@ -5,6 +5,7 @@
 #include "explorer/screenshot.h"
 #include "explorer/session_files.h"
 #include "explorer/shortcuts.h"
+#include "technique.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

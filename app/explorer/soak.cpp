@@ -1,6 +1,7 @@
 #include "explorer/soak.h"
 
 #include "gl/gl_util.h"
+#include "technique.h"
 
 #include <epoxy/gl.h>
 #include <malloc.h>

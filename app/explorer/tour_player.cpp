@@ -6,6 +6,7 @@
 #include "explorer/shortcuts.h"
 #include "render/renderer.h"
 #include "tour/step_plot.h"
+#include "technique.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

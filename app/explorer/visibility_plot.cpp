@@ -1,9 +1,11 @@
 #include "explorer/visibility_plot.h"
 
-#include "deep/deep_curve.h"
 #include "explorer/plot_window.h"
-#include "prefiltered/visibility_curve.h"
+#include "part/light_frame.h"
+#include "reference/reference.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include <imgui.h>
@@ -14,8 +16,8 @@ namespace {
 
 constexpr int kSamples = 256;
 
-// The reference for the deep plot, rebuilt when the scene or its light changes.
-const ReferenceTracer& deepPlotTracer(const Scene& scene) {
+// The reference for curves traced along a light ray (deep maps), rebuilt when the scene or its light changes.
+const ReferenceTracer& plotTracer(const Scene& scene) {
   static std::unique_ptr<ReferenceTracer> tracer;
   static const Scene* forScene = nullptr;
   static Light forLight;
@@ -49,73 +51,69 @@ void showPlotWindow(const char* name, const Plot& plot, const std::string& capti
   ImGui::End();
 }
 
-// Deep shadow maps: the stored transmittance of the deep texel under the mouse against light
-// depth over the reference's along the texel's light ray.
-void drawDeepPlot(const Renderer& renderer, const Viewport& vp, const DeepState& state, const glm::vec3& world,
-                  ImVec2 mouse) {
-  glm::vec3 uvLayer;
-  float receiver = 0;
-  if (!state.active() || !renderer.scene() || !mapPointOf(world, vp.lightSpace.primary(), uvLayer, receiver)) return;
-  const std::vector<float> curve = deepTexelCurve(state, glm::vec2(uvLayer), 0, kSamples);
-  const std::vector<float> truth = referenceTexelCurve(deepPlotTracer(*renderer.scene()), vp.lightSpace.primary(),
-                                                       state, glm::vec2(uvLayer), kSamples);
-  if (curve.empty() || curve.size() != truth.size()) return;
-  char title[128];
-  std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
-  Plot plot = depthPlot(title, "light depth", "transmittance", receiver);
-  plot.series.push_back(evenlySpacedSeries("reference (opaque hits included)", glm::vec3(0.0f), 2.0f, truth));
-  plot.series.push_back(evenlySpacedSeries("stored nodes", glm::vec3(1.0f, 0.47f, 0.24f), 1.5f, curve));
-  showPlotWindow("transmittance vs light depth", plot, "dashed: this pixel's depth", mouse);
+// The truth a curve is judged by: its own, or the reference traced along its light ray.
+std::vector<float> curveTruth(const Scene& scene, const VisibilityCurve& c) {
+  if (!c.truth.empty() || c.truthRay.empty()) return c.truth;
+  std::vector<float> out;
+  const ReferenceTracer& tracer = plotTracer(scene);
+  for (const glm::vec3& p : c.truthRay) out.push_back(tracer.transmittanceToLight(p));
+  return out;
 }
 
-}  // namespace
+// The curve of shown[i]'s representation at a world point, in its own map.
+VisibilityCurve curveAt(ShaderLibrary& shaders, const Viewport& vp, const glm::vec3& world, float* receiver) {
+  CurveQuery q{.shaders = &shaders, .technique = &vp.technique, .view = &vp.lightSpace.primary(), .samples = kSamples};
+  float depth = 0;
+  if (!mapPointOf(world, vp.lightSpace.primary(), q.uvLayer, depth)) return {};
+  if (receiver) *receiver = depth;
+  return vp.representation->visibilityCurve(q);
+}
 
-void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const std::vector<Viewport*>& shown,
-                        size_t hovered, const MagnifierTarget& target, ImVec2 mouse) {
-  if (hovered >= shown.size() || !target.valid() || !renderer.hasFreshGBuffer()) return;
-  const Viewport& vp = *shown[hovered];
-  const auto* deep = dynamic_cast<const DeepState*>(vp.representation.get());
-  const auto* state = dynamic_cast<const MomentMapState*>(vp.representation.get());
-  if (!state && !deep) return;
-  // The pixel under the mouse in the rendered frame (GL rows bottom-up); every viewport shares
-  // the camera, hence this G-buffer.
+// The surface point under the mouse in the rendered frame (GL rows bottom-up); every viewport
+// shares the camera, hence this G-buffer. False over the background.
+bool worldUnderMouse(const Renderer& renderer, const MagnifierTarget& target, ImVec2 mouse, glm::vec3& world) {
   const float fx = (mouse.x - target.imageMin.x) / (target.imageMax.x - target.imageMin.x);
   const float fy = (mouse.y - target.imageMin.y) / (target.imageMax.y - target.imageMin.y);
   const int px = std::clamp(static_cast<int>(fx * target.textureWidth), 0, target.textureWidth - 1);
   const int py = std::clamp(static_cast<int>((1.0f - fy) * target.textureHeight), 0, target.textureHeight - 1);
   float pos[4] = {0, 0, 0, 0};
   glGetTextureSubImage(renderer.gPosition().id(), 0, px, py, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof(pos), pos);
-  if (pos[3] < 0.5f) return;
-  const glm::vec3 world(pos[0], pos[1], pos[2]);
-  if (deep) return drawDeepPlot(renderer, vp, *deep, world, mouse);
-  glm::vec3 uvLayer;
+  world = glm::vec3(pos[0], pos[1], pos[2]);
+  return pos[3] >= 0.5f;
+}
+
+}  // namespace
+
+void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const std::vector<Viewport*>& shown,
+                        size_t hovered, const MagnifierTarget& target, ImVec2 mouse) {
+  if (hovered >= shown.size() || !target.valid() || !renderer.hasFreshGBuffer() || !renderer.scene()) return;
+  glm::vec3 world;
+  if (!worldUnderMouse(renderer, target, mouse, world)) return;
+  const Viewport& vp = *shown[hovered];
   float receiver = 0;
-  if (!mapPointOf(world, vp.lightSpace.primary(), uvLayer, receiver)) return;
-  const int width = vp.technique.params.i("filter.width");
-  const std::vector<float> truth = trueCurve(*state->depthTexture(), uvLayer, width, kSamples);
-  char title[128];
-  std::snprintf(title, sizeof title, "%s at map uv %.3f, %.3f", vp.technique.presetId.c_str(), uvLayer.x, uvLayer.y);
-  Plot plot = depthPlot(title, "receiver depth", "visibility", receiver);
-  plot.series.push_back(
-      evenlySpacedSeries("true (box of " + std::to_string(width) + ")", glm::vec3(0.0f), 2.0f, truth));
-  // The hovered viewport first, then every other shown pre-filtered one at the same point.
+  const VisibilityCurve mine = curveAt(shaders, vp, world, &receiver);
+  if (mine.empty()) return;
+  const std::vector<float> truth = curveTruth(*renderer.scene(), mine);
+  if (truth.size() != mine.values.size()) return;
+  char title[160];
+  std::snprintf(title, sizeof title, "%s: %s vs %s", vp.technique.presetId.c_str(), mine.valueLabel.c_str(),
+                mine.axis.c_str());
+  Plot plot = depthPlot(title, mine.axis, mine.valueLabel, receiver);
+  plot.series.push_back(evenlySpacedSeries(mine.truthLabel, glm::vec3(0.0f), 2.0f, truth));
+  // The hovered viewport first, then every other shown one with a curve on the same axis.
   std::vector<size_t> order{hovered};
   for (size_t i = 0; i < shown.size(); ++i)
     if (i != hovered) order.push_back(i);
   for (size_t i : order) {
-    const auto* other = dynamic_cast<const MomentMapState*>(shown[i]->representation.get());
-    glm::vec3 uv;
-    float depth = 0;
-    if (!other || !mapPointOf(world, shown[i]->lightSpace.primary(), uv, depth)) continue;
-    const std::vector<float> curve = reconstructedCurve(shaders, shown[i]->technique, *other, uv, kSamples);
-    if (curve.size() == truth.size())
+    const VisibilityCurve c = i == hovered ? mine : curveAt(shaders, *shown[i], world, nullptr);
+    if (c.axis == mine.axis && c.values.size() == truth.size())
       plot.series.push_back(evenlySpacedSeries(std::to_string(i + 1) + ": " + shown[i]->technique.presetId,
-                                               plotColour(plot.series.size() - 1), 1.5f, curve));
+                                               plotColour(plot.series.size() - 1), 1.5f, c.values));
   }
-  showPlotWindow("visibility vs receiver depth", plot,
-                 "white: the lit fraction of viewport " + std::to_string(hovered + 1) +
-                     "'s filter box; dashed: this pixel's depth; other viewports at the same surface point, each in "
-                     "its own map",
+  showPlotWindow((mine.valueLabel + " vs " + mine.axis).c_str(), plot,
+                 "black: " + mine.truthLabel + " at viewport " + std::to_string(hovered + 1) +
+                     "'s texel; dashed: this pixel's depth; other viewports at the same surface point, each in its "
+                     "own map",
                  mouse);
 }
 

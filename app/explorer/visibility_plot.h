@@ -1,10 +1,10 @@
-// Hold V over a viewport of a pre-filtered technique: a window next to the mouse plots visibility
-// against receiver depth at the shadow-map texel under the mouse: the true lit fraction of the
-// hovered viewport's filter box, its reconstruction, and the reconstructions of every other
-// shown pre-filtered viewport at the same surface point (VSM, Gaussian, EWGF, Fourier, MSM side
-// by side: leaking and ringing at a glance; the headless twin is `shadowlab plot`). Over a deep
-// shadow map it plots the stored transmittance of the deep texel against light depth over the
-// reference's along that texel's light ray (techniques/deep/deep_curve.h).
+// Hold V over a viewport whose representation has a visibility curve (RepresentationState::
+// visibilityCurve): a window next to the mouse plots it at the shadow-map texel under the mouse
+// with its truth, and the curves of every other shown viewport on the same axis at the same
+// surface point. Pre-filtered maps: visibility against receiver depth, the truth the lit
+// fraction of the filter box (VSM, Gaussian, EWGF, Fourier, MSM side by side: leaking and ringing
+// at a glance; the headless twin is `shadowlab plot`). Deep shadow maps: transmittance against
+// light depth, the truth the reference traced along the texel's light ray.
 #pragma once
 
 #include "explorer/magnifier.h"
@@ -15,7 +15,7 @@
 namespace sl {
 
 // `target` is the hovered image of shown[hovered] (its size is the rendered frame's); the
-// renderer must hold this frame's G-buffer. Draws nothing for a technique that stores no moments.
+// renderer must hold this frame's G-buffer. Draws nothing for a representation without a curve.
 void drawVisibilityPlot(ShaderLibrary& shaders, const Renderer& renderer, const std::vector<Viewport*>& shown,
                         size_t hovered, const MagnifierTarget& target, ImVec2 mouse);
 

@@ -3,8 +3,9 @@
 #include "plot/visibility_plot_data.h"
 
 #include "gl/shader_library.h"
-#include "prefiltered/visibility_curve.h"
+#include "part/light_frame.h"
 #include "render/renderer.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <sstream>
@@ -39,21 +40,23 @@ Plot visibilityPlot(ShaderLibrary& shaders, const Scene& scene, const Camera& ca
     in.width = r.width;
     in.height = r.height;
     renderer.render(in, {&vp});
-    const auto* state = dynamic_cast<const MomentMapState*>(vp.representation.get());
-    if (!state)
-      throw std::runtime_error("technique '" + id + "' is not pre-filtered (its representation stores no moments)");
+    CurveQuery q{
+        .shaders = &shaders, .technique = &vp.technique, .view = &vp.lightSpace.primary(), .samples = r.samples};
     if (plot.series.empty()) {
       const std::vector<float> pos = renderer.gPosition().readFloats(4);
       const size_t i = (static_cast<size_t>(py) * size_t(r.width) + size_t(px)) * 4;
       if (pos[i + 3] < 0.5f) throw std::runtime_error(where + " shows no surface");
       if (!mapPointOf(glm::vec3(pos[i], pos[i + 1], pos[i + 2]), vp.lightSpace.primary(), uvLayer, receiver))
         throw std::runtime_error(where + " is behind the light's view");
-      const int box = vp.technique.params.i("filter.width");
-      series("true (box of " + std::to_string(box) + " texels)", glm::vec3(0.0f), 2.5f,
-             trueCurve(*state->depthTexture(), uvLayer, box, r.samples));
     }
-    series(id, plotColour(plot.series.size() - 1), 1.5f,
-           reconstructedCurve(shaders, vp.technique, *state, uvLayer, r.samples));
+    q.uvLayer = uvLayer;
+    const VisibilityCurve c = vp.representation->visibilityCurve(q);
+    if (c.axis != "receiver depth" || c.truth.empty())
+      throw std::runtime_error("technique '" + id +
+                               "' is not pre-filtered (its representation has no visibility curve against receiver "
+                               "depth)");
+    if (plot.series.empty()) series(c.truthLabel, glm::vec3(0.0f), 2.5f, c.truth);
+    series(id, plotColour(plot.series.size() - 1), 1.5f, c.values);
   }
   std::ostringstream title;
   title << scene.name << ", " << where << ": visibility vs receiver depth at map uv " << uvLayer.x << ", " << uvLayer.y;

@@ -77,14 +77,6 @@ std::string materialDefines(int variant) {
   return d;
 }
 
-std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment) {
-  if (!layout.tessellatesCasters()) return {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, fragment}};
-  return {{GL_VERTEX_SHADER, "passes/shadow.vert"},
-          {GL_TESS_CONTROL_SHADER, "passes/shadow_warp.tesc"},
-          {GL_TESS_EVALUATION_SHADER, "passes/shadow_warp.tese"},
-          {GL_FRAGMENT_SHADER, fragment}};
-}
-
 bool PassPrograms::patches() const {
   for (const auto& stage : base_.stages)
     if (stage.first == GL_TESS_EVALUATION_SHADER) return true;

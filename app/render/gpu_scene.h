@@ -4,7 +4,7 @@
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "scene/scene.h"
-#include "technique.h"
+#include "part/part.h"
 
 #include <epoxy/gl.h>
 
@@ -25,10 +25,6 @@ struct GpuMesh {
 // executes both sides of every branch, and a discard anywhere disables early depth tests.
 int materialVariant(const Material& m);
 std::string materialDefines(int variant);
-
-// The stages that draw casters into a shadow map of `layout`: passes/shadow.vert, the
-// tessellation stages when the layout bends edges (Layout::tessellatesCasters), `fragment`.
-std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment);
 
 // The programs one pass draws the scene with: `base` plus each variant's defines, built on
 // first use, then `setup` (the pass's uniforms and textures) runs once per program per pass.

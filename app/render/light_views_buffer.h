@@ -2,7 +2,7 @@
 // bound at kLightViewsBinding for every pass of the viewport that owns it.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <epoxy/gl.h>
 

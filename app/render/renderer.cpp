@@ -236,21 +236,6 @@ void Renderer::drawFullscreen() {
   glBindVertexArray(0);
 }
 
-// Every parameter reaches the shaders as a float uniform named after its key, plus the map size
-// and the light; modules declare only what they use. The light views are a uniform block.
-void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light) {
-  for (const auto& d : t.params.decls()) p.set(uniformName(d.key), static_cast<float>(t.params.get(d.key)));
-  p.set("u_shadowMapSize", static_cast<float>(ls.size));
-  setLightUniforms(p, light);
-}
-
-void setLightUniforms(const Program& p, const Light& light) {
-  p.set("u_lightDirection", glm::normalize(light.direction));
-  p.set("u_lightPosition", light.position);
-  p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
-  p.set("u_lightRadius", light.radius);
-}
-
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {
   if (!scene_) throw std::runtime_error("renderer: no scene loaded");
   bool needMotion = false;

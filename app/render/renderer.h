@@ -6,10 +6,12 @@
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 #include "render/light_views_buffer.h"
 #include "render/volumes_buffer.h"
-#include "technique.h"
+#include "part/frame_graph.h"
+#include "part/part.h"
+#include "part/uniforms.h"
 
 #include <cstdint>
 #include <functional>
@@ -23,58 +25,8 @@ namespace sl {
 
 struct GpuScene;
 
-// Uploads every technique parameter as float uniform u_<key>, the shadow-map size and the light.
-// (The light views themselves are a uniform block: LightViewsBuffer.)
-void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
-// The light's uniforms alone (common/light.glsl), for passes that shade without a technique.
-void setLightUniforms(const Program& p, const Light& light);
-
 // Names of the debug views every technique offers; accumulations add their own.
 const std::vector<std::string>& commonViewNames();
-
-// Screen-space inputs an accumulation reads and the output it must write.
-struct AccumulationContext {
-  std::string viewportTag;      // unique per viewport, used in pass/resource names
-  std::string rawVisibility;    // resource: RG16F (visibility, confidence)
-  std::string finalVisibility;  // resource the accumulation must write: R channel = visibility
-  const Texture2D* rawVisibilityTex = nullptr;
-  Texture2D* finalVisibilityTex = nullptr;
-  const Texture2D* gPosition = nullptr;  // RGBA32F world position, w = 1 where covered
-  const Texture2D* gNormal = nullptr;    // RGBA32F world normal
-  const Texture2D* gMotion = nullptr;    // RGBA32F: previous frame NDC xyz (per-object motion), w valid
-  ShaderLibrary* shaders = nullptr;
-  const ParamSet* params = nullptr;
-  glm::mat4 view{1.0f}, proj{1.0f}, prevView{1.0f}, prevProj{1.0f};
-  int width = 0, height = 0;
-  bool cameraMoved = false;
-  int frameIndex = 0;
-  // Debug views requested on screen for this viewport, and where to draw them (RGBA8 targets).
-  std::map<std::string, Texture2D*> viewTargets;
-  // For accumulations that run the shadow test and the shading in their own pass, as the paper
-  // does with multiple render targets: the technique's GLSL modules (a ProgramSpec prelude), a
-  // binder for the G-buffer (u_gPosition, u_gNormal, u_gAlbedo, u_gSurface), every part's
-  // bindings (shadow map, light views) and the technique's uniforms, and the colour target. Such
-  // a pass writes rawVisibility itself.
-  std::string techniquePrelude;
-  std::function<void(const Program&, TextureUnits&)> bindTechniqueInputs;
-  std::string shadowMap;  // resource
-  std::string color;      // resource
-  Texture2D* colorTex = nullptr;
-  Texture2D* depthTex = nullptr;  // the viewport's own depth target for a scene pass
-  // Draw the scene with programs built from `spec` (one per material variant; `setup` sets the
-  // pass's uniforms on each, then u_viewProj, u_prevViewProj, u_prevView, per-instance
-  // transforms and materials are set; depth test on) and the sky (colour attachment 0 only)
-  // into the bound framebuffer.
-  std::function<void(const ProgramSpec&, const std::function<void(const Program&, TextureUnits&)>&)> drawScene;
-  std::function<void()> drawSky;
-  Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
-  // The raw test must be written even when no view of this frame reads it (readback, tests).
-  bool keepRawVisibility = true;
-  // An accumulation may show a texture of its own (R = visibility) instead of writing
-  // finalVisibilityTex: one render target less per pixel on a software rasterizer.
-  const Texture2D* shownVisibilityTex = nullptr;
-  bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
-};
 
 // The camera and scene time a frame was rendered with: what the next frame's motion, reprojection
 // and "camera moved" are relative to.

@@ -8,6 +8,7 @@
 #include "render/renderer.h"
 #include "tour/figure_plot.h"
 #include "tour/step_plot.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // stepPlot (see step_plot.h).
 #include "tour/step_plot.h"
 
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 #include "plot/visibility_plot_data.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The empty accumulation: each frame's shadow test is shown as it is.
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 

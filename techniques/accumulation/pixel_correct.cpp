@@ -4,8 +4,8 @@
 
 #include "gl/texture_units.h"
 
-#include "render/frame_graph.h"
-#include "render/renderer.h"
+#include "part/frame_graph.h"
+#include "part/uniforms.h"
 
 #include <glm/gtc/constants.hpp>
 

@@ -5,7 +5,7 @@
 // the shadow map differently and some test lands close to a texel centre for every pixel.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 #include "gl/gl_util.h"
 
 #include <array>

@@ -3,6 +3,7 @@
 #include "metrics/metrics.h"
 #include "reference/reference.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <fstream>

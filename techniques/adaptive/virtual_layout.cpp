@@ -1,13 +1,13 @@
 #include "adaptive/virtual_layout.h"
-#include "part_view.h"
+#include "part/part_view.h"
 
 #include "adaptive/page_allocator.h"
 #include "adaptive/quadtree_fit.h"
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "layouts/light_frame.h"
-#include "render/frame_graph.h"
+#include "part/light_frame.h"
+#include "part/frame_graph.h"
 
 #include <algorithm>
 #include <cctype>

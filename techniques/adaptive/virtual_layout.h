@@ -4,7 +4,7 @@
 // physical atlas (virtual.pool²); pages stay in the atlas while nothing that affects them moved.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 

@@ -1,5 +1,7 @@
 #include "deep/deep_curve.h"
 
+#include "part/light_frame.h"
+
 #include <algorithm>
 
 namespace sl {
@@ -13,15 +15,6 @@ glm::ivec2 texelOf(const DeepState& state, glm::vec2 uv) {
 }
 
 }  // namespace
-
-glm::vec3 lightRayPoint(const LightView& view, glm::vec2 uv, float d) {
-  const glm::mat4 invView = glm::inverse(view.view);
-  glm::vec4 q = glm::inverse(view.proj) * glm::vec4(uv * 2.0f - 1.0f, 0.0f, 1.0f);
-  q /= q.w;
-  const float dist = view.nearPlane + d * (view.farPlane - view.nearPlane);
-  const glm::vec3 p = view.perspective ? glm::vec3(q) * (dist / std::max(-q.z, 1e-12f)) : glm::vec3(q.x, q.y, -dist);
-  return glm::vec3(invView * glm::vec4(p, 1.0f));
-}
 
 std::vector<float> deepTexelCurve(const DeepState& state, glm::vec2 uv, int layer, int samples) {
   if (!state.active() || !state.counts() || samples < 2) return {};
@@ -52,14 +45,15 @@ std::vector<float> deepTexelCurve(const DeepState& state, glm::vec2 uv, int laye
   return curve;
 }
 
-std::vector<float> referenceTexelCurve(const ReferenceTracer& tracer, const LightView& view, const DeepState& state,
-                                       glm::vec2 uv, int samples) {
-  if (!state.active() || !state.counts() || samples < 2) return {};
-  const glm::vec2 centre = (glm::vec2(texelOf(state, uv)) + 0.5f) / float(state.counts().width());
-  std::vector<float> curve;
-  for (int s = 0; s < samples; ++s)
-    curve.push_back(tracer.transmittanceToLight(lightRayPoint(view, centre, float(s) / float(samples - 1))));
-  return curve;
+VisibilityCurve DeepState::visibilityCurve(const CurveQuery& q) const {
+  VisibilityCurve c{.axis = "light depth", .valueLabel = "transmittance"};
+  c.values = deepTexelCurve(*this, glm::vec2(q.uvLayer), static_cast<int>(q.uvLayer.z), q.samples);
+  if (c.values.empty()) return {};
+  c.truthLabel = "reference (opaque hits included)";
+  const glm::vec2 centre = (glm::vec2(texelOf(*this, glm::vec2(q.uvLayer))) + 0.5f) / float(counts().width());
+  for (int s = 0; s < q.samples; ++s)
+    c.truthRay.push_back(lightRayPoint(*q.view, centre, float(s) / float(q.samples - 1)));
+  return c;
 }
 
 }  // namespace sl

@@ -5,9 +5,11 @@
 #include "deep/deep_curve.h"
 #include "deep/deep_state.h"
 #include "scene/volume_density.h"
-#include "prefiltered/visibility_curve.h"
+#include "part/light_frame.h"
+#include "reference/reference.h"
 #include "render/volumes_buffer.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 
@@ -187,16 +189,18 @@ TEST(DeepGl, TexelCurveFollowsTheReference) {
   in.camera = scene.cameras.front();
   in.width = in.height = 32;
   h.renderer.render(in, {&vp});
-  const auto* state = dynamic_cast<const DeepState*>(vp.representation.get());
-  ASSERT_NE(state, nullptr);
   // The light ray through a ground point under the sheets, off their triangles' shared edges
   // (a ray through a vertex hits every triangle around it).
-  glm::vec3 uvLayer;
+  CurveQuery q{.technique = &vp.technique, .view = &vp.lightSpace.primary(), .samples = 200};
   float depth = 0;
-  ASSERT_TRUE(mapPointOf(glm::vec3(0.13f, 0.0f, 0.07f), vp.lightSpace.primary(), uvLayer, depth));
-  const std::vector<float> deep = deepTexelCurve(*state, glm::vec2(uvLayer), 0, 200);
+  ASSERT_TRUE(mapPointOf(glm::vec3(0.13f, 0.0f, 0.07f), vp.lightSpace.primary(), q.uvLayer, depth));
+  const VisibilityCurve curve = vp.representation->visibilityCurve(q);
+  EXPECT_EQ(curve.axis, "light depth");
+  ASSERT_TRUE(curve.truth.empty()) << "a deep map's truth is the reference along the ray";
+  const std::vector<float>& deep = curve.values;
   ReferenceTracer tracer(scene);
-  const std::vector<float> ref = referenceTexelCurve(tracer, vp.lightSpace.primary(), *state, glm::vec2(uvLayer), 200);
+  std::vector<float> ref;
+  for (const glm::vec3& p : curve.truthRay) ref.push_back(tracer.transmittanceToLight(p));
   ASSERT_EQ(deep.size(), 200u);
   ASSERT_EQ(ref.size(), 200u);
   EXPECT_NEAR(deep.front(), 1.0f, 1e-4f);

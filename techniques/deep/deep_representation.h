@@ -2,7 +2,7 @@
 // smoke, plus the depth test for opaque casters. techniques/deep/README.md.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <memory>
 #include <vector>

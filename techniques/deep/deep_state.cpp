@@ -1,10 +1,10 @@
 #include "deep/deep_state.h"
-#include "part_view.h"
+#include "part/part_view.h"
 
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
-#include "render/gpu_scene.h"
+#include "part/frame_graph.h"
+#include "part/part.h"
 #include "scene/scene_effects.h"
 
 #include <algorithm>

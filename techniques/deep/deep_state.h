@@ -5,9 +5,9 @@
 // no deep pass, no define, the same shaders as depth-nearest.
 #pragma once
 
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 #include "gl/gl_util.h"
-#include "technique.h"
+#include "part/part.h"
 
 #include <string>
 #include <vector>
@@ -29,6 +29,7 @@ class DeepState : public RepresentationState {
   std::vector<std::string> views() const override;
   std::string status() const override;
   long long texels() const override;
+  VisibilityCurve visibilityCurve(const CurveQuery& query) const override;
 
   bool active() const { return active_; }
   // Of the last frame: fragments that did not fit their texel's list, texels whose function

@@ -4,6 +4,7 @@
 // by its own transmittance.
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 

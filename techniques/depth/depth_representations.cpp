@@ -2,7 +2,7 @@
 // visibility is reconstructed from it (survey: "shadow map as signal reconstruction").
 #include "depth/depth_representations.h"
 
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 
 namespace sl {
 

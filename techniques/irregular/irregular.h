@@ -2,7 +2,7 @@
 // 2008: exact hard-shadow visibility of every visible eye sample, as a representation.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 void registerIrregularRepresentations(std::vector<std::unique_ptr<Representation>>& out);

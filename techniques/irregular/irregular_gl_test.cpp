@@ -5,6 +5,7 @@
 #include "metrics/metrics.h"
 #include "scene/shapes.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

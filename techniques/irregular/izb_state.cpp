@@ -1,8 +1,8 @@
 #include "irregular/izb_state.h"
 
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
-#include "render/renderer.h"
+#include "part/frame_graph.h"
+#include "part/uniforms.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // It keeps the depth map of DepthMapState as the fallback for samples that did not fit.
 #pragma once
 
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
 #include "layouts/cascade_fit.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,7 +3,7 @@
 // bounding sphere and snapped to whole texels so that it does not shimmer.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <vector>
 

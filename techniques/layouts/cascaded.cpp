@@ -8,7 +8,7 @@
 
 #include "gl/shader_library.h"
 #include "layouts/cascade_fit.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/lispsm.h"
 #include "layouts/sdsm.h"
 

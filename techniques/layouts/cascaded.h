@@ -1,6 +1,6 @@
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 void registerCascadedLayouts(std::vector<std::unique_ptr<Layout>>& out);

@@ -3,7 +3,7 @@
 // snapped splits keep their texel grid still while the camera turns and moves.
 #include "gl/shader_library.h"
 #include "layouts/cascade_fit.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/layout_test_util.h"
 #include "technique.h"
 

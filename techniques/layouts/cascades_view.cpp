@@ -1,11 +1,11 @@
 // The `cascades` debug view: which split's map each pixel reads, for teaching where the texel
 // density steps and where the blend bands hide the steps.
 #include "gl/gl_util.h"
-#include "part_view.h"
+#include "part/part_view.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "layouts/cascaded.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 
 namespace sl {
 

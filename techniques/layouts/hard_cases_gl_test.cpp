@@ -5,6 +5,7 @@
 #include "reference/reference.h"
 #include "layouts/hard_cases.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 namespace sl {
 namespace {

@@ -3,6 +3,7 @@
 // free on the GPU, or says in its status why it falls back (tiny frames: this is about wiring).
 #include "bench/bench.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The light space a preset's layout computes for a scene camera, without a GPU (layout tests).
 #pragma once
 
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 #include "technique.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Uniform and focused layouts: one light matrix each, sharing the single-matrix GLSL module.
 #include "layouts/layouts.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/sdsm.h"
 
 namespace sl {

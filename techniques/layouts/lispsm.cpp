@@ -5,7 +5,7 @@
 // looking (anti)parallel to the light (dueling frusta: no warp helps), falls back to focusing.
 #include "layouts/lispsm.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // LiSPSM's free parameter (no GPU): the named endpoints of n, and no pop of the map when the
 // view turns toward the light through the fallback to focusing.
 #include "gl/shader_library.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/layout_test_util.h"
 #include "technique.h"
 

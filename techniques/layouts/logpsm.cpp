@@ -1,7 +1,7 @@
 // The LogPSM layout (see logpsm.h).
 #include "layouts/logpsm.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/lispsm.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,8 +15,7 @@ namespace sl {
 
 namespace {
 
-constexpr int kMaxTessLevel = 64;     // GL_MAX_TESS_GEN_LEVEL is at least 64
-constexpr float kNoWarpDelta = 1e6f;  // δ above this: the warp is the identity to float precision
+constexpr int kMaxTessLevel = 64;  // GL_MAX_TESS_GEN_LEVEL is at least 64
 
 // The longest edge of any triangle in world units (instances' scales included), cached per
 // scene generation (LayoutInput::sceneGeneration; 0 = not cached): it decides how fine the
@@ -50,21 +49,6 @@ float longestCasterEdge(const Scene& scene, uint64_t generation) {
 }
 
 }  // namespace
-
-float logWarp(float t, float delta) {
-  if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
-  const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ
-  return float(std::log1p(x) / std::log1p(1.0 / delta));
-}
-
-glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
-  glm::vec4 c = view.viewProj * glm::vec4(world, 1.0f);
-  if (view.logDelta > 0.0f) {
-    c.w = std::max(c.w, 1e-3f);  // as layouts/single_matrix.glsl: behind the pole is off the map
-    c.y = (2.0f * logWarp(c.y * 0.5f + 0.5f, view.logDelta) - 1.0f) * c.w;
-  }
-  return c;
-}
 
 // Linear interpolation of u(t) over [0, h] errs by at most h^2 max|u''| / 8, with
 // |u''| = 1 / (C (δ + t)^2) largest at t = 0 and C = ln(1 + 1/δ); u in [0, 1] spans `size` texels.

@@ -11,7 +11,7 @@
 // techniques/layouts/README.md for what this is and is not of the paper.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <memory>
 #include <vector>
@@ -19,13 +19,6 @@
 namespace sl {
 
 void registerLogLayouts(std::vector<std::unique_ptr<Layout>>& out);
-
-// The warp of a map's normalized distance t from its near side (t in [0, 1] inside the map;
-// outside it is extended, and clamped far before the logarithm's pole).
-float logWarp(float t, float delta);
-// A world point's clip position in a light view, its log warp applied (w = 1 for orthographic
-// views; other views as viewProj gives them).
-glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world);
 
 // Largest chord error in texels of an edge spanning `span` of the map (t units) from its near
 // side, subdivided into `segments` equal pieces, for a map of `size` texels along y.

@@ -3,7 +3,7 @@
 // budget, the dp/ds curve flatter than LiSPSM's and close to the ideal logarithmic one, and on
 // the GPU: the tessellated map against the ray-traced reference, with and without subdivision.
 #include "tests/gl_test_util.h"
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 #include "layouts/layout_test_util.h"
 #include "layouts/logpsm.h"
 

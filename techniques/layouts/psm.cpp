@@ -10,7 +10,7 @@
 // lights.
 #include "layouts/psm.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

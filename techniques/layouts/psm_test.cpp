@@ -2,7 +2,7 @@
 // in the map, the map keeps the light plane's orientation (the shadow pass culls by winding), and
 // pushing the near plane trades warp for an even depth distribution.
 #include "gl/shader_library.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/layout_test_util.h"
 #include "technique.h"
 

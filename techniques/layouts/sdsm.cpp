@@ -3,8 +3,8 @@
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "layouts/light_frame.h"
-#include "render/frame_graph.h"
+#include "part/light_frame.h"
+#include "part/frame_graph.h"
 
 #include <cstring>
 

@@ -4,7 +4,7 @@
 // this frame, waiting for the GPU), tightens the fit.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <array>
 #include <memory>

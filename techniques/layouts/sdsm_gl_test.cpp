@@ -2,8 +2,9 @@
 // range and light-space box (checked against the G-buffer read back), its result arrives after
 // fit.sdsm_latency frames, and the fitted maps stay finite.
 #include "layouts/cascade_fit.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 // Directional lights; a spot light, or a view (anti)parallel to the light, gets the focused map.
 #include "layouts/tsm.h"
 
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,7 +1,7 @@
 // Trapezoidal shadow maps (no GPU): the trapezoid covers every visible receiver, the focus line
 // lands at tsm.focus_share of the map, and texels are denser near the viewer than with focusing.
 #include "gl/shader_library.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "layouts/layout_test_util.h"
 #include "technique.h"
 

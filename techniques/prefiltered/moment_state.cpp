@@ -2,9 +2,9 @@
 
 #include "gl/texture_units.h"
 #include "prefiltered/moment_views.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 #include "scene/scene_effects.h"
-#include "soft/penumbra_params.h"
+#include "part/penumbra_params.h"
 
 #include <cmath>
 

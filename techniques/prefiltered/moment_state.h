@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include "prefiltered/moment_spec.h"
 #include "scene/scene_effects.h"
-#include "technique.h"
+#include "part/part.h"
 
 #include <functional>
 #include <vector>
@@ -43,6 +43,7 @@ class MomentMapState : public RepresentationState {
   std::vector<std::string> views() const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;
+  VisibilityCurve visibilityCurve(const CurveQuery& query) const override;
   // A fixed filter width is no penumbra: in an area-light scene it says it ignores the radius.
   std::string status() const override { return status_; }
 

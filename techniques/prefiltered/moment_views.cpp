@@ -1,9 +1,9 @@
 #include "prefiltered/moment_views.h"
-#include "part_view.h"
+#include "part/part_view.h"
 
 #include "gl/gl_util.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 
 namespace sl {
 

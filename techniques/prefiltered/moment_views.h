@@ -4,7 +4,7 @@
 // and for the soft ones `blocker-depth` and `penumbra` (their blocker estimate per pixel).
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 

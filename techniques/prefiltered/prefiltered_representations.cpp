@@ -6,7 +6,7 @@
 
 #include "prefiltered/moment_spec.h"
 #include "prefiltered/moment_state.h"
-#include "soft/penumbra_params.h"
+#include "part/penumbra_params.h"
 
 #include <cmath>
 

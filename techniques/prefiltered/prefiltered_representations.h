@@ -1,6 +1,6 @@
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 // vsm, esm, evsm, gaussian, ewgf, msm, convolution (techniques/prefiltered/README.md).

@@ -1,13 +1,20 @@
 #include "prefiltered/visibility_curve.h"
 
-#include "layouts/logpsm.h"
-
 #include "gl/texture_units.h"
-#include "render/renderer.h"
+#include "part/uniforms.h"
 
 #include <cmath>
 
 namespace sl {
+
+VisibilityCurve MomentMapState::visibilityCurve(const CurveQuery& q) const {
+  VisibilityCurve c{.axis = "receiver depth", .valueLabel = "visibility"};
+  const int width = q.technique->params.i("filter.width");
+  c.values = reconstructedCurve(*q.shaders, *q.technique, *this, q.uvLayer, q.samples);
+  c.truthLabel = "true (box of " + std::to_string(width) + " texels)";
+  c.truth = trueCurve(depth_, q.uvLayer, width, q.samples);
+  return c;
+}
 
 std::vector<float> reconstructedCurve(ShaderLibrary& shaders, const Technique& t, const MomentMapState& state,
                                       const glm::vec3& uvLayer, int samples) {
@@ -62,14 +69,6 @@ std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, i
     out.push_back(static_cast<float>(lit) / static_cast<float>(box.size()));
   }
   return out;
-}
-
-bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth) {
-  const glm::vec4 clip = lightViewClip(view, world);  // the log warp (LogPSM) included
-  if (!(clip.w > 1e-6f)) return false;
-  uvLayer = glm::vec3(glm::vec2(clip) / clip.w * 0.5f + 0.5f, 0.0f);
-  depth = (-(view.view * glm::vec4(world, 1.0f)).z - view.nearPlane) / (view.farPlane - view.nearPlane);
-  return true;
 }
 
 }  // namespace sl

@@ -18,8 +18,4 @@ std::vector<float> reconstructedCurve(ShaderLibrary& shaders, const Technique& t
 // The lit fraction of the width x width box of depth texels around uv in `layer`, per depth
 // (reads back only that box).
 std::vector<float> trueCurve(const Texture2D& depth, const glm::vec3& uvLayer, int width, int samples);
-// Where a world point falls in a light view: map uv (layer 0) and stored (linear) depth.
-// False when it is behind the view.
-bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth);
-
 }  // namespace sl

@@ -13,8 +13,8 @@
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
-#include "render/renderer.h"
+#include "part/frame_graph.h"
+#include "part/uniforms.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 

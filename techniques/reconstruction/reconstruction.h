@@ -1,6 +1,6 @@
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 namespace sl {
 // Representations that reconstruct the shadow edge beyond one depth per texel (silhouette maps).

@@ -7,6 +7,7 @@
 #include "reconstruction/silhouette_state.h"
 #include "reference/reference.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <filesystem>
 

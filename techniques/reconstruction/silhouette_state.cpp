@@ -1,9 +1,9 @@
 #include "reconstruction/silhouette_state.h"
-#include "part_view.h"
+#include "part/part_view.h"
 
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 
 namespace sl {
 

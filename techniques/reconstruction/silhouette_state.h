@@ -8,10 +8,10 @@
 // part's midpoint.
 #pragma once
 
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 #include "gl/gl_util.h"
 #include "reconstruction/silhouette_edges.h"
-#include "technique.h"
+#include "part/part.h"
 
 #include <vector>
 

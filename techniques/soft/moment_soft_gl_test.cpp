@@ -2,6 +2,7 @@
 // from a point light to a huge disk, over cascades and under the pixel-correct history, a status naming the light they
 // model, no pass beyond the map's own table, and on `contact` closer to the area-light reference than fixed-width PCF.
 #include "soft/soft_gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 

@@ -5,13 +5,13 @@
 // filters with a rotated Poisson disk of that size in the view it tests. Without an area light
 // (light.radius = 0) no search pass is added and the test is a minimum-kernel PCF.
 #include "soft/pcss.h"
-#include "part_view.h"
-#include "soft/penumbra_params.h"
+#include "part/part_view.h"
+#include "part/penumbra_params.h"
 
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 #include "gl/gl_util.h"
 #include "gl/texture_units.h"
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 #include "scene/scene_effects.h"
 
 #include <memory>

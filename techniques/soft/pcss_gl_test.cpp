@@ -6,6 +6,7 @@
 #include "reference/reference.h"
 #include "scene/scene_effects.h"
 #include "soft/soft_gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <filesystem>

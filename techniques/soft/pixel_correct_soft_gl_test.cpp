@@ -2,10 +2,11 @@
 // follow it, and at rest the history converges to the area light's visibility: after 30 still
 // frames on `contact` well below its first frame's error and below pcss.
 #include "accumulation/pixel_correct.h"
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 #include "metrics/metrics.h"
 #include "reference/reference.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

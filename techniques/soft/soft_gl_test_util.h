@@ -4,6 +4,7 @@
 #pragma once
 
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <string>

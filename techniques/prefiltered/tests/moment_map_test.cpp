@@ -2,6 +2,7 @@
 // to broken texels, the clear value, and every pre-filtered representation rendering finite
 // visibility in [0,1] under every filter method, format, layout and accumulation.
 #include "prefiltered/tests/moment_probe.h"
+#include "technique.h"
 
 #include <random>
 

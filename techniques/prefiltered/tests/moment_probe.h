@@ -8,6 +8,7 @@
 
 #include "prefiltered/moment_state.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <fstream>
 

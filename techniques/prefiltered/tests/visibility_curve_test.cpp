@@ -3,6 +3,7 @@
 // command must write one curve per technique plus the true one.
 #include "prefiltered/visibility_curve.h"
 #include "tests/gl_test_util.h"
+#include "technique.h"
 
 #include <cstdlib>
 #include <fstream>

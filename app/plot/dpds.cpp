@@ -1,7 +1,8 @@
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 
-#include "layouts/light_frame.h"
-#include "layouts/logpsm.h"
+#include "part/light_frame.h"
+#include "part/light_space.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "gl/gl_util.h"
-#include "technique.h"
+#include "part/part.h"
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 // target, every part's bindings and `u_viewSize` set. Call it inside the view's frame-graph pass.
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <functional>
 #include <string>

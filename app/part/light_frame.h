@@ -2,7 +2,7 @@
 // focused shadow map must cover (Brabec et al. 2002: view frustum clipped to the scene).
 #pragma once
 
-#include "technique.h"
+#include "part/part.h"
 
 #include <vector>
 
@@ -57,5 +57,12 @@ LightSpace focusedMap(const LayoutInput& in, const FocusBody& body);
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.
 float quantizeTexelSize(float texel);
+
+// Where a world point falls in a light view: map uv (layer 0) and stored (linear) depth.
+// False when it is behind the view.
+bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth);
+
+// World point at stored depth d on the light ray through map position uv of `view`.
+glm::vec3 lightRayPoint(const LightView& view, glm::vec2 uv, float d);
 
 }  // namespace sl

@@ -2,7 +2,7 @@
 // with depth the ratio falls as 1/z; warps flatten it, cascades turn it into a saw, the ideal
 // logarithmic curve is flat; the SVG has a curve and a legend entry per technique.
 #include "gl/shader_library.h"
-#include "layouts/dpds.h"
+#include "plot/dpds.h"
 #include "layouts/layout_test_util.h"
 
 #include <gtest/gtest.h>

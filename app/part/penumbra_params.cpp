@@ -1,6 +1,6 @@
 // Declared once for every soft representation (pcss, vssm, convolution-soft): the light size the
 // penumbra model uses and the largest region it may search and filter.
-#include "soft/penumbra_params.h"
+#include "part/penumbra_params.h"
 
 #include <cstdio>
 

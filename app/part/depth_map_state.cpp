@@ -1,4 +1,4 @@
-#include "depth/depth_map_state.h"
+#include "part/depth_map_state.h"
 
 #include "gl/texture_units.h"
 #include "scene/scene_effects.h"

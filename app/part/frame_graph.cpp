@@ -1,4 +1,4 @@
-#include "render/frame_graph.h"
+#include "part/frame_graph.h"
 
 #include <algorithm>
 #include <set>

@@ -1,4 +1,4 @@
-#include "layouts/light_frame.h"
+#include "part/light_frame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -233,6 +233,23 @@ LightSpace focusedMap(const LayoutInput& in, const FocusBody& b) {
     return LightSpace::single(
         fitPerspective(light, b.lightView, b.receivers, b.casters, b.size, true, false, in.jitter), b.size);
   return LightSpace::single(fitOrthographic(b.lightView, b.receivers, b.casters, b.size, false, in.jitter), b.size);
+}
+
+bool mapPointOf(const glm::vec3& world, const LightView& view, glm::vec3& uvLayer, float& depth) {
+  const glm::vec4 clip = lightViewClip(view, world);  // the log warp (LogPSM) included
+  if (!(clip.w > 1e-6f)) return false;
+  uvLayer = glm::vec3(glm::vec2(clip) / clip.w * 0.5f + 0.5f, 0.0f);
+  depth = (-(view.view * glm::vec4(world, 1.0f)).z - view.nearPlane) / (view.farPlane - view.nearPlane);
+  return true;
+}
+
+glm::vec3 lightRayPoint(const LightView& view, glm::vec2 uv, float d) {
+  const glm::mat4 invView = glm::inverse(view.view);
+  glm::vec4 q = glm::inverse(view.proj) * glm::vec4(uv * 2.0f - 1.0f, 0.0f, 1.0f);
+  q /= q.w;
+  const float dist = view.nearPlane + d * (view.farPlane - view.nearPlane);
+  const glm::vec3 p = view.perspective ? glm::vec3(q) * (dist / std::max(-q.z, 1e-12f)) : glm::vec3(q.x, q.y, -dist);
+  return glm::vec3(invView * glm::vec4(p, 1.0f));
 }
 
 }  // namespace sl

@@ -1,4 +1,4 @@
-#include "part_view.h"
+#include "part/part_view.h"
 
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"

@@ -1,0 +1,29 @@
+#include "part/light_space.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+bool LightSpace::perspective() const {
+  for (const LightView& v : views)
+    if (v.perspective) return true;
+  return false;
+}
+
+float logWarp(float t, float delta) {
+  if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
+  const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ
+  return float(std::log1p(x) / std::log1p(1.0 / delta));
+}
+
+glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
+  glm::vec4 c = view.viewProj * glm::vec4(world, 1.0f);
+  if (view.logDelta > 0.0f) {
+    c.w = std::max(c.w, 1e-3f);  // as layouts/single_matrix.glsl: behind the pole is off the map
+    c.y = (2.0f * logWarp(c.y * 0.5f + 0.5f, view.logDelta) - 1.0f) * c.w;
+  }
+  return c;
+}
+
+}  // namespace sl

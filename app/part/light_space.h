@@ -1,0 +1,91 @@
+// The light-view data a layout computes and every part reads: one view per shadow-map layer
+// (matrices, planes, window, texel size, split band, projection kind), the jitter an
+// accumulation asks of the rasterization, and what a layout's compute() is given.
+#pragma once
+
+#include "core/params.h"
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace sl {
+
+// Sub-texel change of the rasterization requested by an accumulation (pixel-correct jitter).
+struct LayoutJitter {
+  glm::vec2 offsetTexels{0.0f};
+  float rotationRad = 0.0f;
+  // A point of the area light's disk, in the unit disk (0 = its centre): layouts build the light
+  // frame from the light moved there (layoutLight), so a history over frames integrates the
+  // disk (pixel-correct-soft). No effect when light.radius is 0.
+  glm::vec2 lightSample{0.0f};
+};
+
+// One light view: what one layer of the shadow map sees. Depth stored in the map is always the
+// light-view linear depth mapped to [0,1] over [nearPlane, farPlane], whatever the projection,
+// so biases mean the same thing in every layout.
+struct LightView {
+  glm::mat4 view{1.0f};
+  glm::mat4 proj{1.0f};
+  glm::mat4 viewProj{1.0f};
+  bool perspective = false;
+  float nearPlane = 0.1f;
+  float farPlane = 100.0f;
+  glm::vec2 windowMin{-1.0f}, windowMax{1.0f};  // orthographic window in light-view units
+  // World size of one texel: orthographic = constant; perspective = this times view distance.
+  float texelWorldSize = 0.01f;
+  // Camera view depths this view serves (partitioned layouts pick a view per pixel by them) and
+  // the width of the band, before splitFar, blended with the next view.
+  float splitNear = 0.0f, splitFar = 1e30f, blendBand = 0.0f;
+  // > 0: a logarithmic warp of the map's y after the projection (LogPSM, layouts/logpsm.h):
+  // y in [-1, 1] -> 2 ln(1 + t/logDelta) / ln(1 + 1/logDelta) - 1 with t = (y + 1) / 2.
+  float logDelta = 0.0f;
+};
+
+// δ above this: the log warp is the identity to float precision (LightView::logDelta).
+inline constexpr float kNoWarpDelta = 1e6f;
+
+// The warp of a map's normalized distance t from its near side (t in [0, 1] inside the map;
+// outside it is extended, and clamped far before the logarithm's pole).
+float logWarp(float t, float delta);
+// A world point's clip position in a light view, its log warp applied (w = 1 for orthographic
+// views; other views as viewProj gives them).
+glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world);
+
+constexpr int kMaxLightViews = 8;
+
+// What a layout computed for one frame: 1..kMaxLightViews views, one shadow-map layer each,
+// all of `size` x `size` texels. The renderer uploads the views as one uniform block
+// (shaders/common/light_views.glsl).
+struct LightSpace {
+  std::vector<LightView> views{LightView{}};
+  int size = 1024;  // texels per side of every layer
+  const LightView& primary() const { return views.front(); }
+  bool perspective() const;  // any view perspective: stored depth is written per fragment
+  static LightSpace single(const LightView& view, int size) { return LightSpace{{view}, size}; }
+};
+
+// What the visible pixels of an earlier frame covered (sample-distribution fitting, SDSM):
+// camera view depth and position in the light's fixed basis (lightViewMatrix), min and max.
+struct VisibleBounds {
+  bool valid = false;
+  float depthMin = 0, depthMax = 0;
+  glm::vec3 lightMin{0.0f}, lightMax{0.0f};  // x, y and light-view distance
+};
+
+struct LayoutInput {
+  const Scene* scene = nullptr;
+  double time = 0.0;
+  glm::mat4 cameraView{1.0f};
+  glm::mat4 cameraProj{1.0f};
+  const ParamSet* params = nullptr;
+  LayoutJitter jitter;
+  VisibleBounds visible;  // set by SdsmState when fit.sdsm is on and bounds have arrived
+  // Unique per Renderer::setScene call over all renderers (0: unknown). What a layout derives
+  // from the scene's geometry alone may be cached under it (a scene's address may be reused).
+  uint64_t sceneGeneration = 0;
+};
+
+}  // namespace sl

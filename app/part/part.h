@@ -1,0 +1,209 @@
+// A technique is a composition of three independent parts:
+//   Layout         - where shadow-map texels go (uniform, focused, later PSM/LiSPSM/TSM/cascades)
+//   Representation - what a texel stores and how visibility is reconstructed (depth + filter, ...)
+//   Accumulation   - what happens in screen space over time (none, pixel-correct history)
+// Each part is a C++ object plus a GLSL module, declares its parameters once, and knows nothing
+// of the other two. A Preset names one combination with parameter overrides.
+//
+// This header is the part SDK (app/part/): what a layout, a representation or an accumulation may
+// use. The renderer and every technique family depend on it; neither includes the other.
+#pragma once
+
+#include "core/params.h"
+#include "part/contexts.h"
+#include "part/light_space.h"
+#include "scene/scene.h"
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sl {
+
+class FrameGraph;
+
+// The one shape of per-viewport state of every part (layout, representation, accumulation):
+// targets it owns, passes it adds to the frame graph (each subclass says where in the frame),
+// bindings for its GLSL module, compile-time defines, debug views and a status line.
+class PartState {
+ public:
+  virtual ~PartState() = default;
+  virtual void reset() {}  // camera cut: forget everything from earlier frames
+  // Defines placed in the technique prelude (before the modules are included).
+  virtual std::string defines() const { return ""; }
+  // Textures and uniforms of this part's GLSL module, on a program that includes it.
+  virtual void bind(const Program& p, TextureUnits& units) const {}
+  virtual std::vector<std::string> views() const { return {}; }  // debug views it can draw
+  virtual std::string status() const { return ""; }
+  virtual long long texels() const { return 0; }  // GPU texels of the targets it owns
+};
+
+class Layout;
+
+// Per-viewport state of a layout: computes the light views; may add passes that run before the
+// shadow pass (a depth reduction for sample-distribution fitting, page marking).
+class LayoutState : public PartState {
+ public:
+  explicit LayoutState(const Layout& layout) : layout_(layout) {}
+  virtual LightSpace compute(const LayoutInput& in);
+  // Adds passes before the shadow pass; returns the resources the shadow pass must read.
+  virtual std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) { return {}; }
+  // Layouts that rasterize a layer piecewise (paged virtual maps) keep the rest of the layer
+  // between frames (drawsTiles). shadowTiles: the tiles of `layer` to draw this frame. `kept`:
+  // the representation bound the layer without clearing it (RepresentationState::bindShadowLayer),
+  // so tiles cached from earlier frames are still there.
+  virtual bool drawsTiles() const { return false; }
+  virtual int shadowTiles(int layer, bool kept) { return 0; }
+  // Before tile `tile` is drawn into the bound layer: sets the viewport and clears the tile.
+  virtual void beginShadowTile(int layer, int tile) {}
+  // The tile's uniforms (its page-local projection) on each program that draws it.
+  virtual void bindShadowTile(const Program& p, int layer, int tile) const {}
+  // The clip transform the tile's draw uses after `layerViewProj` (its page of the layer), so
+  // instances outside the tile can be skipped (shadowmap.cull_instances).
+  virtual glm::mat4 shadowTileClip(int layer, int tile, const glm::mat4& layerViewProj) const { return layerViewProj; }
+
+ protected:
+  const Layout& layout_;
+};
+
+class Layout {
+ public:
+  virtual ~Layout() = default;
+  virtual std::string id() const = 0;
+  virtual std::string help() const = 0;
+  virtual std::string glslModule() const = 0;  // under shaders/, included by every pass using it
+  virtual std::vector<ParamDecl> params() const { return {}; }
+  virtual LightSpace compute(const LayoutInput& in) const = 0;
+  // True when casters must be drawn as patches (tessellation stages between shadow.vert and the
+  // fragment shader): a warp that is not a projective map (LogPSM) bends straight edges.
+  virtual bool tessellatesCasters() const { return false; }
+  // Layouts with memory between frames or passes of their own return their own state.
+  virtual std::unique_ptr<LayoutState> createState() const { return std::make_unique<LayoutState>(*this); }
+};
+
+struct Technique;
+
+// What a representation shows in the V plot at one map texel: its visibility (or transmittance)
+// at `samples` depths evenly over [0, 1], and the truth it is judged by, either a curve it
+// computes itself (a pre-filtered map: the lit fraction of its filter box) or the world points on
+// the texel's light ray at those depths, for the caller to trace (a deep map's transmittance).
+struct VisibilityCurve {
+  std::string axis;        // "receiver depth", "light depth"; empty: this representation has none
+  std::string valueLabel;  // "visibility", "transmittance"
+  std::vector<float> values;
+  std::string truthLabel;
+  std::vector<float> truth;         // or empty, and then
+  std::vector<glm::vec3> truthRay;  // the points to trace, one per value
+  bool empty() const { return axis.empty() || values.empty(); }
+};
+
+struct CurveQuery {
+  ShaderLibrary* shaders = nullptr;
+  const Technique* technique = nullptr;  // the state's own, with this frame's values
+  const LightView* view = nullptr;       // the view the texel is in
+  glm::vec3 uvLayer{0.0f};               // map uv and layer
+  int samples = 256;
+};
+
+// Per-viewport state of a representation: owns the shadow-map targets (depth and what a texel
+// stores, one layer per light view), may add passes after the shadow pass (blur, mip-maps,
+// summed-area tables) and binds what its GLSL module samples.
+class RepresentationState : public PartState {
+ public:
+  // Called every frame before prepare with the technique's current values: targets, formats
+  // and defines may depend on them (storage format, filter method, number of terms).
+  virtual void configure(const ParamSet& params) {}
+  // Called every frame before configure: what the scene calls for (e.g. semi-transparent
+  // casters) may decide the passes and defines.
+  virtual void setScene(const Scene& scene) {}
+  // Allocates (or keeps) the targets: size x size texels, `layers` layers.
+  virtual void prepare(int size, int layers) = 0;
+  // Binds one layer of the targets for the shadow pass and clears it.
+  virtual void beginShadowLayer(int layer) = 0;
+  // Binds one layer for a layout that draws it piecewise; returns true when the layer's content
+  // was kept (not cleared): then tiles drawn in earlier frames can be reused. By default the
+  // layer is cleared as by beginShadowLayer (representations whose passes read the whole layer).
+  virtual bool bindShadowLayer(int layer) {
+    beginShadowLayer(layer);
+    return false;
+  }
+  // Adds passes after the shadow pass (reading ctx.shadowMap); returns the resource the
+  // visibility and shading passes read.
+  virtual std::string addPasses(FrameGraph& graph, const PartContext& ctx) { return ctx.shadowMap; }
+  // Depth (or what stands for it) per layer, for the debug views.
+  virtual const Texture2D* depthTexture() const = 0;
+  // The V plot's curves at one texel of the last frame's map (none by default).
+  virtual VisibilityCurve visibilityCurve(const CurveQuery& query) const { return {}; }
+};
+
+class Representation {
+ public:
+  virtual ~Representation() = default;
+  virtual std::string id() const = 0;
+  virtual std::string help() const = 0;
+  // Defines representationVisibility(vec3 uvLayer, float receiverDepth) and
+  // representationFilterRadius().
+  virtual std::string glslModule() const = 0;
+  virtual std::vector<ParamDecl> params() const { return {}; }
+  // Fragment shader of the shadow-map pass; moment representations write their own targets.
+  virtual std::string shadowMapFragment() const { return "passes/shadow.frag"; }
+  // True when the shadow pass must draw only opaque casters (the representation handles the
+  // semi-transparent ones in passes of its own: deep shadow maps).
+  virtual bool opaqueShadowPass() const { return false; }
+  virtual std::unique_ptr<RepresentationState> createState() const = 0;
+};
+
+// Per-viewport state of an accumulation (history buffers, adaptive exponents, frame counters).
+class AccumulationState : public PartState {
+ public:
+  // cameraMoved: the camera differs from the previous frame's.
+  virtual LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const { return {}; }
+  // Adds passes that read ctx.rawVisibility and write ctx.finalVisibility; returns false when
+  // the accumulation does nothing, in which case the raw visibility is used directly.
+  virtual bool addPasses(FrameGraph& graph, AccumulationContext& ctx) { return false; }
+  // False when the accumulation's own pass computes the shadow test (and writes the raw
+  // visibility itself), so the renderer adds no separate visibility pass.
+  virtual bool needsVisibilityPass() const { return true; }
+};
+
+class Accumulation {
+ public:
+  virtual ~Accumulation() = default;
+  virtual std::string id() const = 0;
+  virtual std::string help() const = 0;
+  virtual std::vector<ParamDecl> params() const { return {}; }
+  virtual std::unique_ptr<AccumulationState> createState() const = 0;
+  // True when every frame stands alone (no passes), so the renderer may fuse the visibility
+  // and shading passes.
+  virtual bool passesThrough() const { return false; }
+};
+
+// A named combination with parameter overrides, as a family declares it.
+struct Preset {
+  std::string id;
+  std::string help;
+  std::string layout;
+  std::string representation;
+  std::string accumulation;
+  std::vector<std::string> overrides;  // "key=value"
+};
+
+// A resolved composition with its parameter values.
+struct Technique {
+  std::string presetId;
+  const Layout* layout = nullptr;
+  const Representation* representation = nullptr;
+  const Accumulation* accumulation = nullptr;
+  ParamSet params;            // common + layout + representation + accumulation declarations
+  std::string label() const;  // "pcf (focused + depth-pcf)"
+};
+
+// The stages that draw casters into a shadow map of `layout`: passes/shadow.vert, the
+// tessellation stages when the layout bends edges (Layout::tessellatesCasters), `fragment`.
+std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment);
+
+}  // namespace sl

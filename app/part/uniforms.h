@@ -1,0 +1,16 @@
+// Uniforms every technique program reads: each parameter as u_<key>, the map size, the light.
+#pragma once
+
+#include "part/part.h"
+
+namespace sl {
+
+class Program;
+
+// Uploads every technique parameter as float uniform u_<key>, the shadow-map size and the light.
+// (The light views themselves are a uniform block: the renderer's LightViewsBuffer.)
+void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
+// The light's uniforms alone (common/light.glsl), for passes that shade without a technique.
+void setLightUniforms(const Program& p, const Light& light);
+
+}  // namespace sl
