@@ -11,9 +11,11 @@ A generated table in a markdown file is marked by the command that writes it, on
                                   exits 1 naming the file, line and first differing row
   scripts/doc-tables.py --write   replace each marked table with its command's output
 
-Commands run from the repository root. Only `python3 scripts/...` commands are accepted, so a doc
+Commands run from the repository root. Only `python3 scripts/...` and `shadowlab list --markdown
+TABLE` (the program's declarations; $SHADOWLAB_BINARY or build/shadowlab) are accepted, so a doc
 cannot run anything else.
 """
+import os
 import pathlib
 import shlex
 import subprocess
@@ -30,8 +32,12 @@ def docs():
 
 def run(command, where):
     args = shlex.split(command)
-    if len(args) < 2 or args[0] != "python3" or not args[1].startswith("scripts/"):
-        raise SystemExit(f"{where}: only 'python3 scripts/...' may generate a table, not: {command}")
+    if args[:3] == ["shadowlab", "list", "--markdown"] and len(args) == 4:
+        # The program's own declarations (parts, presets): the binary CMake built, or build/'s.
+        args[0] = os.environ.get("SHADOWLAB_BINARY", str(ROOT / "build" / "shadowlab"))
+    elif len(args) < 2 or args[0] != "python3" or not args[1].startswith("scripts/"):
+        raise SystemExit(
+            f"{where}: only 'python3 scripts/...' or 'shadowlab list --markdown TABLE' may generate a table, not: {command}")
     done = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
     if done.returncode != 0:
         raise SystemExit(f"{where}: '{command}' failed ({done.returncode}): {done.stderr.strip()}")

@@ -1,25 +1,9 @@
-// The one list of technique families. A new paper adds its register call here and nothing else.
+// The one list of technique families (each folder's family.cpp declares its parts and presets),
+// the parameters every technique has, and techniques built from presets.
 #include "technique.h"
 #include "param_hints.h"
 
-#include "adaptive/virtual_layout.h"
-#include "deep/deep_representation.h"
-#include "depth/depth_representations.h"
-#include "irregular/irregular.h"
-#include "layouts/cascaded.h"
-#include "layouts/face_partitioned.h"
-#include "layouts/layouts.h"
-#include "layouts/lispsm.h"
-#include "layouts/logpsm.h"
-#include "prefiltered/prefiltered_representations.h"
-#include "layouts/psm.h"
-#include "layouts/tsm.h"
-#include "reconstruction/reconstruction.h"
-#include "soft/pcss.h"
-
 namespace sl {
-
-void registerAccumulations(std::vector<std::unique_ptr<Accumulation>>& out);
 
 namespace {
 
@@ -104,41 +88,24 @@ const std::vector<ParamDecl>& commonParams() {
   return decls;
 }
 
-const std::vector<std::unique_ptr<Layout>>& allLayouts() {
-  static const auto list = [] {
-    std::vector<std::unique_ptr<Layout>> v;
-    registerBasicLayouts(v);
-    registerWarpedLayouts(v);
-    registerLogLayouts(v);
-    registerCascadedLayouts(v);
-    registerTrapezoidalLayouts(v);
-    registerPerspectiveLayouts(v);
-    registerFacePartitionedLayouts(v);
-    registerAdaptiveLayouts(v);
-    return v;
-  }();
-  return list;
-}
+// The families, in the order `shadowlab list` shows their parts and presets. A new family adds
+// its folder with a family.cpp and one line here.
+Family depthFamily();
+Family accumulationFamily();
+Family layoutsFamily();
+Family adaptiveFamily();
+Family prefilteredFamily();
+Family irregularFamily();
+Family reconstructionFamily();
+Family softFamily();
+Family deepFamily();
 
-const std::vector<std::unique_ptr<Representation>>& allRepresentations() {
-  static const auto list = [] {
-    std::vector<std::unique_ptr<Representation>> v;
-    registerDepthRepresentations(v);
-    registerPrefilteredRepresentations(v);
-    registerIrregularRepresentations(v);
-    registerReconstructionRepresentations(v);
-    registerSoftRepresentations(v);
-    registerDeepRepresentations(v);
-    return v;
-  }();
-  return list;
-}
-
-const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
-  static const auto list = [] {
-    std::vector<std::unique_ptr<Accumulation>> v;
-    registerAccumulations(v);
-    registerForwardAccumulation(v);
+const std::vector<Family>& allFamilies() {
+  static const std::vector<Family> list = [] {
+    std::vector<Family> v;
+    for (Family (*make)() : {depthFamily, accumulationFamily, layoutsFamily, adaptiveFamily, prefilteredFamily,
+                             irregularFamily, reconstructionFamily, softFamily, deepFamily})
+      v.push_back(make());
     return v;
   }();
   return list;
@@ -146,182 +113,45 @@ const std::vector<std::unique_ptr<Accumulation>>& allAccumulations() {
 
 namespace {
 
-// The depth test over the focused (or whole-scene) map, with its filters.
-void addDepthTestPresets(std::vector<Preset>& v) {
-  v.insert(
-      v.end(),
-      {
-          {"standard", "focused shadow map, nearest depth test", "focused", "depth-nearest", "none", {}},
-          {"uniform",
-           "one shadow map over the whole scene, nearest depth test",
-           "uniform",
-           "depth-nearest",
-           "none",
-           {}},
-          {"pcf", "focused shadow map, 3x3 box PCF", "focused", "depth-pcf", "none", {"pcf.kernel=3"}},
-          {"poisson", "focused shadow map, rotated Poisson-disk PCF", "focused", "depth-poisson", "none", {}},
-          {"bilinear", "focused shadow map, hardware bilinear depth compare", "focused", "depth-bilinear", "none", {}},
-      });
-}
-
-// The pixel-correct paper's presets (Scherzer et al. 2007) and the LiSPSM layout it pairs with.
-void addPixelCorrectPresets(std::vector<Preset>& v) {
-  v.insert(v.end(),
-           {
-               {"pixel-correct",
-                "focused map, nearest test, confidence-weighted screen-space history (Scherzer et al. 2007)",
-                "focused",
-                "depth-nearest",
-                "pixel-correct",
-                {}},
-               {"lispsm",
-                "light space perspective shadow map (Wimmer et al. 2004), nearest depth test",
-                "lispsm",
-                "depth-nearest",
-                "none",
-                {}},
-               {"pixel-correct-lispsm",
-                "pixel-correct over a LiSPSM layout, as the paper pairs them",
-                "lispsm",
-                "depth-nearest",
-                "pixel-correct",
-                {}},
-               {"pixel-correct-at-rest",
-                "pixel-correct that shows the layout's plain test while the camera moves and keeps the most confident "
-                "test at rest",
-                "focused",
-                "depth-nearest",
-                "pixel-correct",
-                {"pc.while_moving=test", "pc.keep_best=on"}},
-               {"pixel-correct-pcf",
-                "pixel-correct with 3x3 PCF tests as f(n): smoother edges while converging",
-                "focused",
-                "depth-pcf",
-                "pixel-correct",
-                {"pcf.kernel=3"}},
-           });
-}
-
-// Warping and partitioning layouts with the nearest test, and pixel-correct over cascades.
-void addWarpingPresets(std::vector<Preset>& v) {
-  v.insert(
-      v.end(),
-      {
-          {"psm",
-           "perspective shadow map (Stamminger & Drettakis 2002): post-perspective space, virtual camera slid back, "
-           "nearest depth test",
-           "psm",
-           "depth-nearest",
-           "none",
-           {}},
-          {"logpsm",
-           "logarithmic warp along the view (after Lloyd et al. 2008), casters tessellated within an error budget, "
-           "nearest depth test",
-           "logpsm",
-           "depth-nearest",
-           "none",
-           {}},
-          {"tsm",
-           "trapezoidal shadow map (Martin & Tan 2004): trapezoid around the view frustum to the square map, 80 % "
-           "rule, "
-           "nearest depth test",
-           "tsm",
-           "depth-nearest",
-           "none",
-           {}},
-          {"cascaded",
-           "cascaded / parallel-split shadow maps (Zhang et al. 2006, Engel 2007): 4 snapped splits of shadowmap.size² "
-           "each, practical split scheme, blended borders, nearest depth test",
-           "cascaded",
-           "depth-nearest",
-           "none",
-           {}},
-          {"pixel-correct-cascaded",
-           "pixel-correct over cascades: jitter and confidence in each split's own texels",
-           "cascaded",
-           "depth-nearest",
-           "pixel-correct",
-           {}},
-          {"face-partitioned",
-           "face partitioning (Lloyd et al. 2006): one LiSPSM map per side face of the view frustum, nearest depth "
-           "test",
-           "face-partitioned",
-           "depth-nearest",
-           "none",
-           // Measured: its warped maps' texels are anisotropic, and the slope bias measures the smaller
-           // side; one texel of slope leaves acne near the horizon (techniques/layouts/README.md).
-           {"bias.slope=2"}},
-          {"sdsm",
-           "sample-distribution shadow maps (Lauritzen et al. 2011): cascades split over the visible depth range from "
-           "a GPU reduction (one frame of latency), nearest depth test",
-           "cascaded",
-           "depth-nearest",
-           "none",
-           {"fit.sdsm=on"}},
-      });
-}
-
-// The virtual map's pages under each page criterion.
-void addVirtualPresets(std::vector<Preset>& v) {
-  v.insert(
-      v.end(),
-      {
-          {"virtual",
-           "paged virtual shadow map (Lefohn et al. 2007): 16384² virtual texels over the scene, only the pages and "
-           "mip "
-           "levels the visible pixels need, in one 1920² atlas, cached while nothing moves; nearest depth test",
-           "virtual",
-           "depth-nearest",
-           "none",
-           {}},
-          {"tiled",
-           "the virtual map's pages chosen by a distance heuristic (after Arvo 2004, tiled shadow maps): each pixel's "
-           "world size decides its level, the atlas is the texel budget; nearest depth test",
-           "virtual",
-           "depth-nearest",
-           "none",
-           {"virtual.criterion=distance"}},
-          {"adaptive",
-           "adaptive shadow maps over the virtual map's pages (Fernando et al. 2001, Lefohn et al. 2006): full "
-           "resolution only near last frame's shadow edges, 3 levels coarser elsewhere; nearest depth test",
-           "virtual",
-           "depth-nearest",
-           "none",
-           {"virtual.criterion=edges"}},
-          {"fitted-virtual",
-           "fitted virtual shadow maps (Giegl & Wimmer 2007) over the virtual map's pages: the pixels' footprints "
-           "gathered into a grid over the light's view, read back and fitted into a quadtree on the CPU, whose leaves "
-           "are the pages drawn; nearest depth test",
-           "virtual",
-           "depth-nearest",
-           "none",
-           {"virtual.criterion=fitted"}},
-      });
+// Every family's parts of one kind, in family order.
+template <typename T>
+std::vector<const T*> gather(std::vector<std::unique_ptr<T>> Family::*parts) {
+  std::vector<const T*> out;
+  for (const Family& f : allFamilies())
+    for (const auto& p : f.*parts) out.push_back(p.get());
+  return out;
 }
 
 }  // namespace
 
+const std::vector<const Layout*>& allLayouts() {
+  static const auto list = gather(&Family::layouts);
+  return list;
+}
+
+const std::vector<const Representation*>& allRepresentations() {
+  static const auto list = gather(&Family::representations);
+  return list;
+}
+
+const std::vector<const Accumulation*>& allAccumulations() {
+  static const auto list = gather(&Family::accumulations);
+  return list;
+}
+
 const std::vector<Preset>& allPresets() {
   static const std::vector<Preset> presets = [] {
     std::vector<Preset> v;
-    addDepthTestPresets(v);
-    addPixelCorrectPresets(v);
-    addWarpingPresets(v);
-    addVirtualPresets(v);
-    addPrefilteredPresets(v);
-    addIrregularPresets(v);
-    addReconstructionPresets(v);
-    addSoftPresets(v);
-    addDeepPresets(v);
+    for (const Family& f : allFamilies()) v.insert(v.end(), f.presets.begin(), f.presets.end());
     return v;
   }();
   return presets;
 }
 
 template <typename T>
-static const T* findById(const std::vector<std::unique_ptr<T>>& list, const std::string& id) {
-  for (const auto& p : list)
-    if (p->id() == id) return p.get();
+static const T* findById(const std::vector<const T*>& list, const std::string& id) {
+  for (const T* p : list)
+    if (p->id() == id) return p;
   return nullptr;
 }
 

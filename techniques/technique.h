@@ -3,6 +3,7 @@
 // include the part SDK (part/part.h) instead.
 #pragma once
 
+#include "part/family.h"
 #include "part/part.h"
 
 #include <memory>
@@ -12,9 +13,10 @@
 namespace sl {
 
 // The registry of parts and presets (techniques/registry.cpp lists every family).
-const std::vector<std::unique_ptr<Layout>>& allLayouts();
-const std::vector<std::unique_ptr<Representation>>& allRepresentations();
-const std::vector<std::unique_ptr<Accumulation>>& allAccumulations();
+const std::vector<Family>& allFamilies();
+const std::vector<const Layout*>& allLayouts();
+const std::vector<const Representation*>& allRepresentations();
+const std::vector<const Accumulation*>& allAccumulations();
 const std::vector<Preset>& allPresets();
 const Layout* findLayout(const std::string& id);
 const Representation* findRepresentation(const std::string& id);

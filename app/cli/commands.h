@@ -1,8 +1,12 @@
 #pragma once
 
+#include <string>
+
 namespace sl {
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
+// `list --markdown TABLE` (families, presets, parts): the docs' tables (cli/list_markdown.cpp).
+int runListMarkdown(const std::string& table);
 int runReferenceCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
 int runPlotCommand(int argc, char** argv);

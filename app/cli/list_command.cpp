@@ -19,7 +19,15 @@ static void printParams(const std::vector<ParamDecl>& decls) {
   }
 }
 
-int runListCommand(int, char**) {
+int runListCommand(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--markdown") {
+      if (i + 1 >= argc) {
+        std::cerr << "shadowlab list --markdown: name a table (families, presets, parts)\n";
+        return 2;
+      }
+      return runListMarkdown(argv[i + 1]);
+    }
   std::cout << "techniques (--technique ID, any key below with --set key=value):\n";
   for (const auto& p : allPresets()) {
     std::cout << "  " << std::left << std::setw(18) << p.id << " " << p.help << "  [" << p.layout << " + "
