@@ -99,12 +99,13 @@ Family irregularFamily();
 Family reconstructionFamily();
 Family softFamily();
 Family deepFamily();
+Family optimizedPcfFamily();
 
 const std::vector<Family>& allFamilies() {
   static const std::vector<Family> list = [] {
     std::vector<Family> v;
     for (Family (*make)() : {depthFamily, accumulationFamily, layoutsFamily, adaptiveFamily, prefilteredFamily,
-                             irregularFamily, reconstructionFamily, softFamily, deepFamily})
+                             irregularFamily, reconstructionFamily, softFamily, deepFamily, optimizedPcfFamily})
       v.push_back(make());
     return v;
   }();

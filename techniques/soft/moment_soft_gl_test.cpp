@@ -12,7 +12,7 @@ namespace {
 using test::Frame;
 using test::GlHarness;
 
-Frame render(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
+Frame renderMomentSoft(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
   return test::renderSoft(h, scene, vp, w, hgt);
 }
 
@@ -50,7 +50,7 @@ TEST_P(MomentSoftLights, FiniteAndInRangeFromPointToHugeLights) {
     sets.push_back("shadowmap.size=128");
     Viewport vp(test::compose(layout, p->representation, accumulation, sets));
     vp.shownViews = vp.availableViews();
-    test::expectFiniteShadowAndLight(render(h, scene, vp, 64, 40), std::string(c.light.scene) + " radius " +
+    test::expectFiniteShadowAndLight(renderMomentSoft(h, scene, vp, 64, 40), std::string(c.light.scene) + " radius " +
                                                                        std::to_string(c.light.radius) + " " + c.preset +
                                                                        " " + layout + " " + accumulation);
   }
@@ -70,14 +70,14 @@ TEST(MomentSoftGl, StatusNamesTheLightAndTheTableIsTheOnlyExtraPass) {
     const Scene soft = loadScene("soft", defaultAssetsDir());
     h.renderer.setScene(soft);
     Viewport vp(makeTechnique(preset, {"shadowmap.size=128"}));
-    render(h, soft, vp, 32, 20);
+    renderMomentSoft(h, soft, vp, 32, 20);
     EXPECT_EQ(vp.representation->status(), std::string(preset) + ": light radius 0.03 x 1");
     std::vector<std::string> passes;
     for (const auto& p : h.renderer.stats().passes) passes.push_back(p.name);
     EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "shadowmap[0]", "prefilter.sat[0]", "shade[0]"}));
     const Scene basic = loadScene("basic", defaultAssetsDir());
     h.renderer.setScene(basic);
-    render(h, basic, vp, 32, 20);
+    renderMomentSoft(h, basic, vp, 32, 20);
     EXPECT_EQ(vp.representation->status(),
               std::string(preset) + ": point light (radius 0): no blocker estimate, minimum-kernel box");
   }
@@ -106,7 +106,7 @@ TEST(MomentSoftGl, PenumbraViewsFindTheBlockersPcssFinds) {
   auto found = [&](const char* preset) {
     Viewport vp(makeTechnique(preset, {"shadowmap.size=512"}));
     vp.shownViews = {"penumbra", "blocker-depth"};
-    render(h, scene, vp, 160, 90);
+    renderMomentSoft(h, scene, vp, 160, 90);
     return blockersFound(vp);
   };
   const std::vector<bool> pcss = found("pcss");
@@ -142,7 +142,7 @@ TEST(MomentSoftGl, VssmKernelSubdivisionKeepsEstimatesAndInventsNoBlockers) {
     Viewport vp(makeTechnique(preset, subdivide ? std::vector<std::string>{std::string("vssm.subdivide=") + subdivide}
                                                 : std::vector<std::string>{}));
     vp.shownViews = {"penumbra"};
-    const Frame f = render(h, scene, vp, 192, 108);
+    const Frame f = renderMomentSoft(h, scene, vp, 192, 108);
     if (rmse) *rmse = test::visibilityError(scene, f).rmse;
     return blockersFound(vp);
   };

@@ -1,0 +1,76 @@
+// Optimized PCF (Castaño 2013, as in The Witness): a tent filter of half-width h = (N + 1) / 2
+// texels (N = pcf.kernel) centred on the receiver, evaluated with hardware bilinear compares.
+// Along each axis the texels under the tent are taken in pairs; one bilinear tap placed between
+// a pair at fraction b / (a + b) returns a·V0 + b·V1 up to the factor a + b, the tent's own
+// weights a and b of those two texels. So N = 3, 5, 7 cost 2², 3², 4² taps where a texel-by-texel
+// tent reads (N + 1)². SL_TENT_TEXEL_BY_TEXEL evaluates that texel-by-texel tent instead: the
+// check that the taps reproduce it (techniques/optimized_pcf/optimized_pcf_gl_test.cpp).
+#include "common/receiver_plane.glsl"
+uniform sampler2DArrayShadow u_shadowMap;
+uniform float u_pcf_kernel;
+
+const int kMaxTexels = 8;  // per axis: N = 7 spans 8 texels when the receiver is off a texel centre
+
+float tentWeight(float k, float s, float h) { return max(h - abs(k - s), 0.0); }
+
+// The first and last texel (relative to the receiver's base texel) the tent weighs above zero.
+ivec2 tentTexels(float s, float h) { return ivec2(int(floor(s - h)) + 1, int(ceil(s + h)) - 1); }
+
+#ifdef SL_TENT_TEXEL_BY_TEXEL
+float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth) {
+  ivec2 rx = tentTexels(s.x, h), ry = tentTexels(s.y, h);
+  float lit = 0.0, total = 0.0;
+  for (int y = ry.x; y <= ry.y; ++y)
+    for (int x = rx.x; x <= rx.y; ++x) {
+      float w = tentWeight(float(x), s.x, h) * tentWeight(float(y), s.y, h);
+      // At a texel's centre the bilinear compare reads that texel alone.
+      vec2 uv = (base + vec2(x, y) + 0.5) / size;
+      lit += w * texture(u_shadowMap, vec4(uv, layer, receiverDepthAt(receiverDepth, uv, size)));
+      total += w;
+    }
+  return lit / max(total, 1e-6);
+}
+#else
+// One axis: tap positions (texels from the base texel) and weights, pairing texels k and k + 1.
+int tentTaps(float s, float h, out float position[kMaxTexels / 2], out float weight[kMaxTexels / 2]) {
+  ivec2 range = tentTexels(s, h);
+  int taps = 0;
+  for (int k = range.x; k <= range.y && taps < kMaxTexels / 2; k += 2) {
+    float a = tentWeight(float(k), s, h);
+    float b = k + 1 <= range.y ? tentWeight(float(k + 1), s, h) : 0.0;
+    weight[taps] = a + b;  // > 0: the tent is positive on every texel of the range
+    position[taps] = float(k) + b / max(a + b, 1e-6);
+    ++taps;
+  }
+  return taps;
+}
+
+float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth) {
+  float px[kMaxTexels / 2], wx[kMaxTexels / 2], py[kMaxTexels / 2], wy[kMaxTexels / 2];
+  int nx = tentTaps(s.x, h, px, wx), ny = tentTaps(s.y, h, py, wy);
+  float lit = 0.0, total = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      vec2 uv = (base + vec2(px[i], py[j]) + 0.5) / size;
+      // A tap compares four texels: the receiver's plane at the one it falls in, less the
+      // plane's change over one texel (receiver-plane bias; other modes leave the depth as is).
+      float depth = receiverDepthForFootprint(receiverDepthAt(receiverDepth, uv, size), size);
+      float w = wx[i] * wy[j];
+      lit += w * texture(u_shadowMap, vec4(uv, layer, depth));
+      total += w;
+    }
+  return lit / max(total, 1e-6);
+}
+#endif
+
+float representationVisibility(vec3 uvLayer, float receiverDepth) {
+  vec2 size = vec2(textureSize(u_shadowMap, 0).xy);
+  vec2 t = uvLayer.xy * size - 0.5;  // texel centres at whole numbers
+  vec2 base = floor(t);
+  float h = 0.5 * (u_pcf_kernel + 1.0);
+  return tentVisibility(base, t - base, h, size, uvLayer.z, receiverDepth);
+}
+
+// How far from the receiver (in texels) the filter reads with most of its weight: scales the
+// slope bias. The tent reaches h texels; beyond h - 1/2 its weights are below a quarter of its peak.
+float representationFilterRadius(vec3 p, int view) { return 0.5 * u_pcf_kernel; }
