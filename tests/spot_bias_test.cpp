@@ -53,7 +53,7 @@ TEST(SpotBias, TexelSizeIsFiniteAndSaneAtAndBehindTheLightPlane) {
   ASSERT_TRUE(ls.primary().perspective);
   // What Renderer::techniquePrelude writes for this technique and scene.
   const std::string prelude =
-      "#define SL_BIAS_MODE 3\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#define SL_LIGHT_VIEWS 1\n#include "
+      "#define SL_BIAS_MODE_IS_NORMAL_OFFSET\n#define SL_SPOT_LIGHT\n#define SL_PERSPECTIVE_MAP\n#define SL_LIGHT_VIEWS 1\n#include "
       "\"" +
       t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" + t.representation->glslModule() + "\"\n#endif\n";
   Program& p = h.shaders.get(

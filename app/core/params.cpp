@@ -1,5 +1,7 @@
 #include "core/params.h"
 
+#include <cctype>
+
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -59,6 +61,20 @@ std::string uniformName(const std::string& key) {
   std::string n = "u_";
   for (char c : key) n += (c == '.' || c == '-') ? '_' : c;
   return n;
+}
+
+std::string choiceDefineName(const std::string& key, const std::string& choice) {
+  std::string n = "SL_";
+  for (const std::string& part : {key, std::string("."), choice})
+    for (char c : part) n += std::isalnum(static_cast<unsigned char>(c)) ? char(std::toupper(static_cast<unsigned char>(c))) : '_';
+  return n;
+}
+
+std::string enumDefines(const ParamSet& params) {
+  std::string out;
+  for (const ParamDecl& d : params.decls())
+    if (d.type == ParamType::Enum) out += "#define " + choiceDefineName(d.key, "is." + params.choice(d.key)) + "\n";
+  return out;
 }
 
 ParamSet::ParamSet(std::vector<ParamDecl> decls) : decls_(std::move(decls)) { resetToDefaults(); }

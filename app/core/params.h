@@ -61,4 +61,11 @@ class ParamSet {
   std::map<std::string, double> values_;
 };
 
+// The GLSL define an enum's choice becomes: "bias.mode", "normal-offset" -> "SL_BIAS_MODE_IS_NORMAL_OFFSET".
+std::string choiceDefineName(const std::string& key, const std::string& choice);
+// "#define SL_<KEY>_IS_<CHOICE>\n" for the chosen value of every enum: shaders test `#ifdef` by
+// name, never a position in the choice list (tests/param_defines_test.cpp checks every name a
+// shader uses against the declarations).
+std::string enumDefines(const ParamSet& params);
+
 }  // namespace sl

@@ -164,7 +164,7 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // rasterizer executes both sides of every branch. Representations reconstruct visibility per
   // fragment; vertex stages only need the layout.
   const Technique& t = vp.technique;
-  std::string defines = "#define SL_BIAS_MODE " + std::to_string(t.params.i("bias.mode")) + "\n";
+  std::string defines = enumDefines(t.params);  // SL_BIAS_MODE_IS_SLOPE, ...
   if (scene_->light.type == Light::Type::Spot) defines += "#define SL_SPOT_LIGHT\n";
   // Soft techniques compile their area-light path only where the scene calls for it.
   if (sceneEffects(*scene_).areaLight) defines += "#define SL_AREA_LIGHT\n";

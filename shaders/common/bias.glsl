@@ -1,8 +1,10 @@
-// Shared depth bias (survey: "bias"). SL_BIAS_MODE (from the renderer's prelude, the index of
-// bias.mode): 0 none, 1 constant, 2 slope-scaled, 3 normal offset, 4 receiver plane
-// (common/receiver_plane.glsl: the plane's gradient comes from receiverPlaneGradient below).
-#ifndef SL_BIAS_MODE
-#define SL_BIAS_MODE 2
+// Shared depth bias (survey: "bias"). bias.mode reaches GLSL as the define of its chosen value
+// (the renderer's prelude, core/params.h enumDefines): SL_BIAS_MODE_IS_NONE, _CONSTANT, _SLOPE
+// (slope-scaled + constant), _NORMAL_OFFSET, _RECEIVER_PLANE (common/receiver_plane.glsl: the
+// plane's gradient comes from receiverPlaneGradient below). Without the prelude: slope.
+#if !defined(SL_BIAS_MODE_IS_NONE) && !defined(SL_BIAS_MODE_IS_CONSTANT) && !defined(SL_BIAS_MODE_IS_SLOPE) && \
+    !defined(SL_BIAS_MODE_IS_NORMAL_OFFSET) && !defined(SL_BIAS_MODE_IS_RECEIVER_PLANE)
+#define SL_BIAS_MODE_IS_SLOPE
 #endif
 uniform float u_bias_constant;
 uniform float u_bias_slope;
@@ -10,7 +12,7 @@ uniform float u_bias_normal;
 
 // Receiver position moved along its normal (normal-offset shadows).
 vec3 biasReceiverPosition(vec3 p, vec3 n, float cosTheta, int view) {
-#if SL_BIAS_MODE == 3
+#ifdef SL_BIAS_MODE_IS_NORMAL_OFFSET
   float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
   return p + n * (u_bias_normal * layoutTexelWorldSize(p, view) * sinTheta);
 #else
@@ -20,11 +22,11 @@ vec3 biasReceiverPosition(vec3 p, vec3 n, float cosTheta, int view) {
 
 // Depth offset subtracted from the receiver before the comparison.
 float biasDepth(vec3 p, float cosTheta, int view) {
-#if SL_BIAS_MODE == 0
+#ifdef SL_BIAS_MODE_IS_NONE
   return 0.0;
 #else
   float bias = u_bias_constant;
-#if SL_BIAS_MODE == 2
+#ifdef SL_BIAS_MODE_IS_SLOPE
   {
     // A receiver tilted by theta changes depth by tan(theta) per world unit; a filter that
     // reads texels r away from the receiver sees that change over r more texels.

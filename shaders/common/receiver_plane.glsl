@@ -2,19 +2,16 @@
 // Schüler 2006): a lookup at shadow-map position `tap` compares the stored depth with the
 // receiver's plane extrapolated to that position instead of the receiver's own depth, so a
 // tilted receiver does not shadow itself however steep it is (grazing light), without the large
-// slope-scaled offsets that detach contact shadows. bias.mode = receiver-plane (SL_BIAS_MODE 4)
+// slope-scaled offsets that detach contact shadows. bias.mode = receiver-plane (SL_BIAS_MODE_IS_RECEIVER_PLANE)
 // only; with any other mode the functions below return the receiver's depth unchanged.
 // Set by the visibility term (common/visibility_term.glsl) before each lookup: xy the receiver's
 // uv, zw d(stored depth)/d(uv) of its plane in that view.
-#ifndef SL_BIAS_MODE
-#define SL_BIAS_MODE 2
-#endif
 vec4 sl_receiverPlane = vec4(0.0);
 
 // The receiver's depth at a tap at `tapUV` read by a nearest-texel lookup: the plane at the
 // centre of the texel the tap falls in (that is where the stored depth was rasterized).
 float receiverDepthAt(float receiverDepth, vec2 tapUV, vec2 mapSize) {
-#if SL_BIAS_MODE == 4
+#ifdef SL_BIAS_MODE_IS_RECEIVER_PLANE
   vec2 centre = (floor(tapUV * mapSize) + 0.5) / mapSize;
   // Beyond the far plane (1) the map holds its clear value 1: the plane extrapolated past it
   // must compare as lit there, not as behind the "caster" at 1.
@@ -27,7 +24,7 @@ float receiverDepthAt(float receiverDepth, vec2 tapUV, vec2 mapSize) {
 // For filters the hardware does (bilinear compare): the plane's largest change over the four
 // texels read, subtracted once (receiver-plane bias cannot be applied per tap there).
 float receiverDepthForFootprint(float receiverDepth, vec2 mapSize) {
-#if SL_BIAS_MODE == 4
+#ifdef SL_BIAS_MODE_IS_RECEIVER_PLANE
   return receiverDepth - dot(abs(sl_receiverPlane.zw), 1.0 / mapSize);
 #else
   return receiverDepth;

@@ -13,7 +13,7 @@ vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coo
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, cosTheta, view), view);
   if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return vec2(1.0, 0.0);
   coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
-#if SL_BIAS_MODE == 4 || defined(SL_RECEIVER_PLANE_ALWAYS)
+#if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P, F, view, sc));
 #endif
   float visibility = representationVisibility(vec3(coord.xy, coord.w), coord.z);

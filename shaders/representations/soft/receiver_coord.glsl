@@ -22,7 +22,7 @@ bool receiverShadowCoord(ivec2 pixel, out vec3 uvLayer, out float depth) {
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P.xyz, N, cosTheta, view), view);
   if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return false;
   depth = sc.depth - biasDepth(P.xyz, cosTheta, view);
-#if SL_BIAS_MODE == 4 || defined(SL_RECEIVER_PLANE_ALWAYS)
+#if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P.xyz, F, view, sc));
 #endif
   uvLayer = vec3(sc.uv, float(view));
