@@ -61,4 +61,12 @@ TEST(FrameGraph, HistoryFromLastFrameIsImported) {
   EXPECT_EQ(ok.compile().size(), 2u);
 }
 
+TEST(FrameGraph, TwoPassesOfOneNameAreAWiringMistake) {
+  FrameGraph g;
+  g.add({"shade[0]", {}, {"color[0]"}, [] {}});
+  g.add({"shade[0]", {}, {"color[1]"}, [] {}});
+  g.requestSink("color[0]");
+  EXPECT_THROW(g.compile(), std::logic_error);
+}
+
 }  // namespace sl

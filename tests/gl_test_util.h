@@ -27,6 +27,7 @@ struct GlHarness {
   explicit GlHarness(const std::string& shaderDir = defaultShaderDir()) : shaders(shaderDir), renderer(shaders) {
     enableGlDebugOutput(true);
     resetGlDebugErrorCount();
+    renderer.validateFrameGraph = true;  // every frame's wiring checked before it runs
   }
   // Strict mode for uniforms: a `u_*` uniform that a program reads but nothing sets fails the
   // test (in the program it is only a warning). A test that misspells one on purpose clears

@@ -66,7 +66,8 @@ std::string uniformName(const std::string& key) {
 std::string choiceDefineName(const std::string& key, const std::string& choice) {
   std::string n = "SL_";
   for (const std::string& part : {key, std::string("."), choice})
-    for (char c : part) n += std::isalnum(static_cast<unsigned char>(c)) ? char(std::toupper(static_cast<unsigned char>(c))) : '_';
+    for (char c : part)
+      n += std::isalnum(static_cast<unsigned char>(c)) ? char(std::toupper(static_cast<unsigned char>(c))) : '_';
   return n;
 }
 

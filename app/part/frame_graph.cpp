@@ -37,6 +37,11 @@ std::vector<bool> FrameGraph::liveMask() const {
 }
 
 std::vector<std::string> FrameGraph::compile() const {
+  std::set<std::string> names;
+  for (const Pass& p : passes_)
+    if (!names.insert(p.name).second)
+      throw std::logic_error("frame graph: two passes named '" + p.name +
+                             "' (pass names are debug groups and timings)");
   std::vector<bool> live = liveMask();
   std::set<std::string> produced(imports_.begin(), imports_.end());
   std::vector<std::string> order;

@@ -26,8 +26,9 @@ class FrameGraph {
   void add(Pass pass);
   void requestSink(const std::string& resource);     // something shown or read back needs it
   void importResource(const std::string& resource);  // lives across frames (e.g. last frame's history)
-  // Names of the passes that will run, in submission order. Throws if a read resource is
-  // produced by no pass earlier in the list (a wiring mistake, not user input).
+  // Names of the passes that will run, in submission order. Throws std::logic_error if a read
+  // resource is produced by no pass earlier in the list or two passes share a name (wiring
+  // mistakes, not user input). The renderer calls it on every frame in debug builds and tests.
   std::vector<std::string> compile() const;
   // Runs the culled list; `timer` wraps each pass (timing, debug groups).
   void execute(const std::function<void(const Pass&, const std::function<void()>&)>& wrapper) const;

@@ -8,6 +8,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 
 namespace sl {
 
@@ -79,6 +81,11 @@ void Renderer::bindTechnique(const Program& p, TextureUnits& units, const Viewpo
   vp.layout->bind(p, units);
   vp.representation->bind(p, units);
   vp.accumulation->bind(p, units);
+}
+
+bool Renderer::defaultValidateFrameGraph() {
+  const char* env = std::getenv("SHADOWLAB_VALIDATE_GRAPH");
+  return std::string_view(SHADOWLAB_BUILD_TYPE) == "Debug" || (env && std::string_view(env) == "1");
 }
 
 Renderer::Renderer(ShaderLibrary& shaders) : shaders_(shaders) {
@@ -260,6 +267,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     addViewportPasses(graph, *viewports[i], i, in);
   }
 
+  if (validateFrameGraph) graph.compile();
   auto useGpuTimer = timePasses && !isSoftwareRenderer();
   stats_ = FrameStats{};
   stats_.timer = useGpuTimer ? "gpu-query" : "cpu-fence";

@@ -111,6 +111,11 @@ class Renderer {
   // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
   bool keepGBuffer = true;
   bool hasFreshGBuffer() const { return gbufferFresh_; }  // the last frame drew the G-buffer
+  // Check every frame's wiring before it runs (FrameGraph::compile: a pass reading what no
+  // earlier pass writes, two passes of one name); a mistake throws std::logic_error. On in debug
+  // builds and in every GL test (tests/gl_test_util.h), or with SHADOWLAB_VALIDATE_GRAPH=1.
+  bool validateFrameGraph = defaultValidateFrameGraph();
+  static bool defaultValidateFrameGraph();
 
   // G-buffer of the last frame, for the reference tracer and metrics.
   const Texture2D& gPosition() const { return *gPosition_; }
