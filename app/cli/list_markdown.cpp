@@ -35,7 +35,7 @@ void familiesTable() {
   std::cout << "| family | layouts | representations | accumulations | presets | what it holds |\n"
                "|---|---|---|---|---:|---|\n";
   for (const Family& f : allFamilies())
-    std::cout << "| [" << f.id << "](techniques/" << f.id << "/README.md) | " << joined(idsOf(f.layouts)) << " | "
+    std::cout << "| `techniques/" << f.id << "/` | " << joined(idsOf(f.layouts)) << " | "
               << joined(idsOf(f.representations)) << " | " << joined(idsOf(f.accumulations)) << " | "
               << f.presets.size() << " | " << cell(f.summary) << " |\n";
 }

@@ -1,5 +1,7 @@
 #include "gl/shader_library.h"
 
+#include "gl/storage_blocks.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -237,6 +239,7 @@ void ShaderLibrary::build(const ProgramSpec& spec, Program& program) {
   program.setLocations_.clear();
   program.used_ = false;
   program.checked_ = false;
+  assignStorageBindings(prog);  // storage blocks by name (gl/storage_blocks.h)
   glObjectLabel(GL_PROGRAM, prog, static_cast<GLsizei>(spec.name.size()), spec.name.c_str());
 }
 

@@ -55,7 +55,7 @@ struct PartContext {
   // test, no culling, into whatever framebuffer is bound (the deep shadow map's fragment lists).
   std::function<void(const ProgramSpec&, const std::function<void(const Program&, TextureUnits&)>&)>
       drawSemiTransparent;
-  // Binds the scene's volumes (binding 6 of common/volume_density.glsl), uploaded when they
+  // Binds the scene's volumes (storage block SlVolumes of common/volume_density.glsl), uploaded when they
   // changed: one buffer per renderer, shared with the camera view's volumes pass.
   std::function<void()> bindVolumes;
 };

@@ -1,4 +1,5 @@
 #include "render/volumes_buffer.h"
+#include "gl/storage_blocks.h"
 
 #include "gl/gl_util.h"
 
@@ -31,6 +32,6 @@ void VolumesBuffer::upload(const Scene& scene) {
   label(GL_BUFFER, id_, "volumes");
 }
 
-void VolumesBuffer::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, id_); }
+void VolumesBuffer::bind() const { bindStorage("SlVolumes", id_); }
 
 }  // namespace sl

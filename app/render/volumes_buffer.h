@@ -18,13 +18,12 @@ std::vector<glm::vec4> packVolumes(const Scene& scene);
 
 class VolumesBuffer {
  public:
-  static constexpr GLuint kBinding = 6;  // layout(binding = 6) in volume_density.glsl
   VolumesBuffer() = default;
   VolumesBuffer(const VolumesBuffer&) = delete;
   VolumesBuffer& operator=(const VolumesBuffer&) = delete;
   ~VolumesBuffer();
   void upload(const Scene& scene);
-  void bind() const;  // to kBinding
+  void bind() const;  // to storage block SlVolumes (common/volume_density.glsl)
 
  private:
   GLuint id_ = 0;

@@ -1,12 +1,12 @@
 // The density of the scene's procedural media: the same function as app/scene/volume_density.cpp
 // (exact 32-bit integer hash, same float steps), so the deep shadow map and the reference
-// integrate the same smoke. Volumes come from an SSBO (binding 6, DeepState::uploadVolumes).
+// integrate the same smoke. Volumes come from the storage block SlVolumes (VolumesBuffer).
 struct SlVolume {
   vec4 centerShape;         // xyz centre, w: 0 box, 1 sphere
   vec4 halfSizeExtinction;  // xyz half size (sphere: x radius), w sigma_t
   vec4 noise;               // scale, amount, octaves, seed
 };
-layout(std430, binding = 6) readonly buffer SlVolumes {
+layout(std430) readonly buffer SlVolumes {
   vec4 volumeHeader;  // x: count
   SlVolume volumes[];
 };

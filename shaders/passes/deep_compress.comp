@@ -7,9 +7,9 @@
 // (counted in deepOverflow[1]). Needs the technique prelude (the light views).
 #include "common/volume_density.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, binding = 3) readonly buffer DeepCounts { uint deepCount[]; };
-layout(std430, binding = 4) readonly buffer DeepFragments { vec2 deepFragment[]; };
-layout(std430, binding = 5) buffer DeepOverflow { uint deepOverflow[2]; };
+layout(std430) readonly buffer DeepCounts { uint deepCount[]; };
+layout(std430) readonly buffer DeepFragments { vec2 deepFragment[]; };
+layout(std430) buffer DeepOverflow { uint deepOverflow[2]; };
 layout(rg32f, binding = 0) writeonly uniform image2DArray u_deepNodesOut;
 layout(r32f, binding = 1) writeonly uniform image2DArray u_deepCountsOut;
 uniform float u_deep_size;

@@ -4,9 +4,9 @@
 // end, so memory stays bounded and the status reports it. Needs the technique prelude.
 #include "common/material.glsl"
 uniform float u_deep_size;
-layout(std430, binding = 3) buffer DeepCounts { uint deepCount[]; };
-layout(std430, binding = 4) writeonly buffer DeepFragments { vec2 deepFragment[]; };
-layout(std430, binding = 5) buffer DeepOverflow { uint deepOverflow[2]; };
+layout(std430) buffer DeepCounts { uint deepCount[]; };
+layout(std430) writeonly buffer DeepFragments { vec2 deepFragment[]; };
+layout(std430) buffer DeepOverflow { uint deepOverflow[2]; };
 in vec3 v_world;
 in vec2 v_uv;
 

@@ -6,7 +6,7 @@ layout(local_size_x = 16, local_size_y = 16) in;
 uniform sampler2D u_gPosition;
 uniform mat4 u_cameraView;
 uniform mat4 u_lightView;
-layout(std430, binding = 3) buffer DepthBounds {
+layout(std430) buffer DepthBounds {
   uint bounds[8];  // view depth min, max; light x min, max; y min, max; light depth min, max
 };
 shared uint groupBounds[8];

@@ -18,19 +18,19 @@ struct Sample {
   uint pad0, pad1, pad2;
 };
 
-layout(std430, binding = 0) readonly buffer IzbTriangles { Triangle triangles[]; };
-layout(std430, binding = 1) readonly buffer IzbInstanceBase { uint instanceBase[]; };
-layout(std430, binding = 2) readonly buffer IzbMaterials { Material materials[]; };
-layout(std430, binding = 3) readonly buffer IzbAlpha { uint alphaBytes[]; };
-layout(std430, binding = 4) buffer IzbCounts { uint counts[]; };       // samples per cell
-layout(std430, binding = 5) buffer IzbOffsets { uint offsets[]; };     // exclusive prefix sum, cells + 1
-layout(std430, binding = 6) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
-layout(std430, binding = 7) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
-layout(std430, binding = 8) buffer IzbSamples { Sample samples[]; };   // by pixel
-layout(std430, binding = 9) buffer IzbList { uint list[]; };           // pixel indices, by cell
-layout(std430, binding = 10) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
-layout(std430, binding = 11) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
-layout(std430, binding = 12) buffer IzbCounters { uint counters[]; };  // 0: overflowed, 1: listed
+layout(std430) readonly buffer IzbTriangles { Triangle triangles[]; };
+layout(std430) readonly buffer IzbInstanceBase { uint instanceBase[]; };
+layout(std430) readonly buffer IzbMaterials { Material materials[]; };
+layout(std430) readonly buffer IzbAlpha { uint alphaBytes[]; };
+layout(std430) buffer IzbCounts { uint counts[]; };       // samples per cell
+layout(std430) buffer IzbOffsets { uint offsets[]; };     // exclusive prefix sum, cells + 1
+layout(std430) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
+layout(std430) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
+layout(std430) buffer IzbSamples { Sample samples[]; };   // by pixel
+layout(std430) buffer IzbList { uint list[]; };           // pixel indices, by cell
+layout(std430) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
+layout(std430) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
+layout(std430) buffer IzbCounters { uint counters[]; };  // 0: overflowed, 1: listed
 
 uniform int u_izbGrid;      // cells per side
 uniform vec2 u_izbSize;     // eye samples: the viewport's pixels (whole numbers)

@@ -14,8 +14,8 @@ layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
-layout(std430, binding = 13) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
-layout(std430, binding = 14) buffer IzbDispatch { uint dispatchArgs[3]; };
+layout(std430) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
+layout(std430) buffer IzbDispatch { uint dispatchArgs[3]; };
 const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
 
 // floor(t * size) modulo size, in [0, size): GLSL's % is undefined for negative operands.

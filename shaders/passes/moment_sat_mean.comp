@@ -2,10 +2,10 @@
 // the mean that the summed-area table subtracts before summing (passes/moment_sat.comp).
 layout(local_size_x = 64) in;
 layout(SL_SAT_FORMAT, binding = 0) uniform readonly image2DArray satTable;
-layout(std430, binding = 0) buffer RowSums {
+layout(std430) buffer RowSums {
   vec4 rowSum[];  // xyzw: sums; one per row of the layer
 };
-layout(std430, binding = 1) buffer RowCounts {
+layout(std430) buffer RowCounts {
   vec4 rowCount[];
 };
 uniform int u_layer;

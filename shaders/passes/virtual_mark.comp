@@ -9,8 +9,8 @@ layout(local_size_x = 16, local_size_y = 16) in;
 #include "layouts/virtual_common.glsl"
 #include "layouts/virtual_request.glsl"
 uniform sampler2D u_gPosition;
-layout(std430, binding = 4) buffer PageMarks { uint marks[]; };
-layout(std430, binding = 5) buffer FitGrid { uint fitGrid[]; };
+layout(std430) buffer PageMarks { uint marks[]; };
+layout(std430) buffer FitGrid { uint fitGrid[]; };
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

@@ -2,8 +2,8 @@
 // so the GLSL density can be compared with app/scene/volume_density.cpp.
 #include "common/volume_density.glsl"
 layout(local_size_x = 64) in;
-layout(std430, binding = 7) readonly buffer Points { vec4 points[]; };
-layout(std430, binding = 8) writeonly buffer Values { float values[]; };
+layout(std430) readonly buffer Points { vec4 points[]; };
+layout(std430) writeonly buffer Values { float values[]; };
 uniform int u_count;
 
 void main() {

@@ -8,8 +8,8 @@
 #define SL_PER_PIXEL_VISIBILITY
 uniform sampler2DArray u_shadowMap;
 uniform int u_izbWidth;
-layout(std430, binding = 10) readonly buffer IzbBits { uint shadowBits[]; };
-layout(std430, binding = 11) readonly buffer IzbFallback { uint fallbackBits[]; };
+layout(std430) readonly buffer IzbBits { uint shadowBits[]; };
+layout(std430) readonly buffer IzbFallback { uint fallbackBits[]; };
 
 float representationVisibility(vec3 uvLayer, float receiverDepth) {
   ivec2 px = ivec2(gl_FragCoord.xy);

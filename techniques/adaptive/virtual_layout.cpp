@@ -1,4 +1,5 @@
 #include "adaptive/virtual_layout.h"
+#include "gl/storage_blocks.h"
 #include "part/part_view.h"
 
 #include "adaptive/page_allocator.h"
@@ -210,8 +211,8 @@ class VirtualState : public LayoutState {
     ctx.bindTechnique(p, units);
     ctx.bindGBuffer(p, units);
     bindPreviousVisibility(p, units, ctx);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marks_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, grid_);
+    bindStorage("PageMarks", marks_);
+    bindStorage("FitGrid", grid_);
     glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<uint32_t> values(fitted_ ? fitGridValues() : static_cast<size_t>(pages_.flatSize()));

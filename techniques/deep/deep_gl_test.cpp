@@ -2,6 +2,7 @@
 // there are semi-transparent casters, transmittance matches cases computed by hand and the
 // reference, and bad cases (overflow, opacity 0/1, thin strands) stay finite and in [0,1].
 #include "tests/assets_dir.h"
+#include "gl/storage_blocks.h"
 #include "deep/deep_curve.h"
 #include "deep/deep_state.h"
 #include "scene/volume_density.h"
@@ -59,8 +60,8 @@ TEST(DeepGl, DensityMatchesCpp) {
   ASSERT_TRUE(p.valid()) << p.error();
   p.use();
   p.set("u_count", int(points.size()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, b[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, b[1]);
+  bindStorage("Points", b[0]);
+  bindStorage("Values", b[1]);
   glDispatchCompute(GLuint(points.size() / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(points.size());

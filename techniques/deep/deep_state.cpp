@@ -1,4 +1,5 @@
 #include "deep/deep_state.h"
+#include "gl/storage_blocks.h"
 #include "part/part_view.h"
 
 #include "gl/shader_library.h"
@@ -14,7 +15,6 @@ namespace sl {
 namespace {
 
 // SSBO bindings shared with passes/deep_fragments.frag and passes/deep_compress.comp.
-constexpr GLuint kCountsBinding = 3, kFragmentsBinding = 4, kOverflowBinding = 5;
 
 }  // namespace
 
@@ -112,9 +112,9 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
   const GLuint zero = 0;
   glClearNamedBufferData(fragmentCounts_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glClearNamedBufferData(overflowBuffer_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
+  bindStorage("DeepCounts", fragmentCounts_);
+  bindStorage("DeepFragments", fragments_);
+  bindStorage("DeepOverflow", overflowBuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_);
   glViewport(0, 0, deepSize_, deepSize_);
   glDisable(GL_DEPTH_TEST);
@@ -138,9 +138,9 @@ void DeepState::compressPass(const PartContext& ctx) {
   p.use();
   TextureUnits units;
   ctx.bindTechnique(p, units);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountsBinding, fragmentCounts_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFragmentsBinding, fragments_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowBinding, overflowBuffer_);
+  bindStorage("DeepCounts", fragmentCounts_);
+  bindStorage("DeepFragments", fragments_);
+  bindStorage("DeepOverflow", overflowBuffer_);
   ctx.bindVolumes();
   glBindImageTexture(0, nodes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   glBindImageTexture(1, counts_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);

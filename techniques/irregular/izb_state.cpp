@@ -1,4 +1,5 @@
 #include "irregular/izb_state.h"
+#include "gl/storage_blocks.h"
 
 #include "gl/texture_units.h"
 #include "part/frame_graph.h"
@@ -10,25 +11,6 @@
 namespace sl {
 
 namespace {
-
-// Storage-buffer bindings of shaders/passes/izb_common.glsl.
-enum : GLuint {
-  kBindTriangles = 0,
-  kBindInstanceBase,
-  kBindMaterials,
-  kBindAlpha,
-  kBindCounts,
-  kBindOffsets,
-  kBindBlockSums,
-  kBindPixelCell,
-  kBindSamples,
-  kBindList,
-  kBindBits,
-  kBindFallback,
-  kBindCounters,
-  kBindQueue,
-  kBindDispatch
-};
 
 constexpr long long kQueueCapacity = 1 << 20;  // rows of large triangles
 
@@ -125,22 +107,23 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
   p.set("u_izbCapacity", static_cast<int>(std::min<long long>(capacity_, 0x7fffffff)));
   p.set("u_izbViewProj", gridViewProj_);
   p.set("u_izbSize", glm::vec2(ctx.width, ctx.height));
-  for (auto [binding, buffer] : {std::pair{kBindTriangles, scene_.triangles},
-                                 {kBindInstanceBase, scene_.instanceBase},
-                                 {kBindMaterials, scene_.materials},
-                                 {kBindAlpha, scene_.alpha},
-                                 {kBindCounts, counts_},
-                                 {kBindOffsets, offsets_},
-                                 {kBindBlockSums, blockSums_},
-                                 {kBindPixelCell, pixelCell_},
-                                 {kBindSamples, samples_},
-                                 {kBindList, list_},
-                                 {kBindBits, bits_},
-                                 {kBindFallback, fallback_},
-                                 {kBindCounters, counters_},
-                                 {kBindQueue, queue_},
-                                 {kBindDispatch, dispatch_}})
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+  // The storage blocks of shaders/passes/izb_common.glsl, by name (gl/storage_blocks.h).
+  for (auto [block, buffer] : {std::pair<const char*, GLuint>{"IzbTriangles", scene_.triangles},
+                               {"IzbInstanceBase", scene_.instanceBase},
+                               {"IzbMaterials", scene_.materials},
+                               {"IzbAlpha", scene_.alpha},
+                               {"IzbCounts", counts_},
+                               {"IzbOffsets", offsets_},
+                               {"IzbBlockSums", blockSums_},
+                               {"IzbPixelCell", pixelCell_},
+                               {"IzbSamples", samples_},
+                               {"IzbList", list_},
+                               {"IzbBits", bits_},
+                               {"IzbFallback", fallback_},
+                               {"IzbCounters", counters_},
+                               {"IzbQueue", queue_},
+                               {"IzbDispatch", dispatch_}})
+    bindStorage(block, buffer);
 }
 
 // Count, prefix sum and scatter: the samples of each light-space cell, contiguous in one buffer.
@@ -232,8 +215,8 @@ void IzbState::drawListView(const PartContext& ctx, Texture2D* target) {
 void IzbState::bind(const Program& p, TextureUnits& units) const {
   DepthMapState::bind(p, units);
   p.set("u_izbWidth", width_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindBits, bits_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindFallback, fallback_);
+  bindStorage("IzbBits", bits_);
+  bindStorage("IzbFallback", fallback_);
 }
 
 uint32_t IzbState::counter(int index) const {

@@ -1,4 +1,5 @@
 #include "layouts/sdsm.h"
+#include "gl/storage_blocks.h"
 
 #include "gl/gl_util.h"
 #include "gl/shader_library.h"
@@ -111,7 +112,7 @@ std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartConte
                ctx.bindGBuffer(p, units);
                p.set("u_cameraView", ctx.view);
                p.set("u_lightView", lightViewMatrix(ctx.scene->light, 0.0f));
-               glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, gpu_->buffers[slot]);
+               bindStorage("DepthBounds", gpu_->buffers[slot]);
                glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
                glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
                if (ctx.params->i("fit.sdsm_latency") > 0) return;

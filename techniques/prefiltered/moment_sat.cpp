@@ -4,6 +4,7 @@
 // Any box is then four lookups, whatever its width (shaders/representations/prefiltered/
 // moment_maps.glsl, SL_MOMENT_SAT).
 #include "gl/shader_library.h"
+#include "gl/storage_blocks.h"
 #include "prefiltered/moment_state.h"
 
 #include <vector>
@@ -28,8 +29,8 @@ glm::vec4 finiteMean(ShaderLibrary& shaders, const Texture2D& table, int layers)
   glCreateBuffers(2, buffers);
   const GLsizeiptr bytes = static_cast<GLsizeiptr>(size) * 4 * sizeof(float);
   for (GLuint b : buffers) glNamedBufferData(b, bytes, nullptr, GL_STREAM_READ);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+  bindStorage("RowSums", buffers[0]);
+  bindStorage("RowCounts", buffers[1]);
   glBindImageTexture(0, table.id(), 0, GL_TRUE, 0, GL_READ_ONLY, table.format());
   p.use();
   p.set("u_size", size);
