@@ -70,3 +70,69 @@ TEST(FrameGraph, TwoPassesOfOneNameAreAWiringMistake) {
 }
 
 }  // namespace sl
+
+namespace sl {
+
+// Records what the graph borrows and returns, in order.
+struct RecordingAllocator : TransientAllocator {
+  std::vector<std::string> log;
+  int next = 1;
+  void* acquire(const TextureDesc& d, const std::string& name) override {
+    log.push_back("acquire " + name + " " + std::to_string(d.width));
+    return reinterpret_cast<void*>(static_cast<intptr_t>(next++));
+  }
+  void release(void* t) override { log.push_back("release " + std::to_string(reinterpret_cast<intptr_t>(t))); }
+};
+
+TEST(FrameGraph, TransientTextureIsLentFromItsFirstToItsLastLivePass) {
+  FrameGraph g;
+  RecordingAllocator alloc;
+  std::vector<std::string> seen;
+  auto look = [&](const std::string& pass) { seen.push_back(pass + (g.transient("scratch") ? " has" : " none")); };
+  g.createTexture("scratch", {0x822F /* RG16F */, 64, 32});
+  g.add({"blur.h", {}, {"scratch"}, [&] { look("blur.h"); }});
+  g.add({"blur.v", {"scratch"}, {"blurred"}, [&] { look("blur.v"); }});
+  g.add({"shade", {"blurred"}, {"color"}, [&] { look("shade"); }});
+  g.requestSink("color");
+  g.compile();
+  g.execute([](const Pass&, const std::function<void()>& run) { run(); }, &alloc);
+  EXPECT_EQ(seen, (std::vector<std::string>{"blur.h has", "blur.v has", "shade none"}));
+  EXPECT_EQ(alloc.log, (std::vector<std::string>{"acquire scratch 64", "release 1"}));
+}
+
+TEST(FrameGraph, CulledPassesBorrowNothing) {
+  FrameGraph g;
+  RecordingAllocator alloc;
+  g.createTexture("scratch", {0x822F, 64, 64});
+  g.add({"blur", {}, {"scratch", "blurred"}, [] {}});  // nothing reads "blurred"
+  g.add({"shade", {}, {"color"}, [] {}});
+  g.requestSink("color");
+  g.execute([](const Pass&, const std::function<void()>& run) { run(); }, &alloc);
+  EXPECT_TRUE(alloc.log.empty());
+  EXPECT_TRUE(g.transientLifetimes().empty());
+}
+
+TEST(FrameGraph, TransientWiringMistakesThrow) {
+  auto graphWith = [](TextureDesc d) {
+    FrameGraph g;
+    g.createTexture("t", d);
+    g.add({"p", {}, {"t", "out"}, [] {}});
+    g.requestSink("out");
+    return g;
+  };
+  EXPECT_NO_THROW(graphWith({0x822F, 8, 8}).compile());
+  EXPECT_THROW(graphWith({0, 8, 8}).compile(), std::logic_error);             // no format
+  EXPECT_THROW(graphWith({0x822F, 0, 8}).compile(), std::logic_error);        // empty
+  EXPECT_THROW(graphWith({0x822F, 8, 8, 1, 0}).compile(), std::logic_error);  // no level
+  FrameGraph twice = graphWith({0x822F, 8, 8});
+  twice.createTexture("t", {0x822F, 16, 8});
+  EXPECT_THROW(twice.compile(), std::logic_error);
+  FrameGraph both = graphWith({0x822F, 8, 8});
+  both.importResource("t");
+  EXPECT_THROW(both.compile(), std::logic_error);
+  // A live transient with nowhere to borrow it from.
+  EXPECT_THROW(graphWith({0x822F, 8, 8}).execute([](const Pass&, const std::function<void()>& run) { run(); }),
+               std::logic_error);
+}
+
+}  // namespace sl

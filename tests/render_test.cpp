@@ -176,6 +176,30 @@ TEST(Render, OnlyShownViewsCostAPass) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The blur's scratch target is the frame graph's: two viewports of one map size borrow the same
+// texture in turn, and later frames reuse it (one texture in the pool, not one per viewport).
+TEST(Render, BlurScratchIsOneGraphTextureSharedByViewports) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport a(makeTechnique("vsm", {"shadowmap.size=128", "filter.width=5"}));
+  Viewport b(makeTechnique("vsm", {"shadowmap.size=128", "filter.width=3"}));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 64;
+  in.height = 48;
+  h.renderer.render(in, {&a, &b});
+  EXPECT_EQ(h.renderer.transientTextures().textures(), 1);
+  EXPECT_EQ(h.renderer.transientTextures().texels(), 128LL * 128);
+  h.renderer.render(in, {&a, &b});
+  EXPECT_EQ(h.renderer.transientTextures().textures(), 1);
+  // Without a blur nothing is borrowed, and after a while the pool lets the target go.
+  Viewport c(makeTechnique("standard", {"shadowmap.size=128"}));
+  for (int k = 0; k <= TransientTextures::kKeepFrames; ++k) h.renderer.render(in, {&c});
+  EXPECT_EQ(h.renderer.transientTextures().textures(), 0);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 // One test per (builtin scene, preset), every camera of the scene, every view of the preset
 // shown. ctest runs the tests of one scene in one process (CMakeLists.txt adds them as
 // EveryPreset/<scene>), so they share a GL context, the compiled programs and the loaded scene:

@@ -25,7 +25,6 @@ struct PartContext {
   double time = 0.0;
   ShaderLibrary* shaders = nullptr;
   const ParamSet* params = nullptr;
-  const Layout* layout = nullptr;  // the technique's (its caster stages: casterStages in render/gpu_scene.h)
   const LightSpace* lightSpace = nullptr;
   glm::mat4 view{1.0f}, proj{1.0f};  // the camera
   int width = 0, height = 0;
@@ -60,7 +59,17 @@ struct PartContext {
   std::function<void()> bindVolumes;
 };
 
-// Screen-space inputs an accumulation reads and the output it must write.
+// What an accumulation's passes leave for the renderer: the visibility shown and read back
+// (R = visibility) and the depth the colour's surfaces were drawn with (what passes that
+// composite over the colour read, e.g. participating media).
+struct AccumulationOutput {
+  std::string visibility;  // resource
+  const Texture2D* visibilityTex = nullptr;
+  std::string depth;  // resource that holds depthTex
+  const Texture2D* depthTex = nullptr;
+};
+
+// Screen-space inputs an accumulation reads, the passes it may add and what it writes.
 struct AccumulationContext {
   std::string viewportTag;      // unique per viewport, used in pass/resource names
   std::string rawVisibility;    // resource: RG16F (visibility, confidence)
@@ -96,12 +105,15 @@ struct AccumulationContext {
   std::function<void(const ProgramSpec&, const std::function<void(const Program&, TextureUnits&)>&)> drawScene;
   std::function<void()> drawSky;
   Texture2D* rawVisibilityTarget = nullptr;  // writable when the accumulation computes the test
-  // The raw test must be written even when no view of this frame reads it (readback, tests).
-  bool keepRawVisibility = true;
-  // An accumulation may show a texture of its own (R = visibility) instead of writing
-  // finalVisibilityTex: one render target less per pixel on a software rasterizer.
-  const Texture2D* shownVisibilityTex = nullptr;
-  bool wroteColor = false;  // set by the accumulation when its pass shaded the frame
+  // The renderer's shading passes, for an accumulation to add where it needs them (each returns
+  // what it leaves for the renderer, or adds nothing but its pass):
+  // - addForwardShade: the shadow test and the shading while the scene is rasterized into the
+  //   viewport's own depth; writes `color` and `rawVisibility` (one pass, no G-buffer read).
+  // - addVisibilityTest: the test over the G-buffer, a fullscreen pass writing `rawVisibility`.
+  // - addDeferredShade: the shading of the G-buffer with a visibility resource and its texture.
+  std::function<AccumulationOutput()> addForwardShade;
+  std::function<void()> addVisibilityTest;
+  std::function<AccumulationOutput(const std::string& visibility, const Texture2D* texture)> addDeferredShade;
 };
 
 }  // namespace sl

@@ -43,10 +43,7 @@ void DepthMapState::beginShadowLayer(int layer) {
   glClearNamedFramebufferfi(layers_[static_cast<size_t>(layer)].id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
-bool DepthMapState::bindShadowLayer(int layer) {
-  layers_.at(static_cast<size_t>(layer)).bind();
-  return true;
-}
+void DepthMapState::bindShadowLayer(int layer) { layers_.at(static_cast<size_t>(layer)).bind(); }
 
 void DepthMapState::bind(const Program& p, TextureUnits& units) const {
   units.bind(p, "u_shadowMap", depth_.id(), sampler_);

@@ -15,7 +15,9 @@ class DepthMapState : public RepresentationState {
   ~DepthMapState() override;
   void prepare(int size, int layers) override;
   void beginShadowLayer(int layer) override;
-  bool bindShadowLayer(int layer) override;  // keeps the content: no pass of ours reads the whole layer
+  // Keeps the content: no pass of ours reads the whole layer.
+  bool keepsLayers() const override { return true; }
+  void bindShadowLayer(int layer) override;
   void bind(const Program& p, TextureUnits& units) const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;

@@ -1,6 +1,7 @@
 #include "part/frame_graph.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -10,12 +11,60 @@ void FrameGraph::add(Pass pass) { passes_.push_back(std::move(pass)); }
 
 void FrameGraph::requestSink(const std::string& resource) { sinks_.push_back(resource); }
 
+bool FrameGraph::requested(const std::string& resource) const {
+  return std::find(sinks_.begin(), sinks_.end(), resource) != sinks_.end();
+}
+
 void FrameGraph::importResource(const std::string& resource) { imports_.push_back(resource); }
+
+void FrameGraph::createTexture(const std::string& resource, const TextureDesc& desc) {
+  transients_.emplace_back(resource, desc);
+}
+
+void* FrameGraph::transient(const std::string& resource) const {
+  auto it = lent_.find(resource);
+  return it == lent_.end() ? nullptr : it->second;
+}
 
 void FrameGraph::clear() {
   passes_.clear();
   sinks_.clear();
   imports_.clear();
+  transients_.clear();
+  lent_.clear();
+}
+
+namespace {
+bool uses(const Pass& p, const std::string& r) {
+  return std::find(p.reads.begin(), p.reads.end(), r) != p.reads.end() ||
+         std::find(p.writes.begin(), p.writes.end(), r) != p.writes.end();
+}
+}  // namespace
+
+std::vector<FrameGraph::Lifetime> FrameGraph::transientLifetimes() const {
+  const std::vector<bool> live = liveMask();
+  std::vector<Lifetime> out;
+  for (const auto& [name, desc] : transients_) {
+    Lifetime l{name, passes_.size(), 0};
+    for (size_t k = 0; k < passes_.size(); ++k)
+      if (live[k] && uses(passes_[k], name)) l.first = std::min(l.first, k), l.last = k;
+    if (l.first < passes_.size()) out.push_back(l);
+  }
+  return out;
+}
+
+// Wiring mistakes of transient textures: what they must be, declared once, not also imported.
+void FrameGraph::checkTransients() const {
+  std::map<std::string, TextureDesc> seen;
+  for (const auto& [name, d] : transients_) {
+    if (d.format == 0 || d.width <= 0 || d.height <= 0 || d.layers < 0 || d.levels < 1)
+      throw std::logic_error("frame graph: transient texture '" + name + "' has no format or an empty size");
+    auto [it, fresh] = seen.emplace(name, d);
+    if (!fresh && !(it->second == d))
+      throw std::logic_error("frame graph: transient texture '" + name + "' declared twice, differently");
+    if (std::find(imports_.begin(), imports_.end(), name) != imports_.end())
+      throw std::logic_error("frame graph: '" + name + "' is both imported and transient");
+  }
 }
 
 // Walk backwards: a pass is live when it writes something a later live pass (or a sink) needs.
@@ -37,6 +86,7 @@ std::vector<bool> FrameGraph::liveMask() const {
 }
 
 std::vector<std::string> FrameGraph::compile() const {
+  checkTransients();
   std::set<std::string> names;
   for (const Pass& p : passes_)
     if (!names.insert(p.name).second)
@@ -59,10 +109,29 @@ std::vector<std::string> FrameGraph::compile() const {
   return order;
 }
 
-void FrameGraph::execute(const std::function<void(const Pass&, const std::function<void()>&)>& wrapper) const {
-  std::vector<bool> live = liveMask();
-  for (size_t k = 0; k < passes_.size(); ++k)
-    if (live[k]) wrapper(passes_[k], passes_[k].execute);
+void FrameGraph::execute(const std::function<void(const Pass&, const std::function<void()>&)>& wrapper,
+                         TransientAllocator* allocator) const {
+  const std::vector<bool> live = liveMask();
+  const std::vector<Lifetime> lifetimes = transientLifetimes();
+  auto descOf = [this](const std::string& name) {
+    for (const auto& [n, d] : transients_)
+      if (n == name) return d;
+    return TextureDesc{};
+  };
+  if (!lifetimes.empty() && !allocator)
+    throw std::logic_error("frame graph: transient textures declared but no allocator to lend them");
+  lent_.clear();
+  for (size_t k = 0; k < passes_.size(); ++k) {
+    if (!live[k]) continue;
+    for (const Lifetime& l : lifetimes)
+      if (l.first == k) lent_[l.resource] = allocator->acquire(descOf(l.resource), l.resource);
+    wrapper(passes_[k], passes_[k].execute);
+    for (const Lifetime& l : lifetimes)
+      if (l.last == k) {
+        allocator->release(lent_[l.resource]);
+        lent_.erase(l.resource);
+      }
+  }
 }
 
 }  // namespace sl

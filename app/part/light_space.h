@@ -42,6 +42,10 @@ struct LightView {
   // > 0: a logarithmic warp of the map's y after the projection (LogPSM, layouts/logpsm.h):
   // y in [-1, 1] -> 2 ln(1 + t/logDelta) / ln(1 + 1/logDelta) - 1 with t = (y + 1) / 2.
   float logDelta = 0.0f;
+  // How casters reach the view: through viewProj alone, or bent by the log warp after it (the
+  // shadow pass then tessellates casters so their edges follow the bend; shadow_draw_plan.h).
+  enum class Projection { Matrix, LogWarp };
+  Projection projection = Projection::Matrix;
 };
 
 // δ above this: the log warp is the identity to float precision (LightView::logDelta).

@@ -10,12 +10,4 @@ std::string Technique::label() const {
   return s + ")";
 }
 
-std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment) {
-  if (!layout.tessellatesCasters()) return {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, fragment}};
-  return {{GL_VERTEX_SHADER, "passes/shadow.vert"},
-          {GL_TESS_CONTROL_SHADER, "passes/shadow_warp.tesc"},
-          {GL_TESS_EVALUATION_SHADER, "passes/shadow_warp.tese"},
-          {GL_FRAGMENT_SHADER, fragment}};
-}
-
 }  // namespace sl

@@ -12,6 +12,7 @@
 #include "core/params.h"
 #include "part/contexts.h"
 #include "part/light_space.h"
+#include "part/shadow_draw_plan.h"
 #include "scene/scene.h"
 
 #include <epoxy/gl.h>
@@ -52,19 +53,12 @@ class LayoutState : public PartState {
   virtual LightSpace compute(const LayoutInput& in);
   // Adds passes before the shadow pass; returns the resources the shadow pass must read.
   virtual std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) { return {}; }
-  // Layouts that rasterize a layer piecewise (paged virtual maps) keep the rest of the layer
-  // between frames (drawsTiles). shadowTiles: the tiles of `layer` to draw this frame. `kept`:
-  // the representation bound the layer without clearing it (RepresentationState::bindShadowLayer),
-  // so tiles cached from earlier frames are still there.
-  virtual bool drawsTiles() const { return false; }
-  virtual int shadowTiles(int layer, bool kept) { return 0; }
-  // Before tile `tile` is drawn into the bound layer: sets the viewport and clears the tile.
-  virtual void beginShadowTile(int layer, int tile) {}
-  // The tile's uniforms (its page-local projection) on each program that draws it.
-  virtual void bindShadowTile(const Program& p, int layer, int tile) const {}
-  // The clip transform the tile's draw uses after `layerViewProj` (its page of the layer), so
-  // instances outside the tile can be skipped (shadowmap.cull_instances).
-  virtual glm::mat4 shadowTileClip(int layer, int tile, const glm::mat4& layerViewProj) const { return layerViewProj; }
+  // How the shadow pass draws each light view's layer (one entry per view, whole layers by
+  // default). A layout that rasterizes layers piecewise (paged virtual maps) asks for tiles;
+  // `keepsLayers`: the representation keeps a layer's content when bound for tiles
+  // (RepresentationState::keepsLayers), so tiles drawn in earlier frames are still there.
+  // Called while the shadow pass runs, after this layout's own passes.
+  virtual void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) {}
 
  protected:
   const Layout& layout_;
@@ -78,9 +72,6 @@ class Layout {
   virtual std::string glslModule() const = 0;  // under shaders/, included by every pass using it
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual LightSpace compute(const LayoutInput& in) const = 0;
-  // True when casters must be drawn as patches (tessellation stages between shadow.vert and the
-  // fragment shader): a warp that is not a projective map (LogPSM) bends straight edges.
-  virtual bool tessellatesCasters() const { return false; }
   // Layouts with memory between frames or passes of their own return their own state.
   virtual std::unique_ptr<LayoutState> createState() const { return std::make_unique<LayoutState>(*this); }
 };
@@ -124,13 +115,11 @@ class RepresentationState : public PartState {
   virtual void prepare(int size, int layers) = 0;
   // Binds one layer of the targets for the shadow pass and clears it.
   virtual void beginShadowLayer(int layer) = 0;
-  // Binds one layer for a layout that draws it piecewise; returns true when the layer's content
-  // was kept (not cleared): then tiles drawn in earlier frames can be reused. By default the
-  // layer is cleared as by beginShadowLayer (representations whose passes read the whole layer).
-  virtual bool bindShadowLayer(int layer) {
-    beginShadowLayer(layer);
-    return false;
-  }
+  // True when a layer may be bound without clearing it for a layout that draws it piecewise
+  // (bindShadowLayer), so tiles drawn in earlier frames are reused. Representations whose passes
+  // read the whole layer keep the default: cleared every frame.
+  virtual bool keepsLayers() const { return false; }
+  virtual void bindShadowLayer(int layer) { beginShadowLayer(layer); }
   // Adds passes after the shadow pass (reading ctx.shadowMap); returns the resource the
   // visibility and shading passes read.
   virtual std::string addPasses(FrameGraph& graph, const PartContext& ctx) { return ctx.shadowMap; }
@@ -149,25 +138,24 @@ class Representation {
   // representationFilterRadius().
   virtual std::string glslModule() const = 0;
   virtual std::vector<ParamDecl> params() const { return {}; }
-  // Fragment shader of the shadow-map pass; moment representations write their own targets.
-  virtual std::string shadowMapFragment() const { return "passes/shadow.frag"; }
-  // True when the shadow pass must draw only opaque casters (the representation handles the
-  // semi-transparent ones in passes of its own: deep shadow maps).
-  virtual bool opaqueShadowPass() const { return false; }
+  // Its part of the shadow pass's plan: the fragment stage and which casters it draws.
+  virtual CasterDraw casterDraw() const { return {}; }
   virtual std::unique_ptr<RepresentationState> createState() const = 0;
 };
 
 // Per-viewport state of an accumulation (history buffers, adaptive exponents, frame counters).
+// Its passes take the frame from the representation's output to the viewport's colour: the
+// shadow test (its own pass, or ctx.addVisibilityTest), whatever it does over time, and the
+// shading (ctx.addForwardShade, ctx.addDeferredShade, or a pass of its own that writes ctx.color).
+// Adding passes has no side effects on the state: a pass that runs commits what it changes.
 class AccumulationState : public PartState {
  public:
   // cameraMoved: the camera differs from the previous frame's.
   virtual LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const { return {}; }
-  // Adds passes that read ctx.rawVisibility and write ctx.finalVisibility; returns false when
-  // the accumulation does nothing, in which case the raw visibility is used directly.
-  virtual bool addPasses(FrameGraph& graph, AccumulationContext& ctx) { return false; }
-  // False when the accumulation's own pass computes the shadow test (and writes the raw
-  // visibility itself), so the renderer adds no separate visibility pass.
-  virtual bool needsVisibilityPass() const { return true; }
+  // By default every frame stands alone: test and shading while the scene is rasterized.
+  virtual AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) {
+    return ctx.addForwardShade();
+  }
 };
 
 class Accumulation {
@@ -177,9 +165,8 @@ class Accumulation {
   virtual std::string help() const = 0;
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual std::unique_ptr<AccumulationState> createState() const = 0;
-  // True when every frame stands alone (no passes), so the renderer may fuse the visibility
-  // and shading passes.
-  virtual bool passesThrough() const { return false; }
+  // True when its passes read the G-buffer's per-pixel motion (reprojection).
+  virtual bool readsMotion() const { return false; }
 };
 
 // A named combination with parameter overrides, as a family declares it.
@@ -201,9 +188,5 @@ struct Technique {
   ParamSet params;            // common + layout + representation + accumulation declarations
   std::string label() const;  // "pcf (focused + depth-pcf)"
 };
-
-// The stages that draw casters into a shadow map of `layout`: passes/shadow.vert, the
-// tessellation stages when the layout bends edges (Layout::tessellatesCasters), `fragment`.
-std::vector<std::pair<GLenum, std::string>> casterStages(const Layout& layout, const std::string& fragment);
 
 }  // namespace sl

@@ -44,10 +44,69 @@ std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, flo
 
 }  // namespace
 
+// The light-space overview: the scene from above and behind, the camera frustum and every light
+// view's frustum as lines (the `lightspace` view).
+void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, const FrameInput& in) {
+  Texture2D* target = &view;
+  ProgramSpec sceneSpec{
+      "view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
+  ProgramSpec lineSpec{
+      "view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
+  Program& lp = shaders_.get(lineSpec);
+  if (!lp.valid()) return;
+  Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
+  Framebuffer fbo("view.lightspace");
+  fbo.attach({target}, &depth);
+  fbo.bind();
+  const float bg[4] = {0.12f, 0.13f, 0.16f, 1.0f};
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, bg);
+  glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  // An overview camera above and behind the scene sees both frusta.
+  Bounds b = scene_->boundsAt(in.time);
+  float radius = glm::length(b.extent()) * 0.5f + 1e-3f;
+  glm::vec3 center = b.center();
+  glm::vec3 eye = center + glm::normalize(glm::vec3(0.7f, 1.2f, 0.9f)) * radius * 2.2f;
+  glm::mat4 overview = glm::perspective(glm::radians(45.0f), float(target->width()) / float(target->height()),
+                                        radius * 0.05f, radius * 6.0f) *
+                       glm::lookAt(eye, center, glm::vec3(0, 1, 0));
+  glEnable(GL_DEPTH_TEST);
+  PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p, TextureUnits&) {
+    p.set("u_viewProj", overview);
+    p.set("u_lightDirection", scene_->light.direction);
+  });
+  gpu_->draw(programs, in.time, in.time);
+  std::vector<float> lines;
+  // The camera frustum, cut at the scene's extent so that it stays readable.
+  Camera cut = in.camera;
+  cut.farPlane = std::min(cut.farPlane, glm::length(in.camera.position - center) + radius);
+  glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
+  // Yellow, or white beside partitioned views (whose second colour is yellow).
+  const bool partitioned = vp.lightSpace.views.size() > 1;
+  addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f),
+         partitioned ? glm::vec3(1.0f) : glm::vec3(1.0f, 0.85f, 0.1f));
+  // One light view in cyan; the views of a partitioned layout in the colours of the
+  // `cascades` view (shaders/views/cascades.frag), nearest split first.
+  static const glm::vec3 palette[8] = {{0.90f, 0.30f, 0.25f}, {0.95f, 0.75f, 0.20f}, {0.35f, 0.75f, 0.30f},
+                                       {0.25f, 0.55f, 0.90f}, {0.65f, 0.40f, 0.85f}, {0.30f, 0.80f, 0.80f},
+                                       {0.90f, 0.55f, 0.70f}, {0.60f, 0.60f, 0.60f}};
+  const auto& views = vp.lightSpace.views;
+  for (size_t i = 0; i < views.size(); ++i)
+    addBox(lines, unprojectCube(views[i].viewProj, -1.0f, 1.0f, views[i].logDelta > 0.0f),
+           views.size() == 1 ? glm::vec3(0.2f, 0.9f, 1.0f) : palette[i % 8]);
+  glNamedBufferSubData(linesVbo_, 0, static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
+                       lines.data());
+  lp.use();
+  lp.set("u_viewProj", overview);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(linesVao_);
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size() / 6));
+  glBindVertexArray(0);
+}
+
 void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
   const std::string prelude = techniquePrelude(vp);
   const std::string sm = vp.shadowResource_;
-  const std::string visibility = vp.accumulated_ ? "visibility.final" + tag : "visibility.raw" + tag;
+  const std::string visibility = vp.output_.visibility;
   const Texture2D* visTex = vp.visibilityTexture();
 
   auto fullscreenView = [&](const std::string& name, const std::string& frag, std::vector<std::string> reads,
@@ -88,63 +147,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
   if (vp.views_.count("lightspace")) {
     Texture2D* target = vp.views_["lightspace"].get();
     g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag}, [this, &vp, target, &in] {
-             ProgramSpec sceneSpec{
-                 "view overview",
-                 {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}},
-                 ""};
-             ProgramSpec lineSpec{
-                 "view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
-             Program& lp = shaders_.get(lineSpec);
-             if (!lp.valid()) return;
-             Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
-             Framebuffer fbo("view.lightspace");
-             fbo.attach({target}, &depth);
-             fbo.bind();
-             const float bg[4] = {0.12f, 0.13f, 0.16f, 1.0f};
-             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, bg);
-             glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-             // An overview camera above and behind the scene sees both frusta.
-             Bounds b = scene_->boundsAt(in.time);
-             float radius = glm::length(b.extent()) * 0.5f + 1e-3f;
-             glm::vec3 center = b.center();
-             glm::vec3 eye = center + glm::normalize(glm::vec3(0.7f, 1.2f, 0.9f)) * radius * 2.2f;
-             glm::mat4 overview =
-                 glm::perspective(glm::radians(45.0f), float(target->width()) / float(target->height()), radius * 0.05f,
-                                  radius * 6.0f) *
-                 glm::lookAt(eye, center, glm::vec3(0, 1, 0));
-             glEnable(GL_DEPTH_TEST);
-             PassPrograms programs(shaders_, sceneSpec, [this, &overview](const Program& p, TextureUnits&) {
-               p.set("u_viewProj", overview);
-               p.set("u_lightDirection", scene_->light.direction);
-             });
-             gpu_->draw(programs, in.time, in.time);
-             std::vector<float> lines;
-             // The camera frustum, cut at the scene's extent so that it stays readable.
-             Camera cut = in.camera;
-             cut.farPlane = std::min(cut.farPlane, glm::length(in.camera.position - center) + radius);
-             glm::mat4 camProj = cameraProjection(cut, float(in.width) / float(in.height));
-             // Yellow, or white beside partitioned views (whose second colour is yellow).
-             const bool partitioned = vp.lightSpace.views.size() > 1;
-             addBox(lines, unprojectCube(camProj * view_, -1.0f, 1.0f),
-                    partitioned ? glm::vec3(1.0f) : glm::vec3(1.0f, 0.85f, 0.1f));
-             // One light view in cyan; the views of a partitioned layout in the colours of the
-             // `cascades` view (shaders/views/cascades.frag), nearest split first.
-             static const glm::vec3 palette[8] = {{0.90f, 0.30f, 0.25f}, {0.95f, 0.75f, 0.20f}, {0.35f, 0.75f, 0.30f},
-                                                  {0.25f, 0.55f, 0.90f}, {0.65f, 0.40f, 0.85f}, {0.30f, 0.80f, 0.80f},
-                                                  {0.90f, 0.55f, 0.70f}, {0.60f, 0.60f, 0.60f}};
-             const auto& views = vp.lightSpace.views;
-             for (size_t i = 0; i < views.size(); ++i)
-               addBox(lines, unprojectCube(views[i].viewProj, -1.0f, 1.0f, views[i].logDelta > 0.0f),
-                      views.size() == 1 ? glm::vec3(0.2f, 0.9f, 1.0f) : palette[i % 8]);
-             glNamedBufferSubData(linesVbo_, 0,
-                                  static_cast<GLsizeiptr>(std::min<size_t>(lines.size(), 4096) * sizeof(float)),
-                                  lines.data());
-             lp.use();
-             lp.set("u_viewProj", overview);
-             glDisable(GL_DEPTH_TEST);
-             glBindVertexArray(linesVao_);
-             glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size() / 6));
-             glBindVertexArray(0);
+             drawLightSpaceOverview(vp, *target, in);
            }});
     g.requestSink("view.lightspace" + tag);
   }

@@ -6,47 +6,72 @@
 
 namespace sl {
 
-// Layout passes, then the shadow pass (one draw per light view into the representation's
-// layers), then the representation's passes; the renderer only orders what the parts declare.
+// The plan of this frame's shadow pass: the representation's caster draw, the light views'
+// projection kinds, and the layout's layers (whole or tiled). Made while the pass runs: a paged
+// layout knows its tiles only after its own passes.
+ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
+  const CasterDraw casters = vp.technique.representation->casterDraw();
+  ShadowDrawPlan plan;
+  plan.stages = casterStages(vp.lightSpace, casters.fragment);
+  plan.casters = casters.casters;
+  plan.layers.resize(vp.lightSpace.views.size());
+  vp.layout->planShadowLayers(plan.layers, vp.representation->keepsLayers());
+  return plan;
+}
+
+// Draws one layer of the plan (whole, or tile by tile into its rectangles).
+void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int layer,
+                               double time) {
+  const ParamSet& params = vp.technique.params;
+  static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
+  const GLenum cull = culled[params.i("shadowmap.cull")];
+  const auto only = plan.casters == CasterSet::Opaque ? GpuScene::Only::Opaque : GpuScene::Only::All;
+  const glm::mat4* cullTo =
+      params.b("shadowmap.cull_instances") ? &vp.lightSpace.views[size_t(layer)].viewProj : nullptr;
+  const ShadowLayerDraw& draw = plan.layers[size_t(layer)];
+  if (!draw.tiled) {
+    vp.representation->beginShadowLayer(layer);
+    PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
+      bindTechnique(p, units, vp);
+      p.set("u_shadowView", layer);
+    });
+    gpu_->draw(programs, time, time, cull, only, cullTo);
+    return;
+  }
+  // A piecewise layer: cleared with the rest only when the representation does not keep it.
+  if (vp.representation->keepsLayers())
+    vp.representation->bindShadowLayer(layer);
+  else
+    vp.representation->beginShadowLayer(layer);
+  glEnable(GL_SCISSOR_TEST);
+  for (const ShadowTile& tile : draw.tiles) {
+    glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
+    glScissor(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile
+    PassPrograms programs(shaders_, spec, [this, &vp, layer, &tile](const Program& p, TextureUnits& units) {
+      bindTechnique(p, units, vp);
+      p.set("u_shadowView", layer);
+      p.set("u_pageTransform", tile.transform);
+    });
+    const glm::mat4 tileClip = cullTo ? tile.clip(*cullTo) : glm::mat4(1.0f);
+    gpu_->draw(programs, time, time, cull, only, cullTo ? &tileClip : nullptr);
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+// Layout passes, then the shadow pass (the draw plan, one layer per light view), then the
+// representation's passes; the renderer only orders what the parts declare.
 void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                              const FrameInput& in) {
   const std::string prelude = techniquePrelude(vp);
   g.add({"shadowmap" + tag, reads, {"shadowmap" + tag}, [this, &vp, prelude, &in] {
            const Technique& t = vp.technique;
+           const ShadowDrawPlan plan = shadowDrawPlan(vp);
+           const ProgramSpec spec{"shadowmap " + t.layout->id() + "+" + t.representation->id(), plan.stages, prelude};
            glEnable(GL_DEPTH_TEST);
-           static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
-           const ProgramSpec spec{"shadowmap " + t.layout->id() + "+" + t.representation->id(),
-                                  casterStages(*t.layout, t.representation->shadowMapFragment()), prelude};
-           const GLenum cull = culled[t.params.i("shadowmap.cull")];
-           // A deep map draws its semi-transparent casters into its own fragment lists instead.
-           const auto only = t.representation->opaqueShadowPass() ? GpuScene::Only::Opaque : GpuScene::Only::All;
-           for (int layer = 0; layer < static_cast<int>(vp.lightSpace.views.size()); ++layer) {
-             const glm::mat4* cullTo =
-                 t.params.b("shadowmap.cull_instances") ? &vp.lightSpace.views[size_t(layer)].viewProj : nullptr;
-             if (!vp.layout->drawsTiles()) {
-               vp.representation->beginShadowLayer(layer);
-               PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
-                 bindTechnique(p, units, vp);
-                 p.set("u_shadowView", layer);
-               });
-               gpu_->draw(programs, in.time, in.time, cull, only, cullTo);
-               continue;
-             }
-             // Piecewise (paged) layer: only the tiles the layout asks for, each into its viewport.
-             const bool kept = vp.representation->bindShadowLayer(layer);
-             const int tiles = vp.layout->shadowTiles(layer, kept);
-             for (int tile = 0; tile < tiles; ++tile) {
-               vp.layout->beginShadowTile(layer, tile);
-               PassPrograms programs(shaders_, spec, [this, &vp, layer, tile](const Program& p, TextureUnits& units) {
-                 bindTechnique(p, units, vp);
-                 p.set("u_shadowView", layer);
-                 vp.layout->bindShadowTile(p, layer, tile);
-               });
-               const glm::mat4 tileClip = cullTo ? vp.layout->shadowTileClip(layer, tile, *cullTo) : glm::mat4(1.0f);
-               gpu_->draw(programs, in.time, in.time, cull, only, cullTo ? &tileClip : nullptr);
-             }
-             glDisable(GL_SCISSOR_TEST);
-           }
+           for (int layer = 0; layer < static_cast<int>(plan.layers.size()); ++layer)
+             drawShadowLayer(vp, plan, spec, layer, in.time);
            glDisable(GL_DEPTH_TEST);
          }});
 }
@@ -60,7 +85,6 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.time = in.time;
   part.shaders = &shaders_;
   part.params = &vp.technique.params;
-  part.layout = vp.technique.layout;
   part.lightSpace = &vp.lightSpace;
   part.view = view_;
   part.proj = proj_;
@@ -92,9 +116,14 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
 }
 
 // What an accumulation reads and writes for this viewport's frame.
-AccumulationContext Renderer::accumulationContext(Viewport& vp, const std::string& tag, const FrameInput& in,
-                                                  bool cameraMoved, const std::string& prelude,
-                                                  const std::string& shadowMap, const ProgramSetup& bindInputs) {
+AccumulationContext Renderer::accumulationContext(FrameGraph& g, Viewport& vp, const std::string& tag,
+                                                  const FrameInput& in, bool cameraMoved, const std::string& prelude,
+                                                  const std::string& shadowMap, const ProgramSetup& bindGBuffer) {
+  // Binds the G-buffer and every part's inputs on a visibility-computing program.
+  ProgramSetup bindInputs = [this, &vp, bindGBuffer](const Program& p, TextureUnits& units) {
+    bindTechnique(p, units, vp);
+    bindGBuffer(p, units);
+  };
   AccumulationContext ctx;
   ctx.viewportTag = tag;
   ctx.rawVisibility = "visibility.raw" + tag;
@@ -126,7 +155,15 @@ AccumulationContext Renderer::accumulationContext(Viewport& vp, const std::strin
   };
   ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
-  ctx.keepRawVisibility = keepGBuffer;
+  ctx.addForwardShade = [this, &g, &vp, tag, prelude, shadowMap, bindInputs, &in] {
+    return addForwardShadePass(g, vp, tag, prelude, shadowMap, bindInputs, in);
+  };
+  ctx.addVisibilityTest = [this, &g, &vp, tag, prelude, shadowMap, bindInputs] {
+    addVisibilityPass(g, vp, tag, prelude, shadowMap, bindInputs);
+  };
+  ctx.addDeferredShade = [this, &g, &vp, tag](const std::string& visibility, const Texture2D* texture) {
+    return addDeferredShadePass(g, vp, tag, visibility, texture);
+  };
   return ctx;
 }
 

@@ -25,6 +25,9 @@ void Viewport::setTechnique(Technique t) {
   layout = technique.layout->createState();
   representation = technique.representation->createState();
   accumulation = technique.accumulation->createState();
+  // The last frame's visibility may be a texture of the old accumulation's state.
+  output_ = {};
+  visibilityHeld_ = false;
 }
 
 const Texture2D* Viewport::viewTexture(const std::string& name) const {
@@ -243,10 +246,63 @@ void Renderer::drawFullscreen() {
   glBindVertexArray(0);
 }
 
+// Runs the culled passes, each in a KHR_debug group named after it, and times them (stats_).
+void Renderer::executeTimed(const FrameGraph& graph) {
+  auto useGpuTimer = timePasses && !isSoftwareRenderer();
+  stats_ = FrameStats{};
+  stats_.timer = useGpuTimer ? "gpu-query" : "cpu-fence";
+  std::vector<std::pair<GLuint, GLuint>> queries;
+  auto frameStart = std::chrono::steady_clock::now();
+  transients_.beginFrame();
+  graph.execute(
+      [&](const Pass& pass, const std::function<void()>& run) {
+        GlDebugGroup group(pass.name);
+        if (!timePasses) {
+          run();
+          stats_.passes.push_back({pass.name, 0.0});
+          return;
+        }
+        if (useGpuTimer) {
+          GLuint q[2];
+          glGenQueries(2, q);
+          glQueryCounter(q[0], GL_TIMESTAMP);
+          run();
+          glQueryCounter(q[1], GL_TIMESTAMP);
+          queries.emplace_back(q[0], q[1]);
+          stats_.passes.push_back({pass.name, 0.0});
+        } else {
+          // llvmpipe's timer queries do not measure the work; a fence with a steady clock does.
+          glFinish();
+          auto t0 = std::chrono::steady_clock::now();
+          run();
+          glFinish();
+          stats_.passes.push_back(
+              {pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
+        }
+      },
+      &transients_);
+  for (size_t k = 0; k < queries.size(); ++k) {
+    GLuint64 a = 0, b = 0;
+    glGetQueryObjectui64v(queries[k].first, GL_QUERY_RESULT, &a);
+    glGetQueryObjectui64v(queries[k].second, GL_QUERY_RESULT, &b);
+    stats_.passes[k].ms = static_cast<double>(b - a) * 1e-6;
+    GLuint q[2] = {queries[k].first, queries[k].second};
+    glDeleteQueries(2, q);
+  }
+  gbufferFresh_ = false;
+  for (const auto& p : stats_.passes) gbufferFresh_ |= p.name == "gbuffer";
+  if (timePasses && !useGpuTimer) glFinish();
+  stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+  if (useGpuTimer) {
+    stats_.frameMs = 0;
+    for (const auto& p : stats_.passes) stats_.frameMs += p.ms;
+  }
+}
+
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {
   if (!scene_) throw std::runtime_error("renderer: no scene loaded");
   bool needMotion = false;
-  for (Viewport* vp : viewports) needMotion |= !vp->technique.accumulation->passesThrough();
+  for (Viewport* vp : viewports) needMotion |= vp->technique.accumulation->readsMotion();
   ensureTargets(in.width, in.height, needMotion);
   view_ = cameraView(in.camera);
   proj_ = cameraProjection(in.camera, static_cast<float>(in.width) / static_cast<float>(in.height));
@@ -268,52 +324,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   }
 
   if (validateFrameGraph) graph.compile();
-  auto useGpuTimer = timePasses && !isSoftwareRenderer();
-  stats_ = FrameStats{};
-  stats_.timer = useGpuTimer ? "gpu-query" : "cpu-fence";
-  std::vector<std::pair<GLuint, GLuint>> queries;
-  auto frameStart = std::chrono::steady_clock::now();
-  graph.execute([&](const Pass& pass, const std::function<void()>& run) {
-    GlDebugGroup group(pass.name);
-    if (!timePasses) {
-      run();
-      stats_.passes.push_back({pass.name, 0.0});
-      return;
-    }
-    if (useGpuTimer) {
-      GLuint q[2];
-      glGenQueries(2, q);
-      glQueryCounter(q[0], GL_TIMESTAMP);
-      run();
-      glQueryCounter(q[1], GL_TIMESTAMP);
-      queries.emplace_back(q[0], q[1]);
-      stats_.passes.push_back({pass.name, 0.0});
-    } else {
-      // llvmpipe's timer queries do not measure the work; a fence with a steady clock does.
-      glFinish();
-      auto t0 = std::chrono::steady_clock::now();
-      run();
-      glFinish();
-      stats_.passes.push_back(
-          {pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
-    }
-  });
-  for (size_t k = 0; k < queries.size(); ++k) {
-    GLuint64 a = 0, b = 0;
-    glGetQueryObjectui64v(queries[k].first, GL_QUERY_RESULT, &a);
-    glGetQueryObjectui64v(queries[k].second, GL_QUERY_RESULT, &b);
-    stats_.passes[k].ms = static_cast<double>(b - a) * 1e-6;
-    GLuint q[2] = {queries[k].first, queries[k].second};
-    glDeleteQueries(2, q);
-  }
-  gbufferFresh_ = false;
-  for (const auto& p : stats_.passes) gbufferFresh_ |= p.name == "gbuffer";
-  if (timePasses && !useGpuTimer) glFinish();
-  stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
-  if (useGpuTimer) {
-    stats_.frameMs = 0;
-    for (const auto& p : stats_.passes) stats_.frameMs += p.ms;
-  }
+  executeTimed(graph);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   // Every program this frame drew with has had all its uniforms set by now.
   shaders_.checkUnsetUniforms();
@@ -325,8 +336,8 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   }
 }
 
-void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
-  const std::string tag = "[" + std::to_string(index) + "]";
+// The layout's light views for this frame, uploaded, and the representation's targets for them.
+void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMoved) {
   Technique& t = vp.technique;
   LayoutInput li;
   li.scene = scene_;
@@ -335,7 +346,6 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   li.cameraView = in.fitCamera ? cameraView(*in.fitCamera) : view_;
   li.cameraProj = in.fitCamera ? cameraProjection(*in.fitCamera, static_cast<float>(in.width) / in.height) : proj_;
   li.params = &t.params;
-  const bool cameraMoved = view_ != vp.prev_.view || proj_ != vp.prev_.proj;
   li.jitter = vp.accumulation->jitter(t.params, cameraMoved);
   vp.lightSpace = vp.layout->compute(li);
   if (vp.lightSpace.views.empty() || vp.lightSpace.views.size() > static_cast<size_t>(kMaxLightViews))
@@ -345,6 +355,12 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   vp.representation->setScene(*scene_);
   vp.representation->configure(t.params);
   vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
+}
+
+void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
+  const std::string tag = "[" + std::to_string(index) + "]";
+  const bool cameraMoved = view_ != vp.prev_.view || proj_ != vp.prev_.proj;
+  layOutViewport(vp, in, cameraMoved);
   const std::string prelude = techniquePrelude(vp);
   const std::string raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
@@ -353,80 +369,14 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   // What the visibility tests read: the shadow map, or what the representation made of it.
   const std::string sm = vp.representation->addPasses(g, part);
   vp.shadowResource_ = sm;
-
-  // Binds the G-buffer and every part's inputs on a visibility-computing program.
-  auto bindVisibilityInputs = [this, &vp, bindGBuffer = part.bindGBuffer](const Program& p, TextureUnits& units) {
-    bindTechnique(p, units, vp);
-    bindGBuffer(p, units);
-  };
-
-  if (t.accumulation->passesThrough()) {
-    // No accumulation: shadow test and shading while the scene is rasterized (forward).
-    vp.accumulated_ = false;
-    g.add({"shade" + tag, {sm}, {"color" + tag, raw}, [this, &vp, prelude, bindVisibilityInputs, &in] {
-             Technique& t = vp.technique;
-             ProgramSpec spec{"forward " + t.layout->id() + "+" + t.representation->id(),
-                              {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/forward.frag"}},
-                              prelude};
-             vp.forwardFbo_.bind();
-             const float background[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // visibility 1, confidence 0
-             glClearNamedFramebufferfv(vp.forwardFbo_.id(), GL_COLOR, 1, background);
-             glClearNamedFramebufferfi(vp.forwardFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-             drawSceneForward(spec, bindVisibilityInputs, in.time, vp.prev_);
-             drawSky();
-           }});
-    addVolumesPass(g, vp, tag, prelude, vp.depth_.get(), {sm});
-    g.requestSink("color" + tag);
-    g.requestSink(raw);
-    addDebugViewPasses(g, vp, tag, in);
-    return;
-  }
-
-  if (vp.accumulation->needsVisibilityPass())
-    g.add({"visibility" + tag, {"gbuffer", sm}, {raw}, [this, &vp, prelude, bindVisibilityInputs] {
-             Technique& t = vp.technique;
-             ProgramSpec spec{
-                 "visibility " + t.layout->id() + "+" + t.representation->id(),
-                 {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/visibility.frag"}},
-                 prelude};
-             Program& p = shaders_.get(spec);
-             if (!p.valid()) return;
-             vp.visibilityFbo_.bind();
-             p.use();
-             TextureUnits units;
-             bindVisibilityInputs(p, units);
-             drawFullscreen();
-           }});
-
-  AccumulationContext ctx = accumulationContext(vp, tag, in, cameraMoved, prelude, sm, bindVisibilityInputs);
-  vp.accumulated_ = vp.accumulation->addPasses(g, ctx);
-  vp.shownVisibility_ = ctx.shownVisibilityTex ? ctx.shownVisibilityTex : vp.finalVisibility_.get();
-  if (ctx.wroteColor) {
-    addVolumesPass(g, vp, tag, prelude, vp.depth_.get(), {sm});
-    g.requestSink("color" + tag);
-    g.requestSink(fin);
-    addDebugViewPasses(g, vp, tag, in);
-    return;
-  }
-  const std::string visibility = vp.accumulated_ ? fin : raw;
-  const Texture2D* visTex = vp.visibilityTexture();
-
-  g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
-           ProgramSpec spec{"shade",
-                            {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}},
-                            shadePrelude()};
-           Program& p = shaders_.get(spec);
-           if (!p.valid()) return;
-           vp.colorFbo_.bind();
-           p.use();
-           TextureUnits units;
-           setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
-           bindGBuffer(p, units, visTex);
-           drawFullscreen();
-         }});
-  addVolumesPass(g, vp, tag, prelude, gDepth_.get(), {"gbuffer", sm});
+  // Read back after the frame (tests, the reference's comparisons): the raw test too.
+  if (keepGBuffer) g.requestSink("visibility.raw" + tag);
+  // The accumulation adds the test, its own passes and the shading.
+  const AccumulationContext ctx = accumulationContext(g, vp, tag, in, cameraMoved, prelude, sm, part.bindGBuffer);
+  vp.output_ = vp.accumulation->addPasses(g, ctx);
+  addVolumesPass(g, vp, tag, prelude, vp.output_.depthTex, {vp.output_.depth, sm});
   g.requestSink("color" + tag);
-  g.requestSink(visibility);
+  g.requestSink(vp.output_.visibility);
   addDebugViewPasses(g, vp, tag, in);
 }
 

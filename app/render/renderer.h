@@ -7,10 +7,10 @@
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "part/frame_graph.h"
+#include "part/part.h"
+#include "part/transient_textures.h"
 #include "render/light_views_buffer.h"
 #include "render/volumes_buffer.h"
-#include "part/frame_graph.h"
-#include "part/part.h"
 #include "part/uniforms.h"
 
 #include <cstdint>
@@ -52,7 +52,9 @@ class Viewport {
   // Outputs of the last frame (owned by the renderer's per-viewport targets).
   const Texture2D* colorTexture() const { return color_.get(); }
   // The visibility the shade pass used (after accumulation, if any): R = visibility.
-  const Texture2D* visibilityTexture() const { return accumulated_ ? shownVisibility_ : rawVisibility_.get(); }
+  const Texture2D* visibilityTexture() const {
+    return output_.visibilityTex ? output_.visibilityTex : rawVisibility_.get();
+  }
   const Texture2D* rawVisibilityTexture() const { return rawVisibility_.get(); }
   const Texture2D* viewTexture(const std::string& name) const;
   std::vector<std::string> availableViews() const;
@@ -72,12 +74,11 @@ class Viewport {
   Framebuffer visibilityFbo_, colorFbo_, forwardFbo_;
   std::unique_ptr<LightViewsBuffer> lightViews_;
   int targetsW_ = 0, targetsH_ = 0;
-  std::string shadowResource_;  // what the visibility tests read (the representation's output)
-  bool accumulated_ = false;
-  const Texture2D* shownVisibility_ = nullptr;  // finalVisibility_ or the accumulation's own texture
-  PreviousFrame prev_;                          // this viewport's last frame
-  int frameIndex_ = 0;                          // frames this viewport has rendered
-  bool visibilityHeld_ = false;                 // its visibility texture holds a finished frame of this size
+  std::string shadowResource_;   // what the visibility tests read (the representation's output)
+  AccumulationOutput output_;    // what the accumulation's passes left: the shown visibility, the colour's depth
+  PreviousFrame prev_;           // this viewport's last frame
+  int frameIndex_ = 0;           // frames this viewport has rendered
+  bool visibilityHeld_ = false;  // its visibility texture holds a finished frame of this size
 };
 
 struct FrameInput {
@@ -106,6 +107,8 @@ class Renderer {
   const Scene* scene() const { return scene_; }
   void render(const FrameInput& in, const std::vector<Viewport*>& viewports);
   const FrameStats& stats() const { return stats_; }
+  // The frame graph's transient targets kept for later frames (blur scratch targets, ...).
+  const TransientTextures& transientTextures() const { return transients_; }
   bool timePasses = true;  // bracket passes with a timer (cheap on GPU, glFinish on llvmpipe)
   // Render the G-buffer even when no pass of the frame reads it, for readback (reference,
   // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
@@ -137,7 +140,19 @@ class Renderer {
   void ensureTargets(int w, int h, bool withMotion);
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
+  void layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMoved);
+  void executeTimed(const FrameGraph& graph);
+  // The shading passes an accumulation adds through its context (render/shading_passes.cpp).
+  // bindInputs: the G-buffer and every part's bindings on a visibility-computing program.
+  AccumulationOutput addForwardShadePass(FrameGraph& g, Viewport& vp, const std::string& tag,
+                                         const std::string& prelude, const std::string& shadowMap,
+                                         const ProgramSetup& bindInputs, const FrameInput& in);
+  void addVisibilityPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::string& prelude,
+                         const std::string& shadowMap, const ProgramSetup& bindInputs);
+  AccumulationOutput addDeferredShadePass(FrameGraph& g, Viewport& vp, const std::string& tag,
+                                          const std::string& visibility, const Texture2D* visibilityTex);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  void drawLightSpaceOverview(const Viewport& vp, Texture2D& target, const FrameInput& in);
   // Scenes with volumes: marches them over the viewport's colour (render/volume_pass.cpp).
   // depth: the target the colour's surfaces were drawn with; reads: what the lookup needs.
   void addVolumesPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::string& prelude,
@@ -147,11 +162,13 @@ class Renderer {
   void bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const;
   PartContext partContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
                           const std::string& prelude);
-  AccumulationContext accumulationContext(Viewport& vp, const std::string& tag, const FrameInput& in, bool cameraMoved,
-                                          const std::string& prelude, const std::string& shadowMap,
-                                          const ProgramSetup& bindInputs);
+  AccumulationContext accumulationContext(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in,
+                                          bool cameraMoved, const std::string& prelude, const std::string& shadowMap,
+                                          const ProgramSetup& bindGBuffer);
   void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                      const FrameInput& in);
+  ShadowDrawPlan shadowDrawPlan(Viewport& vp) const;
+  void drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int layer, double time);
   void drawFullscreen();
   void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev);
   std::string shadePrelude() const;  // defines of the deferred shade pass
@@ -185,6 +202,7 @@ class Renderer {
   Framebuffer substFbo_;
   // Scene::volumes on the GPU, for the volumes pass and the parts (PartContext::bindVolumes).
   std::unique_ptr<VolumesBuffer> volumes_;
+  TransientTextures transients_;  // the frame graph's transient targets, kept between frames
   void bindVolumes();
   FrameStats stats_;
   glm::mat4 view_{1.0f}, proj_{1.0f};

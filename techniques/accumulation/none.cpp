@@ -1,4 +1,5 @@
-// The empty accumulation: each frame's shadow test is shown as it is.
+// The empty accumulation: each frame's shadow test is shown as it is. Its state is the default
+// AccumulationState, whose one pass tests and shades while the scene is rasterized (forward).
 #include "part/part.h"
 
 namespace sl {
@@ -9,7 +10,6 @@ class NoAccumulation : public Accumulation {
   std::string id() const override { return "none"; }
   std::string help() const override { return "no screen-space accumulation: every frame stands alone"; }
   std::unique_ptr<AccumulationState> createState() const override { return std::make_unique<AccumulationState>(); }
-  bool passesThrough() const override { return true; }
 };
 }  // namespace
 

@@ -27,9 +27,9 @@ class PixelCorrectState : public AccumulationState {
  public:
   LayoutJitter jitter(const ParamSet& params, bool cameraMoved) const override;
   void reset() override;
-  bool addPasses(FrameGraph& graph, AccumulationContext& ctx) override;
+  // One scene pass runs the test, the update and the shading (no separate visibility pass).
+  AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) override;
   std::vector<std::string> views() const override { return {"confidence", "history", "disocclusion"}; }
-  bool needsVisibilityPass() const override { return false; }  // its own pass runs the test
   std::string status() const override;
 
   float exponent() const { return m_; }
@@ -37,7 +37,16 @@ class PixelCorrectState : public AccumulationState {
   bool hasHistory() const { return hasHistory_; }
 
  private:
+  // What one frame's update pass changes, committed when the pass runs (a culled pass changes
+  // nothing).
+  struct FrameUpdate {
+    int write = 0;
+    float m = 0.0f;
+    bool adaptive = true, keepBest = false, showingTest = false, advanceJitter = true;
+  };
+  void commit(const FrameUpdate& u);
   void ensureHistory(int w, int h, GLenum format);
+  Framebuffer* updateFramebuffer(int write, const AccumulationContext& ctx, Texture2D* rawTarget);
   std::array<std::unique_ptr<Texture2D>, 2> history_;  // r = s, g = linear view depth (0 = none), b = W
   std::array<Framebuffer, 2> fbo_;                     // colour, history[i] (= shown), raw if wanted
   const Texture2D* fboRaw_[2] = {nullptr, nullptr};

@@ -111,36 +111,23 @@ class VirtualState : public LayoutState {
     return {res};
   }
 
-  bool drawsTiles() const override { return true; }
-  int shadowTiles(int layer, bool kept) override {
-    if (!kept) {  // the representation cleared the layer: every resident page again
+  // Every layer in tiles: the pages marked this frame, or every resident page when the
+  // representation cleared the layer.
+  void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {
+    if (!keepsLayers) {
       draw_.clear();
       for (int i = 0; i < pages_.flatSize(); ++i)
         if (pages_.tileOf(i) >= 0) draw_.push_back(i);
     }
-    return static_cast<int>(draw_.size());
-  }
-
-  void beginShadowTile(int layer, int tile) override {
-    const int t = pages_.tileOf(draw_[static_cast<size_t>(tile)]);
-    const int x = (t % sizes_.poolSide) * sizes_.page, y = (t / sizes_.poolSide) * sizes_.page;
-    glViewport(x, y, sizes_.page, sizes_.page);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(x, y, sizes_.page, sizes_.page);
-    glDepthMask(GL_TRUE);
-    glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile
-  }
-
-  // Maps the page's part of the virtual map's clip square onto the whole viewport.
-  void bindShadowTile(const Program& p, int layer, int tile) const override {
-    p.set("u_pageTransform", pageTransform(tile));
-  }
-  // The same as a matrix after the layer's: instances outside the page are not drawn into it.
-  glm::mat4 shadowTileClip(int layer, int tile, const glm::mat4& layerViewProj) const override {
-    const glm::vec4 t = pageTransform(tile);
-    glm::mat4 page(1.0f);
-    page[0][0] = t.x, page[1][1] = t.y, page[3][0] = t.z, page[3][1] = t.w;
-    return page * layerViewProj;
+    for (ShadowLayerDraw& layer : layers) {
+      layer.tiled = true;
+      layer.tiles.clear();
+      for (size_t k = 0; k < draw_.size(); ++k) {
+        const int t = pages_.tileOf(draw_[k]);
+        const int x = (t % sizes_.poolSide) * sizes_.page, y = (t / sizes_.poolSide) * sizes_.page;
+        layer.tiles.push_back({glm::ivec4(x, y, sizes_.page, sizes_.page), pageTransform(static_cast<int>(k))});
+      }
+    }
   }
 
  private:

@@ -14,7 +14,8 @@ class DeepRepresentation : public Representation {
            "for semi-transparent casters (hair, glTF BLEND, volumes) times a nearest depth test for opaque ones";
   }
   std::string glslModule() const override { return "representations/deep.glsl"; }
-  bool opaqueShadowPass() const override { return true; }
+  // The semi-transparent casters go into the fragment lists (DeepState), not the opaque map.
+  CasterDraw casterDraw() const override { return {"passes/shadow.frag", CasterSet::Opaque}; }
   std::vector<ParamDecl> params() const override {
     return {
         {.key = "deep.nodes",

@@ -118,7 +118,7 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
   glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_);
   glViewport(0, 0, deepSize_, deepSize_);
   glDisable(GL_DEPTH_TEST);
-  const ProgramSpec spec{"deep fragments", casterStages(*ctx.layout, "passes/deep_fragments.frag"),
+  const ProgramSpec spec{"deep fragments", casterStages(*ctx.lightSpace, "passes/deep_fragments.frag"),
                          ctx.techniquePrelude};
   for (int layer = 0; layer < layers_; ++layer) {
     ctx.drawSemiTransparent(spec, [&ctx, layer](const Program& p, TextureUnits& units) {

@@ -168,11 +168,18 @@ LogFit logFit(const LayoutInput& in) {
   return fit;
 }
 
+// Every view of this layout goes through the warp (δ = 0: the identity), so casters are tessellated.
+LogFit logFitWarped(const LayoutInput& in) {
+  LogFit fit = logFit(in);
+  for (LightView& v : fit.space.views) v.projection = LightView::Projection::LogWarp;
+  return fit;
+}
+
 class LogPsmState : public LayoutState {
  public:
   using LayoutState::LayoutState;
   LightSpace compute(const LayoutInput& in) override {
-    fit_ = logFit(in);
+    fit_ = logFitWarped(in);
     return fit_.space;
   }
   std::string status() const override {
@@ -198,7 +205,6 @@ class LogPsmLayout : public Layout {
            "so the bent edges are drawn as chords within an error budget";
   }
   std::string glslModule() const override { return "layouts/logpsm.glsl"; }
-  bool tessellatesCasters() const override { return true; }
   std::vector<ParamDecl> params() const override {
     return {{.key = "logpsm.delta_scale",
              .type = ParamType::Float,
@@ -231,7 +237,7 @@ class LogPsmLayout : public Layout {
              .help = "subdivide casters before warping them (off: each triangle drawn straight between its warped "
                      "corners, as a plain rasterizer would: bent shadow edges, for teaching)"}};
   }
-  LightSpace compute(const LayoutInput& in) const override { return logFit(in).space; }
+  LightSpace compute(const LayoutInput& in) const override { return logFitWarped(in).space; }
   std::unique_ptr<LayoutState> createState() const override { return std::make_unique<LogPsmState>(*this); }
 };
 

@@ -83,6 +83,7 @@ TEST(LogPsm, TheLayoutReportsItsWarpAndFallsBackForASpotLight) {
   Scene scene = loadScene("columns", defaultAssetsDir());
   const LightSpace ls = test::layoutFor("logpsm", scene, scene.cameras.front());
   EXPECT_GT(ls.primary().logDelta, 0.0f);
+  EXPECT_EQ(ls.primary().projection, LightView::Projection::LogWarp);  // the shadow pass tessellates
   EXPECT_TRUE(ls.perspective());  // depth per fragment, texel sizes measured by the shaders
   Scene spot = loadScene("spotlight", defaultAssetsDir());
   EXPECT_EQ(test::layoutFor("logpsm", spot, spot.cameras.front()).primary().logDelta, 0.0f);

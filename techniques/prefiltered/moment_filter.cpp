@@ -14,8 +14,8 @@ std::string filterDefines(const MomentConfig& c, bool logFilter) {
          (logFilter ? "#define SL_MOMENT_LOG_FILTER\n" : "");
 }
 
-void bindSources(const Program& p, TextureUnits& units, const std::vector<Texture2D>& src) {
-  for (size_t t = 0; t < src.size(); ++t) units.bind(p, "u_src" + std::to_string(t), src[t].id());
+void bindSources(const Program& p, TextureUnits& units, const std::vector<const Texture2D*>& src) {
+  for (size_t t = 0; t < src.size(); ++t) units.bind(p, "u_src" + std::to_string(t), src[t]->id());
 }
 
 std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
@@ -24,9 +24,12 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
   return out;
 }
 
+std::vector<const Texture2D*> pointers(const std::vector<Texture2D*>& v) { return {v.begin(), v.end()}; }
+
 }  // namespace
 
-void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
+void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+                            const std::vector<Texture2D*>& scratch) {
   if (config_.method == FilterMethod::Sat) return buildSat(shaders);
   const bool mips = config_.method == FilterMethod::Mipmap;
   const ProgramSpec spec{mips ? "moment downsample" : "moment blur",
@@ -44,9 +47,9 @@ void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>&
       p.set("u_layer", l);
       for (int pass = 0; pass < 2; ++pass) {
         // Horizontal into the scratch targets, then vertical back into the moments.
-        const auto& src = pass == 0 ? moments_ : scratch_;
+        const std::vector<const Texture2D*> src = pass == 0 ? pointers(moments_) : pointers(scratch);
         Framebuffer fbo("moment blur");
-        fbo.attachLayer(pointers(pass == 0 ? scratch_ : moments_), nullptr, l);
+        fbo.attachLayer(pass == 0 ? pointers(scratch) : pointers(moments_), nullptr, l);
         fbo.bind();
         TextureUnits units;
         bindSources(p, units, src);
@@ -70,7 +73,7 @@ void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>&
       fbo.attachLayer(pointers(moments_), nullptr, l, level);
       fbo.bind();
       TextureUnits units;
-      bindSources(p, units, moments_);
+      bindSources(p, units, pointers(moments_));
       drawFullscreen();
     }
   }

@@ -1,4 +1,5 @@
 #include "prefiltered/moment_state.h"
+#include "part/transient_textures.h"
 
 #include "gl/texture_units.h"
 #include "prefiltered/moment_views.h"
@@ -56,13 +57,9 @@ void MomentMapState::allocate(int size, int layers) {
   const int levels = config_.method == FilterMethod::Mipmap ? mipLevels(size) : 1;
   depth_ = Texture2D::array(GL_DEPTH_COMPONENT32F, size, size, layers, 1, "moment map depth");
   moments_.clear();
-  scratch_.clear();
   for (int t = 0; t < config_.targets(); ++t) {
     const GLenum format = formatFor(config_.channelsOf(t), config_.bits);
     moments_.push_back(Texture2D::array(format, size, size, layers, levels, "moments " + std::to_string(t)));
-    // The blur's first direction lands here; mip-mapping needs no scratch.
-    if (config_.method == FilterMethod::Blur && config_.width > 1)
-      scratch_.push_back(Texture2D::array(format, size, size, layers, 1, "moments scratch " + std::to_string(t)));
   }
   shadowFbos_.clear();
   std::vector<const Texture2D*> colors;
@@ -105,9 +102,29 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
     auto draw = ctx.drawFullscreen;
     static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
     const std::string name = names[static_cast<int>(config_.method)];
-    graph.add({name + ctx.viewportTag, {ctx.shadowMap}, {out}, [this, shaders, draw] { filter(*shaders, draw); }});
+    // The blur's first direction lands in scratch targets the frame graph lends for the pass (one
+    // per moments target, of its format and size); mip-maps and tables need none.
+    std::vector<std::string> writes = {out};
+    const std::vector<TextureDesc> descs = scratchTargets();
+    for (size_t t = 0; t < descs.size(); ++t) {
+      writes.push_back("moments.scratch" + std::to_string(t) + ctx.viewportTag);
+      graph.createTexture(writes.back(), descs[t]);
+    }
+    const std::vector<std::string> scratch(writes.begin() + 1, writes.end());
+    graph.add({name + ctx.viewportTag, {ctx.shadowMap}, writes, [this, shaders, draw, &graph, scratch] {
+                 std::vector<Texture2D*> targets;
+                 for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
+                 filter(*shaders, draw, targets);
+               }});
   }
   addMomentViewPasses(graph, ctx, out, views());
+  return out;
+}
+
+std::vector<TextureDesc> MomentMapState::scratchTargets() const {
+  std::vector<TextureDesc> out;
+  if (config_.method != FilterMethod::Blur || config_.width <= 1) return out;
+  for (const Texture2D& m : moments_) out.push_back({m.format(), m.width(), m.height(), std::max(m.layers(), 1), 1});
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include "prefiltered/moment_spec.h"
 #include "scene/scene_effects.h"
+#include "part/frame_graph.h"
 #include "part/part.h"
 
 #include <functional>
@@ -48,7 +49,12 @@ class MomentMapState : public RepresentationState {
   std::string status() const override { return status_; }
 
   // Runs the filter passes now (blur or mips), as the frame graph's pass does.
-  void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
+  // What the blur's first direction writes: one target like each moments target (level 0 only);
+  // none for mip-maps and summed-area tables. The frame graph lends them (transient textures).
+  std::vector<TextureDesc> scratchTargets() const;
+  // scratch: the targets of scratchTargets() (lent by the graph).
+  void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+              const std::vector<Texture2D*>& scratch);
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
@@ -66,7 +72,7 @@ class MomentMapState : public RepresentationState {
   float logExponent_ = 0.0f;
   GLuint sampler_ = 0;
   Texture2D depth_;
-  std::vector<Texture2D> moments_, scratch_;
+  std::vector<Texture2D> moments_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: every moment target + depth
   std::vector<glm::vec4> satOffset_;     // per target: what its summed-area table subtracted
 };

@@ -35,7 +35,7 @@ class PrefilteredRepresentation : public Representation {
   std::string help() const override { return help_; }
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
-  std::string shadowMapFragment() const override { return "passes/shadow_moments.frag"; }
+  CasterDraw casterDraw() const override { return {"passes/shadow_moments.frag"}; }
   std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<MomentMapState>(spec_); }
 
  private:

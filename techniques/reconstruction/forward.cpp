@@ -6,8 +6,8 @@
 // As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
 // is the eye view's depth buffer; one pass draws a point per light texel (its world position
 // rebuilt from the depth it stores), sized forward.splat pixels, into the visibility target.
-// The renderer's own visibility pass (the backward nearest test) runs only for the
-// `forward-holes` view, which compares the two.
+// The renderer's visibility test (the backward nearest test) runs only for the `forward-holes`
+// view, which compares the two; the deferred shade pass lights the G-buffer with the splats.
 #include "reconstruction/reconstruction.h"
 
 #include "gl/gl_util.h"
@@ -28,7 +28,7 @@ class ForwardState : public AccumulationState {
     if (vao_) glDeleteVertexArrays(1, &vao_);
   }
   std::vector<std::string> views() const override { return {"forward-holes"}; }
-  bool addPasses(FrameGraph& graph, AccumulationContext& ctx) override;
+  AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) override;
   std::string status() const override { return std::to_string(points_) + " light samples splatted"; }
 
  private:
@@ -66,11 +66,13 @@ void ForwardState::splat(const AccumulationContext& c) {
   glDisable(GL_PROGRAM_POINT_SIZE);
 }
 
-bool ForwardState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
+AccumulationOutput ForwardState::addPasses(FrameGraph& graph, const AccumulationContext& ctx) {
   if (!vao_) {
     glCreateVertexArrays(1, &vao_);  // attribute-less: the vertex shader reads the map by gl_VertexID
     label(GL_VERTEX_ARRAY, vao_, "forward splats");
   }
+  // The backward test, for the forward-holes view alone (culled when nothing shows it).
+  ctx.addVisibilityTest();
   const AccumulationContext c = ctx;
   graph.add(
       {"forward-splat" + ctx.viewportTag, {"gbuffer", ctx.shadowMap}, {ctx.finalVisibility}, [this, c] { splat(c); }});
@@ -101,7 +103,7 @@ bool ForwardState::addPasses(FrameGraph& graph, AccumulationContext& ctx) {
                }});
     graph.requestSink(res);
   }
-  return true;
+  return ctx.addDeferredShade(ctx.finalVisibility, ctx.finalVisibilityTex);
 }
 
 class ForwardAccumulation : public Accumulation {

@@ -1,6 +1,7 @@
 // The moment maps in the renderer: the filter passes against direct box averages, robustness
 // to broken texels, the clear value, and every pre-filtered representation rendering finite
 // visibility in [0,1] under every filter method, format, layout and accumulation.
+#include "part/transient_textures.h"
 #include "prefiltered/tests/moment_probe.h"
 #include "technique.h"
 
@@ -37,11 +38,18 @@ void fill(const Texture2D& tex, int channels, const std::vector<float>& data) {
 void runFilter(GlHarness& h, MomentMapState& s) {
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
-  s.filter(h.shaders, [vao] {
-    glBindVertexArray(vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-  });
+  TransientTextures pool;  // the frame graph's lender, here without a graph
+  std::vector<Texture2D*> scratch;
+  for (const TextureDesc& d : s.scratchTargets())
+    scratch.push_back(static_cast<Texture2D*>(pool.acquire(d, "test scratch")));
+  s.filter(
+      h.shaders,
+      [vao] {
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+      },
+      scratch);
   glDeleteVertexArrays(1, &vao);
 }
 

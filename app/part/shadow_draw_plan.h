@@ -1,0 +1,55 @@
+// What the one generic shadow pass draws for a viewport: the caster stages, which casters, and
+// per light view the whole layer or only some tiles of it. The layout (its light views' projection
+// kind, its tiles) and the representation (its fragment stage, which casters it takes) fill it in
+// as data; the renderer draws it. No GL calls here, so plans are tested without a GPU.
+#pragma once
+
+#include "part/light_space.h"
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sl {
+
+// Which instances the shadow pass draws: Opaque when the representation takes the
+// semi-transparent ones in passes of its own (deep shadow maps' fragment lists).
+enum class CasterSet { All, Opaque };
+
+// A representation's part of the plan.
+struct CasterDraw {
+  std::string fragment = "passes/shadow.frag";  // moment representations write their own targets
+  CasterSet casters = CasterSet::All;
+};
+
+// A piece of a layer drawn into its own rectangle (a page of a virtual map).
+struct ShadowTile {
+  glm::ivec4 rect{0};  // x, y, width, height in texels of the layer: viewport, scissor, the part cleared
+  // u_pageTransform: clip xy * .xy + clip w * .zw maps the tile's square of the layer's clip
+  // space onto the rectangle (identity: (1, 1, 0, 0)).
+  glm::vec4 transform{1.0f, 1.0f, 0.0f, 0.0f};
+  // The same as a matrix after the layer's view-projection, so instances outside the tile are
+  // skipped (shadowmap.cull_instances).
+  glm::mat4 clip(const glm::mat4& layerViewProj) const;
+};
+
+struct ShadowLayerDraw {
+  bool tiled = false;             // false: the whole layer, cleared first
+  std::vector<ShadowTile> tiles;  // tiled: only these, each cleared; the rest of the layer is kept
+};
+
+struct ShadowDrawPlan {
+  std::vector<std::pair<GLenum, std::string>> stages;
+  CasterSet casters = CasterSet::All;
+  std::vector<ShadowLayerDraw> layers;  // one per light view
+};
+
+// The stages that draw casters into the light views: passes/shadow.vert, the tessellation
+// stages when a view is not a projective map (LightView::Projection::LogWarp bends straight
+// edges), then `fragment`.
+std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment);
+
+}  // namespace sl
