@@ -210,6 +210,13 @@ class ErrorPanel {
   void startJob(ExplorerState& state, Renderer& renderer, const RestKey& key);
   void measure(ExplorerState& state, Renderer& renderer, const Reference& ref, int slot, bool wantImage);
 
+  // drawPanel's parts (error_panel_draw.cpp).
+  void drawStatus() const;
+  void drawAccuracyTable(const ExplorerState& state) const;
+  void drawAccuracyRow(int viewport) const;
+  std::vector<std::string> shownConfigs(const ExplorerState& state) const;
+  void drawChart(const ExplorerState& state);
+
   RestDetector rest_;
   uint64_t sceneGeneration_ = 1;
   std::vector<Reference> references_;  // most recent last, a few kept (jumping between cameras)

@@ -34,12 +34,225 @@ void dashedLine(ImDrawList* d, ImVec2 a, ImVec2 b, ImU32 col, float thickness, f
   }
 }
 
+const ImU32 kChartGrid = IM_COL32(60, 60, 68, 255);
+const ImU32 kChartLabel = IM_COL32(170, 170, 178, 255);
+const ImU32 kChartFront = IM_COL32(230, 230, 230, 200);
+
+constexpr int kColumns = 8;  // of the accuracy table
+
+void setUpAccuracyColumns() {
+  const char* headers[kColumns] = {"#", "wrong", "image", "f.shadow", "f.light", "rmse", "NaN", "ms"};
+  const char* tips[kColumns] = {
+      "Viewport (colour of its points in the chart)",
+      "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+      "Image-wrong pixels, % of covered pixels: the shaded colour differs from the same shading\n"
+      "with the truth's visibility by more than 30/255 in R, G or B (Scherzer et al.'s figure 3).\n"
+      "Lower than 'wrong' where the shading hides a visibility error: grazing light (small N.L),\n"
+      "dark albedo.",
+      "False shadow, %: dark where the truth is lit (orange in the error view)",
+      "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+      "Root mean square visibility error over covered pixels",
+      "Non-finite (NaN/Inf) visibility values, counted as wrong",
+      "ms per frame of this viewport's own passes (names ending in [v]): not the debug views\n"
+      "('view.*') and not the shared G-buffer, which techniques do not read (it is drawn for\n"
+      "debug views and the reference), so the figure does not depend on what else is shown.\n"
+      "Median of the last 30 frames (see Timings for the passes)."};
+  const float weights[kColumns] = {0.4f, 1.0f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
+  for (int c = 0; c < kColumns; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
+  ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+  for (int c = 0; c < kColumns; ++c) {
+    ImGui::TableSetColumnIndex(c);
+    ImGui::TableHeader(headers[c]);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
+  }
+}
+
+// Columns 1-6 of a measured viewport; greyed when the measurement is of an earlier view.
+void drawMetricCells(const ErrorMetrics& m, const ImageErrorMetrics& image, bool current) {
+  auto cell = [&](int column, const char* text, const ImVec4* color) {
+    ImGui::TableSetColumnIndex(column);
+    if (!current)
+      ImGui::TextDisabled("%s", text);
+    else if (color)
+      ImGui::TextColored(*color, "%s", text);
+    else
+      ImGui::TextUnformatted(text);
+  };
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f%%", m.wrongPixelPct);
+  cell(1, buf, nullptr);
+  if (std::isfinite(image.imageWrongPct))
+    std::snprintf(buf, sizeof buf, "%.2f%%", image.imageWrongPct);
+  else
+    std::snprintf(buf, sizeof buf, "-");
+  cell(2, buf, nullptr);
+  std::snprintf(buf, sizeof buf, "%.2f%%", m.falseShadowPct);
+  cell(3, buf, &kFalseShadow);
+  std::snprintf(buf, sizeof buf, "%.2f%%", m.falseLightPct);
+  cell(4, buf, &kFalseLight);
+  std::snprintf(buf, sizeof buf, "%.3f", m.rmse);
+  cell(5, buf, nullptr);
+  std::snprintf(buf, sizeof buf, "%lld", m.nonfinite);
+  cell(6, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
+}
+
+// The ms column: timed every frame, so never greyed like the error columns.
+void drawCostCell(const MedianWindow& ownMs, const MedianWindow& gbufferMs, bool timing) {
+  ImGui::TableSetColumnIndex(7);
+  const double own = ownMs.median(), gb = gbufferMs.median();
+  if (own >= 0) {
+    ImGui::Text("%.2f", own);
+    if (ImGui::IsItemHovered()) {
+      if (gb >= 0)
+        ImGui::SetTooltip("%.2f ms own passes, median of %zu frames (the shared G-buffer, %.2f ms, not included)", own,
+                          ownMs.count(), gb);
+      else
+        ImGui::SetTooltip("%.2f ms own passes, median of %zu frames", own, ownMs.count());
+    }
+  } else {
+    ImGui::TextDisabled("-");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timing ? "no timed pass yet" : "Timings > Time passes is off");
+  }
+}
+
+// Returns whether "clear" was clicked.
+bool drawChartHeading() {
+  ImGui::TextUnformatted("Error vs time, this session");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "One point per configuration (technique + changed parameters) measured this\n"
+        "session: the median error of its last 5 measurements and the median ms (own passes)\n"
+        "of its last 64, so a point holds still while readings jitter (and still follows a\n"
+        "technique that converges). Dashed: the Pareto front, configurations\n"
+        "that no other is both faster and more accurate than. Numbered points are what\n"
+        "the viewports show now; grey ones were tried earlier (possibly from another\n"
+        "camera: compare points measured at the same view).");
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x - 40.0f);
+  return ImGui::SmallButton("clear");
+}
+
+// The chart's plot rectangle and axes, shared by the drawing steps below.
+struct ChartCanvas {
+  ImDrawList* d = nullptr;
+  ImVec2 origin;
+  float line = 0, left = 0, right = 0, top = 0, bottom = 0;
+  bool hovered = false;
+  ChartAxis xAxis, yAxis;
+  ImVec2 toScreen(double ms, double err) const {
+    return ImVec2(left + float(xAxis.toUnit(ms)) * (right - left), bottom - float(yAxis.toUnit(err)) * (bottom - top));
+  }
+};
+
+// Reserves the chart's space (an invisible button, so hovering it can be told apart) and fits
+// the axes to the points.
+ChartCanvas placeChartCanvas(const std::vector<ChartPoint>& points) {
+  ChartCanvas c;
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = std::max(160.0f, std::min(240.0f, width * 0.55f));
+  c.origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("chart", ImVec2(width, height));
+  c.hovered = ImGui::IsItemHovered();
+  c.d = ImGui::GetWindowDrawList();
+  c.line = ImGui::GetTextLineHeight();
+  c.left = c.origin.x + 44.0f, c.right = c.origin.x + width - 8.0f;
+  c.top = c.origin.y + 6.0f, c.bottom = c.origin.y + height - 2.0f * c.line - 4.0f;
+  c.d->AddRectFilled(c.origin, ImVec2(c.origin.x + width, c.origin.y + height), IM_COL32(24, 24, 28, 255), 3.0f);
+  c.d->AddRect(ImVec2(c.left, c.top), ImVec2(c.right, c.bottom), IM_COL32(90, 90, 100, 255));
+
+  double msMin = 1e30, msMax = -1e30, errMin = 1e30, errMax = -1e30;
+  for (const ChartPoint& p : points) {
+    msMin = std::min(msMin, p.ms), msMax = std::max(msMax, p.ms);
+    errMin = std::min(errMin, p.wrongPct), errMax = std::max(errMax, p.wrongPct);
+  }
+  c.xAxis = chooseChartAxis(msMin, msMax, 0.01);
+  c.yAxis = chooseChartAxis(errMin, errMax, 0.01);
+  return c;
+}
+
+void drawChartAxes(const ChartCanvas& c) {
+  ImDrawList* d = c.d;
+  for (double t : c.xAxis.ticks()) {
+    const float x = c.toScreen(t, 0).x;
+    d->AddLine(ImVec2(x, c.top), ImVec2(x, c.bottom), kChartGrid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(std::min(x - w * 0.5f, c.right - w), c.bottom + 2.0f), kChartLabel, s.c_str());
+  }
+  for (double t : c.yAxis.ticks()) {
+    const float y = c.toScreen(0, t).y;
+    d->AddLine(ImVec2(c.left, y), ImVec2(c.right, y), kChartGrid);
+    const std::string s = formatTick(t);
+    const float w = ImGui::CalcTextSize(s.c_str()).x;
+    d->AddText(ImVec2(c.left - w - 4.0f, y - c.line * 0.5f), kChartLabel, s.c_str());
+  }
+  const std::string xLabel = std::string("ms per frame") + (c.xAxis.log ? " (log)" : "");
+  const std::string yLabel = std::string("wrong %") + (c.yAxis.log ? " (log)" : "");
+  d->AddText(ImVec2((c.left + c.right - ImGui::CalcTextSize(xLabel.c_str()).x) * 0.5f, c.bottom + c.line + 2.0f),
+             kChartLabel, xLabel.c_str());
+  d->AddText(ImVec2(c.origin.x + 4.0f, c.bottom + c.line + 2.0f), kChartLabel, yLabel.c_str());
+}
+
+// A dashed staircase: the best error available for a given time budget.
+void drawParetoFront(const ChartCanvas& c, const std::vector<ChartPoint>& points, const std::vector<size_t>& front) {
+  for (size_t k = 0; k < front.size(); ++k) {
+    const ImVec2 p = c.toScreen(points[front[k]].ms, points[front[k]].wrongPct);
+    const float xEnd = k + 1 < front.size() ? c.toScreen(points[front[k + 1]].ms, 0).x : c.right;
+    dashedLine(c.d, p, ImVec2(xEnd, p.y), kChartFront, 1.5f);
+    if (k + 1 < front.size()) {
+      const ImVec2 q = c.toScreen(points[front[k + 1]].ms, points[front[k + 1]].wrongPct);
+      dashedLine(c.d, ImVec2(xEnd, p.y), ImVec2(xEnd, q.y), kChartFront, 1.5f);
+    }
+  }
+}
+
+// The configurations shown now in their viewport's colour and number, others grey. Returns the
+// point nearest the mouse (within 8 px), or -1.
+int drawChartPoints(const ChartCanvas& c, const std::vector<ChartPoint>& points,
+                    const std::vector<std::string>& shownConfigs) {
+  ImDrawList* d = c.d;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  int hovered = -1;
+  float hoveredDist = 8.0f * 8.0f;
+  d->PushClipRect(ImVec2(c.left - 6, c.top - 6), ImVec2(c.right + 6, c.bottom + 6), true);
+  for (size_t n = 0; n < points.size(); ++n) {
+    const ChartPoint& p = points[n];
+    const ImVec2 s = c.toScreen(p.ms, p.wrongPct);
+    int shownIn = -1;
+    for (int i = 0; i < 4; ++i)
+      if (!shownConfigs[size_t(i)].empty() && shownConfigs[size_t(i)] == p.config) shownIn = i;
+    if (shownIn >= 0) {
+      d->AddCircleFilled(s, 5.0f, kViewportColors[shownIn]);
+      const std::string num = std::to_string(shownIn + 1);
+      d->AddText(ImVec2(s.x + 6.0f, s.y - c.line - 1.0f), kViewportColors[shownIn], num.c_str());
+    } else {
+      d->AddCircle(s, 4.0f, kOldPoint, 0, 1.5f);
+    }
+    const float dx = s.x - mouse.x, dy = s.y - mouse.y;
+    if (c.hovered && dx * dx + dy * dy < hoveredDist) {
+      hoveredDist = dx * dx + dy * dy;
+      hovered = int(n);
+    }
+  }
+  d->PopClipRect();
+  return hovered;
+}
+
 }  // namespace
 
 void ErrorPanel::drawPanel(ExplorerState& state) {
   if (!ImGui::CollapsingHeader("Accuracy vs ray-traced truth", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  drawStatus();
+  drawAccuracyTable(state);
+  if (currentRef_ == 0 && std::any_of(std::begin(viewports_), std::end(viewports_),
+                                      [](const ViewportAccuracy& v) { return v.haveMetrics; }))
+    ImGui::TextDisabled("(grey: measured at the previous resting view)");
+  drawChart(state);
+}
 
-  // Status: tracing, ready, or why nothing is measured.
+// Tracing, ready, or why nothing is measured.
+void ErrorPanel::drawStatus() const {
   const Reference* ref = currentReference();
   if (active_) {
     const JobProgress job = activeProgress();
@@ -71,218 +284,68 @@ void ErrorPanel::drawPanel(ExplorerState& state) {
   } else {
     ImGui::TextDisabled("waiting for the previous trace to stop");
   }
+}
 
-  // Per-viewport table.
+void ErrorPanel::drawAccuracyTable(const ExplorerState& state) const {
   const ImGuiTableFlags flags =
       ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-  constexpr int kColumns = 8;
-  if (ImGui::BeginTable("accuracy", kColumns, flags)) {
-    const char* headers[kColumns] = {"#", "wrong", "image", "f.shadow", "f.light", "rmse", "NaN", "ms"};
-    const char* tips[kColumns] = {
-        "Viewport (colour of its points in the chart)",
-        "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
-        "Image-wrong pixels, % of covered pixels: the shaded colour differs from the same shading\n"
-        "with the truth's visibility by more than 30/255 in R, G or B (Scherzer et al.'s figure 3).\n"
-        "Lower than 'wrong' where the shading hides a visibility error: grazing light (small N.L),\n"
-        "dark albedo.",
-        "False shadow, %: dark where the truth is lit (orange in the error view)",
-        "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
-        "Root mean square visibility error over covered pixels",
-        "Non-finite (NaN/Inf) visibility values, counted as wrong",
-        "ms per frame of this viewport's own passes (names ending in [v]): not the debug views\n"
-        "('view.*') and not the shared G-buffer, which techniques do not read (it is drawn for\n"
-        "debug views and the reference), so the figure does not depend on what else is shown.\n"
-        "Median of the last 30 frames (see Timings for the passes)."};
-    const float weights[kColumns] = {0.4f, 1.0f, 1.0f, 1.1f, 1.0f, 1.0f, 0.7f, 1.0f};
-    for (int c = 0; c < kColumns; ++c) ImGui::TableSetupColumn(headers[c], 0, weights[c]);
-    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
-    for (int c = 0; c < kColumns; ++c) {
+  if (!ImGui::BeginTable("accuracy", kColumns, flags)) return;
+  setUpAccuracyColumns();
+  for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i)
+    if (state.slots[size_t(i)].viewport) drawAccuracyRow(i);
+  ImGui::EndTable();
+}
+
+void ErrorPanel::drawAccuracyRow(int i) const {
+  const ViewportAccuracy& va = viewports_[i];
+  const bool current =
+      va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ && va.config == va.timedConfig;
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kViewportColors[i]));
+  ImGui::Text("%d", i + 1);
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", va.timedConfig.c_str());
+  if (va.haveMetrics) {
+    drawMetricCells(va.metrics, va.image, current);
+  } else {
+    for (int c = 1; c <= 6; ++c) {
       ImGui::TableSetColumnIndex(c);
-      ImGui::TableHeader(headers[c]);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
+      ImGui::TextDisabled("-");
     }
-    for (int i = 0; i < state.viewportCount && i < int(state.slots.size()) && i < 4; ++i) {
-      if (!state.slots[size_t(i)].viewport) continue;
-      const ViewportAccuracy& va = viewports_[i];
-      const bool current =
-          va.haveMetrics && currentRef_ != 0 && va.referenceId == currentRef_ && va.config == va.timedConfig;
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kViewportColors[i]));
-      ImGui::Text("%d", i + 1);
-      ImGui::PopStyleColor();
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", va.timedConfig.c_str());
-      auto cell = [&](int column, const char* text, const ImVec4* color) {
-        ImGui::TableSetColumnIndex(column);
-        if (!current)
-          ImGui::TextDisabled("%s", text);
-        else if (color)
-          ImGui::TextColored(*color, "%s", text);
-        else
-          ImGui::TextUnformatted(text);
-      };
-      char buf[32];
-      if (va.haveMetrics) {
-        const ErrorMetrics& m = va.metrics;
-        std::snprintf(buf, sizeof buf, "%.2f%%", m.wrongPixelPct);
-        cell(1, buf, nullptr);
-        if (std::isfinite(va.image.imageWrongPct))
-          std::snprintf(buf, sizeof buf, "%.2f%%", va.image.imageWrongPct);
-        else
-          std::snprintf(buf, sizeof buf, "-");
-        cell(2, buf, nullptr);
-        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseShadowPct);
-        cell(3, buf, &kFalseShadow);
-        std::snprintf(buf, sizeof buf, "%.2f%%", m.falseLightPct);
-        cell(4, buf, &kFalseLight);
-        std::snprintf(buf, sizeof buf, "%.3f", m.rmse);
-        cell(5, buf, nullptr);
-        std::snprintf(buf, sizeof buf, "%lld", m.nonfinite);
-        cell(6, buf, m.nonfinite > 0 ? &kFalseShadow : nullptr);
-      } else {
-        for (int c = 1; c <= 6; ++c) {
-          ImGui::TableSetColumnIndex(c);
-          ImGui::TextDisabled("-");
-        }
-      }
-      ImGui::TableSetColumnIndex(7);
-      const double own = va.ownMs.median(), gb = va.gbufferMs.median();
-      if (own >= 0) {
-        ImGui::Text("%.2f", own);
-        if (ImGui::IsItemHovered()) {
-          if (gb >= 0)
-            ImGui::SetTooltip("%.2f ms own passes, median of %zu frames (the shared G-buffer, %.2f ms, not included)",
-                              own, va.ownMs.count(), gb);
-          else
-            ImGui::SetTooltip("%.2f ms own passes, median of %zu frames", own, va.ownMs.count());
-        }
-      } else {
-        ImGui::TextDisabled("-");
-        if (ImGui::IsItemHovered())
-          ImGui::SetTooltip("%s", timing_ ? "no timed pass yet" : "Timings > Time passes is off");
-      }
-    }
-    ImGui::EndTable();
   }
-  if (currentRef_ == 0 && std::any_of(std::begin(viewports_), std::end(viewports_),
-                                      [](const ViewportAccuracy& v) { return v.haveMetrics; }))
-    ImGui::TextDisabled("(grey: measured at the previous resting view)");
+  drawCostCell(va.ownMs, va.gbufferMs, timing_);
+}
 
-  // Error vs time chart.
-  ImGui::TextUnformatted("Error vs time, this session");
-  ImGui::SameLine();
-  ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "One point per configuration (technique + changed parameters) measured this\n"
-        "session: the median error of its last 5 measurements and the median ms (own passes)\n"
-        "of its last 64, so a point holds still while readings jitter (and still follows a\n"
-        "technique that converges). Dashed: the Pareto front, configurations\n"
-        "that no other is both faster and more accurate than. Numbered points are what\n"
-        "the viewports show now; grey ones were tried earlier (possibly from another\n"
-        "camera: compare points measured at the same view).");
-  ImGui::SameLine(ImGui::GetContentRegionAvail().x - 40.0f);
-  if (ImGui::SmallButton("clear")) points_.clear();
+// The config each of the 4 viewport slots shows, "" for slots without a viewport.
+std::vector<std::string> ErrorPanel::shownConfigs(const ExplorerState& state) const {
+  std::vector<std::string> configs(4);
+  for (int i = 0; i < state.viewportCount && i < 4; ++i)
+    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport)
+      configs[size_t(i)] = viewports_[i].timedConfig;
+  return configs;
+}
 
-  const float width = ImGui::GetContentRegionAvail().x;
-  const float height = std::max(160.0f, std::min(240.0f, width * 0.55f));
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  ImGui::InvisibleButton("chart", ImVec2(width, height));
-  const bool chartHovered = ImGui::IsItemHovered();
-  ImDrawList* d = ImGui::GetWindowDrawList();
-  const float line = ImGui::GetTextLineHeight();
-  const float left = origin.x + 44.0f, right = origin.x + width - 8.0f;
-  const float top = origin.y + 6.0f, bottom = origin.y + height - 2.0f * line - 4.0f;
-  d->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(24, 24, 28, 255), 3.0f);
-  d->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(90, 90, 100, 255));
-
-  double msMin = 1e30, msMax = -1e30, errMin = 1e30, errMax = -1e30;
-  for (const ChartPoint& p : points_) {
-    msMin = std::min(msMin, p.ms), msMax = std::max(msMax, p.ms);
-    errMin = std::min(errMin, p.wrongPct), errMax = std::max(errMax, p.wrongPct);
-  }
-  const ChartAxis xAxis = chooseChartAxis(msMin, msMax, 0.01);
-  const ChartAxis yAxis = chooseChartAxis(errMin, errMax, 0.01);
-  auto toScreen = [&](double ms, double err) {
-    return ImVec2(left + float(xAxis.toUnit(ms)) * (right - left), bottom - float(yAxis.toUnit(err)) * (bottom - top));
-  };
-  const ImU32 grid = IM_COL32(60, 60, 68, 255), label = IM_COL32(170, 170, 178, 255);
-  for (double t : xAxis.ticks()) {
-    const float x = toScreen(t, 0).x;
-    d->AddLine(ImVec2(x, top), ImVec2(x, bottom), grid);
-    const std::string s = formatTick(t);
-    const float w = ImGui::CalcTextSize(s.c_str()).x;
-    d->AddText(ImVec2(std::min(x - w * 0.5f, right - w), bottom + 2.0f), label, s.c_str());
-  }
-  for (double t : yAxis.ticks()) {
-    const float y = toScreen(0, t).y;
-    d->AddLine(ImVec2(left, y), ImVec2(right, y), grid);
-    const std::string s = formatTick(t);
-    const float w = ImGui::CalcTextSize(s.c_str()).x;
-    d->AddText(ImVec2(left - w - 4.0f, y - line * 0.5f), label, s.c_str());
-  }
-  const std::string xLabel = std::string("ms per frame") + (xAxis.log ? " (log)" : "");
-  const std::string yLabel = std::string("wrong %") + (yAxis.log ? " (log)" : "");
-  d->AddText(ImVec2((left + right - ImGui::CalcTextSize(xLabel.c_str()).x) * 0.5f, bottom + line + 2.0f), label,
-             xLabel.c_str());
-  d->AddText(ImVec2(origin.x + 4.0f, bottom + line + 2.0f), label, yLabel.c_str());
-
+void ErrorPanel::drawChart(const ExplorerState& state) {
+  if (drawChartHeading()) points_.clear();
+  const ChartCanvas canvas = placeChartCanvas(points_);
+  drawChartAxes(canvas);
   if (points_.empty()) {
     const char* msg = "no measurement yet: rest the camera";
     const ImVec2 s = ImGui::CalcTextSize(msg);
-    d->AddText(ImVec2((left + right - s.x) * 0.5f, (top + bottom - s.y) * 0.5f), label, msg);
+    canvas.d->AddText(ImVec2((canvas.left + canvas.right - s.x) * 0.5f, (canvas.top + canvas.bottom - s.y) * 0.5f),
+                      kChartLabel, msg);
     return;
   }
-
-  // Pareto front: a dashed staircase (the best error available for a given time budget).
   const std::vector<size_t> front = paretoFront(points_);
-  const ImU32 frontColor = IM_COL32(230, 230, 230, 200);
-  for (size_t k = 0; k < front.size(); ++k) {
-    const ImVec2 p = toScreen(points_[front[k]].ms, points_[front[k]].wrongPct);
-    const float xEnd = k + 1 < front.size() ? toScreen(points_[front[k + 1]].ms, 0).x : right;
-    dashedLine(d, p, ImVec2(xEnd, p.y), frontColor, 1.5f);
-    if (k + 1 < front.size()) {
-      const ImVec2 q = toScreen(points_[front[k + 1]].ms, points_[front[k + 1]].wrongPct);
-      dashedLine(d, ImVec2(xEnd, p.y), ImVec2(xEnd, q.y), frontColor, 1.5f);
-    }
-  }
-
-  // Points: the configurations shown now in their viewport's colour and number, others grey.
-  std::vector<std::string> shownConfigs(4);
-  for (int i = 0; i < state.viewportCount && i < 4; ++i)
-    if (state.slots.size() > size_t(i) && state.slots[size_t(i)].viewport)
-      shownConfigs[size_t(i)] = viewports_[i].timedConfig;
-  const ImVec2 mouse = ImGui::GetIO().MousePos;
-  int hovered = -1;
-  float hoveredDist = 8.0f * 8.0f;
-  d->PushClipRect(ImVec2(left - 6, top - 6), ImVec2(right + 6, bottom + 6), true);
-  for (size_t n = 0; n < points_.size(); ++n) {
-    const ChartPoint& p = points_[n];
-    const ImVec2 s = toScreen(p.ms, p.wrongPct);
-    int shownIn = -1;
-    for (int i = 0; i < 4; ++i)
-      if (!shownConfigs[size_t(i)].empty() && shownConfigs[size_t(i)] == p.config) shownIn = i;
-    if (shownIn >= 0) {
-      d->AddCircleFilled(s, 5.0f, kViewportColors[shownIn]);
-      const std::string num = std::to_string(shownIn + 1);
-      d->AddText(ImVec2(s.x + 6.0f, s.y - line - 1.0f), kViewportColors[shownIn], num.c_str());
-    } else {
-      d->AddCircle(s, 4.0f, kOldPoint, 0, 1.5f);
-    }
-    const float dx = s.x - mouse.x, dy = s.y - mouse.y;
-    if (chartHovered && dx * dx + dy * dy < hoveredDist) {
-      hoveredDist = dx * dx + dy * dy;
-      hovered = int(n);
-    }
-  }
-  d->PopClipRect();
-  if (hovered >= 0) {
-    const ChartPoint& p = points_[size_t(hovered)];
-    const bool onFront = std::find(front.begin(), front.end(), size_t(hovered)) != front.end();
-    ImGui::SetTooltip("%s\n%.2f ms per frame (median of %zu readings), %.2f%% wrong pixels, %.2f%% image-wrong%s",
-                      p.config.c_str(), p.ms, p.msReadings.size(), p.wrongPct, p.imageWrongPct,
-                      onFront ? "\non the Pareto front" : "");
-  }
+  drawParetoFront(canvas, points_, front);
+  const int hovered = drawChartPoints(canvas, points_, shownConfigs(state));
+  if (hovered < 0) return;
+  const ChartPoint& p = points_[size_t(hovered)];
+  const bool onFront = std::find(front.begin(), front.end(), size_t(hovered)) != front.end();
+  ImGui::SetTooltip("%s\n%.2f ms per frame (median of %zu readings), %.2f%% wrong pixels, %.2f%% image-wrong%s",
+                    p.config.c_str(), p.ms, p.msReadings.size(), p.wrongPct, p.imageWrongPct,
+                    onFront ? "\non the Pareto front" : "");
 }
 
 }  // namespace sl

@@ -170,19 +170,9 @@ bool renderViewports(Renderer& renderer, ExplorerState& state, const MainAreaLay
   return false;
 }
 
-// Owns everything holding GL objects, so it all goes before the context does.
-int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> techniques) {
-  ShaderLibrary shaders(state.shaderDir);
-  Renderer renderer(shaders);
-  renderer.setScene(*state.scene);
-  // After the renderer, so it goes first: it joins its worker and frees its textures while the
-  // context and the scene still exist.
-  ErrorPanel errorPanel;
-  struct PanelLink {
-    ExplorerState& state;
-    ~PanelLink() { state.errorPanel = nullptr; }
-  } panelLink{state};
-  state.errorPanel = &errorPanel;
+// Fills the viewport slots with the start techniques and selects the debug views asked for.
+// False (after saying why) when --view names a view none of them offers.
+bool placeStartViewports(ExplorerState& state, std::vector<Technique>& techniques) {
   state.slots.resize(kMaxViewports);
   for (size_t i = 0; i < techniques.size() && i < state.slots.size(); ++i)
     state.slots[i].viewport = std::make_unique<Viewport>(std::move(techniques[i]));
@@ -196,7 +186,7 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       std::cerr << "shadowlab: no debug view '" << view << "'; these techniques offer:";
       for (const std::string& name : offered) std::cerr << " " << name;
       std::cerr << "\n";
-      return 1;
+      return false;
     }
     state.selectedViews.insert(view);
   }
@@ -210,19 +200,55 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
   state.plotPinned = state.options.visibilityPlot;
   state.showDpdsPlot = state.options.dpdsPlot;
   state.cutPending = true;
-  TourPlayer tour;
-  if (!state.options.tour.empty() &&
-      !tour.start(state, renderer, state.options.tour, state.options.tourStep, state.options.presenter))
-    return 1;
+  return true;
+}
 
-  const int maxFrames = state.options.maxFrames;
-  std::unique_ptr<SoakDriver> soak;
-  if (state.options.soakSeconds > 0) soak = std::make_unique<SoakDriver>(state.options.soakSeconds, state.shaderDir);
-  glfwSwapInterval(maxFrames > 0 || soak ? 0 : 1);  // smoke runs should not wait for vsync
+// What the keys and panels left behind, for scripts and the window tests
+// (tests/explorer_smoke_test.cpp).
+void printFrameReport(GLFWwindow* window, const ExplorerState& state, const TourPlayer& tour,
+                      std::vector<double> frameSeconds) {
+  std::sort(frameSeconds.begin(), frameSeconds.end());
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  std::printf("explorer: %zu frames timed, median frame %.1f ms (%.1f fps), window %dx%d, %s\n", frameSeconds.size(),
+              frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
+              glRendererName().c_str());
+  std::printf(
+      "explorer: state viewports=%d ui_scale=%.3f paused=%d frozen=%d frames_since_cut=%d colour_keys=%d "
+      "help=%d dpds_plot=%d enlarged=%s tour_step=%zu tour_frames=%d\n",
+      state.viewportCount, state.uiScale, int(state.paused), int(state.frozen), state.framesSinceCut,
+      int(state.showColourKeys), int(state.showHelp), int(state.showDpdsPlot),
+      state.slots.empty() || state.slots[0].enlargedView.empty() ? "-" : state.slots[0].enlargedView.c_str(),
+      tour.active() ? tour.step() + 1 : 0, tour.active() ? tour.stageFrames() : 0);
+}
+
+// The frame loop, with what it carries from one frame to the next.
+struct FrameLoop {
+  GLFWwindow* window;
+  ExplorerState& state;
+  ShaderLibrary& shaders;
+  Renderer& renderer;
+  ErrorPanel& errorPanel;
+  TourPlayer& tour;
+  SoakDriver* soak;
+  const int maxFrames;
   double lastTime = glfwGetTime(), lastShaderPoll = lastTime;
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   std::vector<std::string> printedShaderErrors;
   float appliedUiScale = state.uiScale;
+
+  // Until the window closes, --frames runs out or the soak ends. False when the exit screenshot
+  // could not be written.
+  bool run();
+  float advanceClock(int frame, double now);
+  void reloadShaders(double now);
+  void beginUi(double now);
+  bool drawFrame(double now, float dt, int fbWidth, int fbHeight, bool lastFrame);
+  MainAreaResult drawOverlays(const MainAreaLayout& layout, float panelWidth, bool plotKey);
+  bool saveFrameOutputs(double now, int fbWidth, int fbHeight, bool lastFrame);
+};
+
+bool FrameLoop::run() {
   for (int frame = 0;; ++frame) {
     clearKeyPresses();
     glfwPollEvents();
@@ -236,109 +262,146 @@ int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> t
       continue;
     }
     const double now = glfwGetTime();
-    const double frameTime = now - lastTime;
-    lastTime = now;
-    const float dt = std::min(float(frameTime), kMaxFrameSeconds);
-    if (frame > 5) frameSeconds.push_back(frameTime);  // skip start-up and shader builds
-    // The display shows the real frame time; only camera motion uses the clamped step.
-    state.smoothedFrameMs += (float(frameTime) * 1000.0f - state.smoothedFrameMs) * 0.1f;
-    if (now - lastShaderPoll >= kShaderPollSeconds) {
-      shaders.reloadChanged();
-      lastShaderPoll = now;
-      // The panel shows them; a terminal gets each new one once too (file:line first).
-      std::vector<std::string> errors = shaders.errors();
-      for (const std::string& e : errors)
-        if (std::find(printedShaderErrors.begin(), printedShaderErrors.end(), e) == printedShaderErrors.end())
-          std::cerr << "shadowlab: shader error (the last good program keeps running): " << e << "\n";
-      printedShaderErrors = std::move(errors);
-    }
-
-    if (state.uiScale != appliedUiScale) {  // fonts are rebuilt between frames, never inside one
-      applyUiScale(state.uiScale);
-      appliedUiScale = state.uiScale;
-    }
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    handleShortcuts(state);
-    if (state.quitRequested) glfwSetWindowShouldClose(window, GLFW_TRUE);  // seen at the next frame's start
-    tour.handleKeys(state, renderer);
-    if (soak) soak->beforeFrame(state, renderer, shaders, now);
-    if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
-    applyCompositionChanges(state);
-    ensureViewportSlots(state);
-    applySelectedViews(state);
-
-    const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth =
-        tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
-    const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
-    const MainAreaLayout layout = layoutMainArea(
-        ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
-        state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
-    advanceCameraAndTime(window, state, dt);
-    // The visibility plot (hold V) reads the G-buffer under the mouse.
-    const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
-    renderer.keepGBuffer = errorPanel.wantsGBuffer() || plotKey;
-    const bool rendered = renderViewports(renderer, state, layout);
-    errorPanel.afterRender(state, renderer, layout.renderWidth, layout.renderHeight, rendered);
-
-    // Drawn after rendering so the images reference this frame's textures (a resize may have
-    // replaced them).
-    const MainAreaResult area = drawMainArea(layout, state);
-    state.hoveredViewport = area.hoveredViewport;
-    tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
-    tour.drawPlot(ImVec2(panelWidth, 0),
-                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()));
-    drawDpdsWindow(state, layout.renderWidth, layout.renderHeight, ImVec2(panelWidth, 0),
-                   ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
-    const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
-    if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
-      drawMagnifier(area.hoveredImage, io.MousePos);
-    if (plotKey && area.hoveredViewport >= 0 && area.hoveredViewport < state.viewportCount)
-      drawVisibilityPlot(shaders, renderer, shownViewports(state), size_t(area.hoveredViewport), area.hoveredImage,
-                         io.MousePos);
-
-    drawHelpWindow(state);
-
-    ImGui::Render();
-    prepareDefaultFramebuffer(fbWidth, fbHeight);
-    blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-    if (lastFrame && state.options.saveOnExit) {
-      state.screenshotRequested = state.viewportShotsRequested = true;
-      exportAccuracy(state);
-    }
-    saveRequestedScreenshots(state, fbWidth, fbHeight);
-    saveSettingsIfChanged(state, now, lastFrame);
-    if (lastFrame && !state.options.screenshotOnExit.empty()) {
-      const std::string error = writeWindowPng(fbWidth, fbHeight, state.options.screenshotOnExit);
-      if (!error.empty()) {
-        std::cerr << "shadowlab: " << error << "\n";
-        return 1;
-      }
-    }
+    const float dt = advanceClock(frame, now);
+    if (!drawFrame(now, dt, fbWidth, fbHeight, lastFrame)) return false;
     glfwSwapBuffers(window);
     if (soak) soak->afterFrame(state);
-    if (lastFrame) break;
+    if (lastFrame) return true;
   }
-  if (maxFrames > 0 && !frameSeconds.empty()) {
-    std::sort(frameSeconds.begin(), frameSeconds.end());
-    int w = 0, h = 0;
-    glfwGetWindowSize(window, &w, &h);
-    std::printf("explorer: %zu frames timed, median frame %.1f ms (%.1f fps), window %dx%d, %s\n", frameSeconds.size(),
-                frameSeconds[frameSeconds.size() / 2] * 1000.0, 1.0 / frameSeconds[frameSeconds.size() / 2], w, h,
-                glRendererName().c_str());
-    // What the keys and panels left behind, for scripts and the window tests (tests/explorer_smoke_test.cpp).
-    std::printf(
-        "explorer: state viewports=%d ui_scale=%.3f paused=%d frozen=%d frames_since_cut=%d colour_keys=%d "
-        "help=%d dpds_plot=%d enlarged=%s tour_step=%zu tour_frames=%d\n",
-        state.viewportCount, state.uiScale, int(state.paused), int(state.frozen), state.framesSinceCut,
-        int(state.showColourKeys), int(state.showHelp), int(state.showDpdsPlot),
-        state.slots.empty() || state.slots[0].enlargedView.empty() ? "-" : state.slots[0].enlargedView.c_str(),
-        tour.active() ? tour.step() + 1 : 0, tour.active() ? tour.stageFrames() : 0);
+}
+
+// Returns the camera's time step for this frame.
+float FrameLoop::advanceClock(int frame, double now) {
+  const double frameTime = now - lastTime;
+  lastTime = now;
+  const float dt = std::min(float(frameTime), kMaxFrameSeconds);
+  if (frame > 5) frameSeconds.push_back(frameTime);  // skip start-up and shader builds
+  // The display shows the real frame time; only camera motion uses the clamped step.
+  state.smoothedFrameMs += (float(frameTime) * 1000.0f - state.smoothedFrameMs) * 0.1f;
+  if (now - lastShaderPoll >= kShaderPollSeconds) reloadShaders(now);
+  return dt;
+}
+
+void FrameLoop::reloadShaders(double now) {
+  shaders.reloadChanged();
+  lastShaderPoll = now;
+  // The panel shows them; a terminal gets each new one once too (file:line first).
+  std::vector<std::string> errors = shaders.errors();
+  for (const std::string& e : errors)
+    if (std::find(printedShaderErrors.begin(), printedShaderErrors.end(), e) == printedShaderErrors.end())
+      std::cerr << "shadowlab: shader error (the last good program keeps running): " << e << "\n";
+  printedShaderErrors = std::move(errors);
+}
+
+// Starts the ImGui frame and runs what may change the viewports before they render.
+void FrameLoop::beginUi(double now) {
+  if (state.uiScale != appliedUiScale) {  // fonts are rebuilt between frames, never inside one
+    applyUiScale(state.uiScale);
+    appliedUiScale = state.uiScale;
   }
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  handleShortcuts(state);
+  if (state.quitRequested) glfwSetWindowShouldClose(window, GLFW_TRUE);  // seen at the next frame's start
+  tour.handleKeys(state, renderer);
+  if (soak) soak->beforeFrame(state, renderer, shaders, now);
+  if (!tour.presenter()) drawSidePanel(state, renderer, shaders);
+  applyCompositionChanges(state);
+  ensureViewportSlots(state);
+  applySelectedViews(state);
+}
+
+// False when the exit screenshot could not be written.
+bool FrameLoop::drawFrame(double now, float dt, int fbWidth, int fbHeight, bool lastFrame) {
+  beginUi(now);
+  const ImGuiIO& io = ImGui::GetIO();
+  const float panelWidth =
+      tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
+  const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
+  const MainAreaLayout layout = layoutMainArea(
+      ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
+      state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+  advanceCameraAndTime(window, state, dt);
+  // The visibility plot (hold V) reads the G-buffer under the mouse.
+  const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
+  renderer.keepGBuffer = errorPanel.wantsGBuffer() || plotKey;
+  const bool rendered = renderViewports(renderer, state, layout);
+  errorPanel.afterRender(state, renderer, layout.renderWidth, layout.renderHeight, rendered);
+
+  const MainAreaResult area = drawOverlays(layout, panelWidth, plotKey);
+  ImGui::Render();
+  prepareDefaultFramebuffer(fbWidth, fbHeight);
+  blitToScreen(area.blits, fbHeight, io.DisplayFramebufferScale);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return saveFrameOutputs(now, fbWidth, fbHeight, lastFrame);
+}
+
+// Drawn after rendering so the images reference this frame's textures (a resize may have
+// replaced them).
+MainAreaResult FrameLoop::drawOverlays(const MainAreaLayout& layout, float panelWidth, bool plotKey) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const MainAreaResult area = drawMainArea(layout, state);
+  state.hoveredViewport = area.hoveredViewport;
+  tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
+  tour.drawPlot(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()));
+  drawDpdsWindow(state, layout.renderWidth, layout.renderHeight, ImVec2(panelWidth, 0),
+                 ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
+  const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;
+  if ((state.magnifierPinned || magnifierKey) && area.hoveredImage.valid())
+    drawMagnifier(area.hoveredImage, io.MousePos);
+  if (plotKey && area.hoveredViewport >= 0 && area.hoveredViewport < state.viewportCount)
+    drawVisibilityPlot(shaders, renderer, shownViewports(state), size_t(area.hoveredViewport), area.hoveredImage,
+                       io.MousePos);
+
+  drawHelpWindow(state);
+  return area;
+}
+
+// Screenshots, accuracy exports and settings; false when the exit screenshot failed.
+bool FrameLoop::saveFrameOutputs(double now, int fbWidth, int fbHeight, bool lastFrame) {
+  if (lastFrame && state.options.saveOnExit) {
+    state.screenshotRequested = state.viewportShotsRequested = true;
+    exportAccuracy(state);
+  }
+  saveRequestedScreenshots(state, fbWidth, fbHeight);
+  saveSettingsIfChanged(state, now, lastFrame);
+  if (lastFrame && !state.options.screenshotOnExit.empty()) {
+    const std::string error = writeWindowPng(fbWidth, fbHeight, state.options.screenshotOnExit);
+    if (!error.empty()) {
+      std::cerr << "shadowlab: " << error << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Owns everything holding GL objects, so it all goes before the context does.
+int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> techniques) {
+  ShaderLibrary shaders(state.shaderDir);
+  Renderer renderer(shaders);
+  renderer.setScene(*state.scene);
+  // After the renderer, so it goes first: it joins its worker and frees its textures while the
+  // context and the scene still exist.
+  ErrorPanel errorPanel;
+  struct PanelLink {
+    ExplorerState& state;
+    ~PanelLink() { state.errorPanel = nullptr; }
+  } panelLink{state};
+  state.errorPanel = &errorPanel;
+  if (!placeStartViewports(state, techniques)) return 1;
+  TourPlayer tour;
+  if (!state.options.tour.empty() &&
+      !tour.start(state, renderer, state.options.tour, state.options.tourStep, state.options.presenter))
+    return 1;
+
+  const int maxFrames = state.options.maxFrames;
+  std::unique_ptr<SoakDriver> soak;
+  if (state.options.soakSeconds > 0) soak = std::make_unique<SoakDriver>(state.options.soakSeconds, state.shaderDir);
+  glfwSwapInterval(maxFrames > 0 || soak ? 0 : 1);  // smoke runs should not wait for vsync
+  FrameLoop loop{window, state, shaders, renderer, errorPanel, tour, soak.get(), maxFrames};
+  if (!loop.run()) return 1;
+  if (maxFrames > 0 && !loop.frameSeconds.empty()) printFrameReport(window, state, tour, loop.frameSeconds);
   if (soak) return soak->finish();
   // In --frames mode a failing renderer must not look like success to scripts and tests.
   if (maxFrames > 0 && !state.renderError.empty()) return 1;

@@ -11,8 +11,8 @@ namespace {
 const SpecialColour kSky{{0.10f, 0.10f, 0.12f}, "no geometry (sky)"};
 const SpecialColour kBlackSky{{0.0f, 0.0f, 0.0f}, "black: no geometry (sky)"};
 
-std::map<std::string, ColourKey> makeKeys() {
-  std::map<std::string, ColourKey> keys;
+// The views of any shadow map: texel density, depth, the shadow term and the texel grid.
+void addShadowMapKeys(std::map<std::string, ColourKey>& keys) {
   // shaders/views/aliasing.frag: aliasingHeat().
   keys["aliasing"] = {"screen pixels per shadow-map texel",
                       "px/texel",
@@ -43,6 +43,10 @@ std::map<std::string, ColourKey> makeKeys() {
                      {{0.30f, 0.30f, 0.30f}, "outside the map"},
                      kSky},
                     "big squares = one texel over many pixels"};
+}
+
+// The temporal accumulation techniques' views.
+void addAccumulationKeys(std::map<std::string, ColourKey>& keys) {
   // shaders/accumulation/views_confidence.frag.
   keys["confidence"] = {"shadow-test confidence (1 at a texel centre)",
                         "",
@@ -66,6 +70,10 @@ std::map<std::string, ColourKey> makeKeys() {
                            {{0.95f, 0.85f, 0.1f}, "yellow: rejected (pc.reject)"},
                            kBlackSky},
                           ""};
+}
+
+// The layout views (frusta, cascade splits) and the error view: categories only, no gradient.
+void addOverviewKeys(std::map<std::string, ColourKey>& keys) {
   // app/render/debug_views.cpp: the lightspace overview's line colours.
   keys["lightspace"] = {"overview: camera and light frusta",
                         "",
@@ -94,6 +102,13 @@ std::map<std::string, ColourKey> makeKeys() {
                     {{1.0f, 0.0f, 1.0f}, "magenta: NaN/Inf"},
                     {{0.0f, 0.0f, 0.0f}, "black: no geometry / no reference"}},
                    "needs a resting camera"};
+}
+
+std::map<std::string, ColourKey> makeKeys() {
+  std::map<std::string, ColourKey> keys;
+  addShadowMapKeys(keys);
+  addAccumulationKeys(keys);
+  addOverviewKeys(keys);
   return keys;
 }
 
