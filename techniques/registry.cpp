@@ -2,6 +2,7 @@
 // the parameters every technique has, and techniques built from presets.
 #include "technique.h"
 #include "param_hints.h"
+#include "render/view_keys.h"
 
 namespace sl {
 
@@ -100,6 +101,22 @@ Family reconstructionFamily();
 Family softFamily();
 Family deepFamily();
 Family optimizedPcfFamily();
+
+const ColourKey* viewColourKey(const std::string& viewName) {
+  if (const ColourKey* key = commonViewColourKey(viewName)) return key;
+  for (const Family& f : allFamilies()) {
+    auto it = f.viewKeys.find(viewName);
+    if (it != f.viewKeys.end()) return &it->second;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> viewsWithColourKeys() {
+  std::vector<std::string> names = commonViewsWithColourKeys();
+  for (const Family& f : allFamilies())
+    for (const auto& [name, key] : f.viewKeys) names.push_back(name);
+  return names;
+}
 
 const std::vector<Family>& allFamilies() {
   static const std::vector<Family> list = [] {

@@ -1,7 +1,8 @@
-// Draws a debug view's colour key (app/render/view_keys.h) over its image in the viewport area.
+// Draws a debug view's colour key (part/colour_key.h; the registry's viewColourKey finds it) over
+// its image in the viewport area.
 #pragma once
 
-#include "render/view_keys.h"
+#include "part/colour_key.h"
 
 #include <imgui.h>
 

@@ -2,6 +2,7 @@
 
 #include "explorer/colour_key.h"
 #include "explorer/error_panel.h"
+#include "technique.h"
 
 #include <algorithm>
 #include <cmath>

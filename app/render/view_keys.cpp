@@ -45,34 +45,7 @@ void addShadowMapKeys(std::map<std::string, ColourKey>& keys) {
                     "big squares = one texel over many pixels"};
 }
 
-// The temporal accumulation techniques' views.
-void addAccumulationKeys(std::map<std::string, ColourKey>& keys) {
-  // shaders/accumulation/views_confidence.frag.
-  keys["confidence"] = {"shadow-test confidence (1 at a texel centre)",
-                        "",
-                        {{0.0f, {0.0f, 0.0f, 0.0f}, "0"}, {1.0f, {0.7f, 0.7f, 0.7f}, "1"}},
-                        {{{1.0f, 0.55f, 0.0f}, "orange: update weight conf^m"}, kBlackSky},
-                        "averaged over a pixel where texels are smaller than pixels"};
-  keys["history"] = {"reprojected history s(n-1)",
-                     "",
-                     {{0.0f, {0.1f, 0.1f, 0.1f}, "0 shadow"}, {1.0f, {0.95f, 0.95f, 0.95f}, "1 lit"}},
-                     {{{0.15f, 0.35f, 0.95f}, "blue: no history (cut, off-screen)"},
-                      {{0.95f, 0.85f, 0.10f}, "yellow: replaced (moving caster)"},
-                      kBlackSky},
-                     ""};
-  keys["disocclusion"] = {"why a pixel has no usable history",
-                          "",
-                          {},
-                          {{{0.35f, 0.35f, 0.35f}, "grey: history used"},
-                           {{0.6f, 0.2f, 0.8f}, "purple: none (after a cut)"},
-                           {{0.15f, 0.35f, 0.95f}, "blue: off-screen last frame"},
-                           {{1.0f, 0.5f, 0.0f}, "orange: disoccluded"},
-                           {{0.95f, 0.85f, 0.1f}, "yellow: rejected (pc.reject)"},
-                           kBlackSky},
-                          ""};
-}
-
-// The layout views (frusta, cascade splits) and the error view: categories only, no gradient.
+// The light-space overview and the error view: categories only, no gradient.
 void addOverviewKeys(std::map<std::string, ColourKey>& keys) {
   // app/render/debug_views.cpp: the lightspace overview's line colours.
   keys["lightspace"] = {"overview: camera and light frusta",
@@ -83,15 +56,6 @@ void addOverviewKeys(std::map<std::string, ColourKey>& keys) {
                          {{1.0f, 1.0f, 1.0f}, "white: camera (with cascades)"},
                          {{0.90f, 0.30f, 0.25f}, "red, yellow, green..: cascades"}},
                         ""};
-  keys["cascades"] = {"which light view (split) a pixel reads",
-                      "",
-                      {},
-                      {{{0.90f, 0.30f, 0.25f}, "split 1"},
-                       {{0.95f, 0.75f, 0.20f}, "split 2"},
-                       {{0.35f, 0.75f, 0.30f}, "split 3"},
-                       {{0.25f, 0.55f, 0.90f}, "split 4"},
-                       {{0.65f, 0.40f, 0.85f}, "split 5+"}},
-                      "mixed, hatched: blend band"};
   // app/metrics/metrics.cpp: errorImage().
   keys["error"] = {"difference to the ray-traced reference",
                    "",
@@ -107,7 +71,6 @@ void addOverviewKeys(std::map<std::string, ColourKey>& keys) {
 std::map<std::string, ColourKey> makeKeys() {
   std::map<std::string, ColourKey> keys;
   addShadowMapKeys(keys);
-  addAccumulationKeys(keys);
   addOverviewKeys(keys);
   return keys;
 }
@@ -119,31 +82,16 @@ const std::map<std::string, ColourKey>& allKeys() {
 
 }  // namespace
 
-const ColourKey* viewColourKey(const std::string& viewName) {
+const ColourKey* commonViewColourKey(const std::string& viewName) {
   const auto& keys = allKeys();
   auto it = keys.find(viewName);
   return it == keys.end() ? nullptr : &it->second;
 }
 
-std::vector<std::string> viewsWithColourKeys() {
+std::vector<std::string> commonViewsWithColourKeys() {
   std::vector<std::string> names;
   for (const auto& [name, key] : allKeys()) names.push_back(name);
   return names;
-}
-
-glm::vec3 sampleColourKey(const ColourKey& key, float t) {
-  if (key.stops.empty()) return glm::vec3(0.0f);
-  t = std::clamp(t, 0.0f, 1.0f);
-  if (t <= key.stops.front().position) return key.stops.front().colour;
-  for (size_t i = 1; i < key.stops.size(); ++i) {
-    const ColourStop& a = key.stops[i - 1];
-    const ColourStop& b = key.stops[i];
-    if (t <= b.position) {
-      const float span = std::max(b.position - a.position, 1e-6f);
-      return glm::mix(a.colour, b.colour, (t - a.position) / span);
-    }
-  }
-  return key.stops.back().colour;
 }
 
 }  // namespace sl

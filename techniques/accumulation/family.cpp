@@ -45,6 +45,33 @@ void addPixelCorrectPresets(std::vector<Preset>& v) {
            });
 }
 
+// The pixel-correct state's views (confidence, history, disocclusion).
+void addPixelCorrectViewKeys(std::map<std::string, ColourKey>& keys) {
+  // shaders/accumulation/views_confidence.frag.
+  keys["confidence"] = {"shadow-test confidence (1 at a texel centre)",
+                        "",
+                        {{0.0f, {0.0f, 0.0f, 0.0f}, "0"}, {1.0f, {0.7f, 0.7f, 0.7f}, "1"}},
+                        {{{1.0f, 0.55f, 0.0f}, "orange: update weight conf^m"}, kBlackNoGeometry},
+                        "averaged over a pixel where texels are smaller than pixels"};
+  keys["history"] = {"reprojected history s(n-1)",
+                     "",
+                     {{0.0f, {0.1f, 0.1f, 0.1f}, "0 shadow"}, {1.0f, {0.95f, 0.95f, 0.95f}, "1 lit"}},
+                     {{{0.15f, 0.35f, 0.95f}, "blue: no history (cut, off-screen)"},
+                      {{0.95f, 0.85f, 0.10f}, "yellow: replaced (moving caster)"},
+                      kBlackNoGeometry},
+                     ""};
+  keys["disocclusion"] = {"why a pixel has no usable history",
+                          "",
+                          {},
+                          {{{0.35f, 0.35f, 0.35f}, "grey: history used"},
+                           {{0.6f, 0.2f, 0.8f}, "purple: none (after a cut)"},
+                           {{0.15f, 0.35f, 0.95f}, "blue: off-screen last frame"},
+                           {{1.0f, 0.5f, 0.0f}, "orange: disoccluded"},
+                           {{0.95f, 0.85f, 0.1f}, "yellow: rejected (pc.reject)"},
+                           kBlackNoGeometry},
+                          ""};
+}
+
 }  // namespace
 
 Family accumulationFamily() {
@@ -54,6 +81,7 @@ Family accumulationFamily() {
                "(Scherzer et al. 2007)"};
   registerAccumulations(f.accumulations);
   addPixelCorrectPresets(f.presets);
+  addPixelCorrectViewKeys(f.viewKeys);
   return f;
 }
 

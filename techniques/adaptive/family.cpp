@@ -44,6 +44,45 @@ void addVirtualPresets(std::vector<Preset>& v) {
       });
 }
 
+// The page levels' colours (virtualLevelColour() in shaders/layouts/virtual_common.glsl), then the
+// view's own grey and the sky.
+std::vector<SpecialColour> levelColours(const std::string& greyMeaning) {
+  return {{{0.90f, 0.25f, 0.20f}, "red: level 0 (finest, virtual.size texels)"},
+          {{0.95f, 0.60f, 0.20f}, "orange: level 1 (texels 2x larger)"},
+          {{0.95f, 0.90f, 0.30f}, "yellow: level 2 (4x)"},
+          {{0.35f, 0.80f, 0.30f}, "green: level 3 (8x)"},
+          {{0.30f, 0.80f, 0.85f}, "cyan: level 4 (16x)"},
+          {{0.25f, 0.45f, 0.95f}, "blue: level 5 (32x)"},
+          {{0.65f, 0.40f, 0.85f}, "purple: level 6 (64x)"},
+          {{0.60f, 0.60f, 0.60f}, "light grey: level 7 or coarser"},
+          {{0.30f, 0.30f, 0.30f}, "dark grey: " + greyMeaning},
+          {{0.10f, 0.10f, 0.12f}, "near-black: no geometry (sky)"}};
+}
+
+// The virtual map's views (shaders/views/virtual.frag, SL_VIRTUAL_VIEW 0, 1, 2): the page level a
+// pixel reads or asks for (its level from shaders/layouts/virtual_request.glsl), and the page cache.
+void addVirtualViewKeys(std::map<std::string, ColourKey>& keys) {
+  keys["pages"] = {"virtual-map page level each pixel reads (0 = finest)",
+                   "",
+                   {},
+                   levelColours("off the map, or no resident page"),
+                   "shaded (N.L, gamma 2.2); dark lines: page edges; hatched: coarser than asked"};
+  keys["requested-resolution"] = {"page level each pixel asks for (virtual.criterion)",
+                                  "",
+                                  {},
+                                  levelColours("off the map (asks for no page)"),
+                                  "the marking pass's own level (with virtual.lod_bias); shaded (N.L, gamma 2.2)"};
+  keys["cache"] = {"frames each page has been served from the cache",
+                   "frames",
+                   {{0.0f, {0.15f, 0.35f, 0.15f}, "0 frames"},
+                    {0.5f, {0.20f, 0.65f, 0.20f}, "15 frames"},
+                    {1.0f, {0.25f, 0.95f, 0.25f}, "30+ frames"}},
+                   {{{0.90f, 0.20f, 0.20f}, "red: page drawn this frame (cache miss)"},
+                    {{0.30f, 0.30f, 0.30f}, "dark grey: off the map, or no resident page"},
+                    {{0.10f, 0.10f, 0.12f}, "near-black: no geometry (sky)"}},
+                   "restarts when the page is redrawn; shaded (N.L, gamma 2.2); dark lines: edges"};
+}
+
 }  // namespace
 
 Family adaptiveFamily() {
@@ -53,6 +92,7 @@ Family adaptiveFamily() {
                "al. 2007, Fernando et al. 2001, Giegl & Wimmer 2007)"};
   registerAdaptiveLayouts(f.layouts);
   addVirtualPresets(f.presets);
+  addVirtualViewKeys(f.viewKeys);
   return f;
 }
 

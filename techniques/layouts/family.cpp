@@ -71,6 +71,21 @@ void addWarpingPresets(std::vector<Preset>& v) {
       });
 }
 
+// The partitioned layouts' view (cascaded, face-partitioned): which light view a pixel reads, in
+// the colours of shaders/views/cascades.frag (the light-space overview draws the views' boxes in
+// the same ones).
+void addPartitionViewKeys(std::map<std::string, ColourKey>& keys) {
+  keys["cascades"] = {"which light view (split) a pixel reads",
+                      "",
+                      {},
+                      {{{0.90f, 0.30f, 0.25f}, "split 1"},
+                       {{0.95f, 0.75f, 0.20f}, "split 2"},
+                       {{0.35f, 0.75f, 0.30f}, "split 3"},
+                       {{0.25f, 0.55f, 0.90f}, "split 4"},
+                       {{0.65f, 0.40f, 0.85f}, "split 5+"}},
+                      "mixed, hatched: blend band"};
+}
+
 }  // namespace
 
 Family layoutsFamily() {
@@ -86,6 +101,7 @@ Family layoutsFamily() {
   registerPerspectiveLayouts(f.layouts);
   registerFacePartitionedLayouts(f.layouts);
   addWarpingPresets(f.presets);
+  addPartitionViewKeys(f.viewKeys);
   return f;
 }
 
