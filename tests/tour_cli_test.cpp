@@ -89,6 +89,11 @@ TEST(FigureCli, BadInputIsAClearError) {
   r = runTour("figure --tour " + tour + " --out /tmp/never.png");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("--step N or --all"), std::string::npos) << r.output;
+  for (const char* bad : {"16:0", "wide", "0", "100:1", "4:3:2"}) {
+    r = runTour("figure --tour " + tour + " --step 1 --aspect " + bad + " --out /tmp/never.png");
+    EXPECT_EQ(r.code, 1) << bad;
+    EXPECT_NE(r.output.find(std::string("--aspect ") + bad + ": expected W:H"), std::string::npos) << r.output;
+  }
 }
 
 // An explorer state on the basic scene, handed to the harness's renderer (the player's tests).

@@ -201,7 +201,8 @@ TEST_P(ShippedTour, EveryStepRendersAsAFigure) {
     for (const auto& v : t.steps[i].viewports)
       if (findPreset(v.technique)) expected += (1 + v.views.size()) * t.steps[i].frames.size();
     EXPECT_EQ(r.panels, static_cast<int>(expected));
-    EXPECT_GE(r.image.width, o.panelWidth * static_cast<int>(t.steps[i].viewports.size()));
+    EXPECT_GE(r.image.width, o.panelWidth);
+    EXPECT_GE(r.bodyPixels * 40.0f, float(r.image.height)) << "text under 1/40 of the figure's height";
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
@@ -213,6 +214,30 @@ INSTANTIATE_TEST_SUITE_P(Tours, ShippedTour, ::testing::ValuesIn(shippedTours())
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
                          });
+
+// Six panels (three viewports with a view each) make a grid near 16:9 (each viewport a column, its
+// view under it), not a 6x1 strip; a portrait aspect makes a narrower one.
+TEST(TourFigure, PanelsFormAGridNearTheAspectAskedFor) {
+  test::GlHarness h;
+  const Tour t = parseTour(tourWith(R"({"title": "Six", "scene": "basic", "viewports": [
+      {"technique": "standard", "views": ["aliasing"]}, {"technique": "pcf", "views": ["aliasing"]},
+      {"technique": "lispsm", "views": ["aliasing"]}]})"),
+                           "six.json");
+  FigureOptions o;
+  o.panelWidth = 160;
+  o.panelHeight = 90;
+  const FigureResult wide = renderTourFigure(t, 0, h.shaders, o);
+  EXPECT_EQ(wide.panels, 6);
+  const float aspect = float(wide.image.width) / float(wide.image.height);
+  // A 6x1 strip of these panels would be about 4:1 here.
+  EXPECT_GT(aspect, 16.0f / 9.0f / 1.6f);
+  EXPECT_LT(aspect, 16.0f / 9.0f * 1.6f);
+  EXPECT_LT(wide.image.width, 6 * o.panelWidth) << "the panels should wrap into rows";
+  EXPECT_GE(wide.bodyPixels * 40.0f, float(wide.image.height));
+  o.aspect = 0.5f;  // portrait: the panels wrap into fewer columns
+  const FigureResult square = renderTourFigure(t, 0, h.shaders, o);
+  EXPECT_LT(float(square.image.width) / float(square.image.height), aspect);
+}
 
 TEST(TourFigure, CaptionAndPanelsAreBurntIn) {
   test::GlHarness h;

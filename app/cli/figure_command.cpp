@@ -8,6 +8,7 @@
 #include "tour/figure.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -19,10 +20,25 @@ namespace fs = std::filesystem;
 
 const char* kFigureUsage =
     "usage: shadowlab figure --tour T.json (--step N --out F.png | --all --out DIR) [--size WxH]\n"
-    "  renders tour steps headless: every viewport and its debug views side by side (a row per\n"
-    "  frame count of the step), title and caption burnt in. N counts from 1; --size is one panel\n"
-    "  (default 480x270). --all writes DIR/step-01.png ...; a step with a plot draws it under the\n"
-    "  panels and also writes it as F.svg.\n";
+    "                        [--aspect W:H]\n"
+    "  renders tour steps headless for slides: every viewport and its debug views (for each frame\n"
+    "  count of the step) in a grid whose figure comes closest to --aspect (default 16:9), title and\n"
+    "  caption burnt in, text at least 1/40 of the figure's height. N counts from 1; --size is one\n"
+    "  panel (default 480x270). --all writes DIR/step-01.png ...; a step with a plot draws it under\n"
+    "  the panels at full width and also writes it as F.svg.\n";
+
+// "16:9" or "1.78": a finite width / height ratio between 1/8 and 8.
+float parseAspect(const std::string& text) {
+  float w = 0, h = 1;
+  char extra = 0;
+  const bool ok = text.find(':') != std::string::npos
+                      ? std::sscanf(text.c_str(), "%f:%f%c", &w, &h, &extra) == 2
+                      : std::sscanf(text.c_str(), "%f%c", &w, &extra) == 1;
+  const float a = ok && h > 0 ? w / h : 0.0f;
+  if (!std::isfinite(a) || a < 0.125f || a > 8.0f)
+    throw ArgError("--aspect " + text + ": expected W:H (e.g. 16:9) or a ratio between 0.125 and 8");
+  return a;
+}
 
 }  // namespace
 
@@ -33,12 +49,13 @@ int runFigureCommand(int argc, char** argv) {
       return 0;
     }
   try {
-    Args args(argc, argv, 2, {"--tour", "--step", "--out", "--size", "--shaders"}, {"--all"});
+    Args args(argc, argv, 2, {"--tour", "--step", "--out", "--size", "--aspect", "--shaders"}, {"--all"});
     if (!args.has("--tour")) throw ArgError("--tour T.json is required");
     if (!args.has("--out")) throw ArgError("--out is required");
     if (args.has("--all") == args.has("--step")) throw ArgError("give either --step N or --all");
     FigureOptions options;
     args.getSize("--size", options.panelWidth, options.panelHeight);
+    if (args.has("--aspect")) options.aspect = parseAspect(args.get("--aspect"));
     const Tour tour = loadTour(args.get("--tour"));
     std::vector<std::pair<size_t, std::string>> jobs;  // step, PNG path
     if (args.has("--all")) {

@@ -41,16 +41,19 @@ const ImU32 kChartFront = IM_COL32(230, 230, 230, 200);
 constexpr int kColumns = 8;  // of the accuracy table
 
 void setUpAccuracyColumns() {
-  const char* headers[kColumns] = {"#", "wrong", "image", "f.shadow", "f.light", "rmse", "NaN", "ms"};
+  // Short headers: at the panel's default width "f.shadow" was cut off.
+  const char* headers[kColumns] = {"#", "wrong", "image", "dark", "leak", "rmse", "NaN", "ms"};
   const char* tips[kColumns] = {
       "Viewport (colour of its points in the chart)",
-      "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255",
+      "Wrong pixels, % of covered pixels: |visibility - truth| > 30/255.\n"
+      "Against the hard (point-light) reference a filtered or soft technique's intended penumbra\n"
+      "counts as wrong: judge PCF, the pre-filtered maps and PCSS by 'image' and 'rmse' instead.",
       "Image-wrong pixels, % of covered pixels: the shaded colour differs from the same shading\n"
       "with the truth's visibility by more than 30/255 in R, G or B (Scherzer et al.'s figure 3).\n"
       "Lower than 'wrong' where the shading hides a visibility error: grazing light (small N.L),\n"
-      "dark albedo.",
+      "dark albedo. The one to judge a filtered or soft technique by.",
       "False shadow, %: dark where the truth is lit (orange in the error view)",
-      "False light, %: lit where the truth is dark, light leaks (blue in the error view)",
+      "False light, %: lit where the truth is dark: light leaks (blue in the error view)",
       "Root mean square visibility error over covered pixels",
       "Non-finite (NaN/Inf) visibility values, counted as wrong",
       "ms per frame of this viewport's own passes (names ending in [v]): not the debug views\n"
@@ -224,8 +227,9 @@ int drawChartPoints(const ChartCanvas& c, const std::vector<ChartPoint>& points,
       if (!shownConfigs[size_t(i)].empty() && shownConfigs[size_t(i)] == p.config) shownIn = i;
     if (shownIn >= 0) {
       d->AddCircleFilled(s, 5.0f, kViewportColors[shownIn]);
-      const std::string num = std::to_string(shownIn + 1);
-      d->AddText(ImVec2(s.x + 6.0f, s.y - c.line - 1.0f), kViewportColors[shownIn], num.c_str());
+      // The viewport's number and its preset, as the viewport's title names it.
+      const std::string label = std::to_string(shownIn + 1) + " " + p.config.substr(0, p.config.find(' '));
+      d->AddText(ImVec2(s.x + 6.0f, s.y - c.line - 1.0f), kViewportColors[shownIn], label.c_str());
     } else {
       d->AddCircle(s, 4.0f, kOldPoint, 0, 1.5f);
     }

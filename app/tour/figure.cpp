@@ -4,7 +4,7 @@
 
 #include "explorer/explorer_state.h"
 #include "gl/shader_library.h"
-#include "render/view_keys.h"
+#include "part/colour_key.h"
 #include "render/renderer.h"
 #include "tour/figure_plot.h"
 #include "tour/step_plot.h"
@@ -31,9 +31,16 @@ struct Panel {
 
 struct FigureLayout {
   int margin = 12, panelW = 0, panelH = 0, cellW = 0, cellH = 0, headerH = 0, gridTop = 0, keyH = 0;
-  int plotW = 0, plotH = 0;  // the step's plot under the grid (0: none)
-  int cols = 0, rows = 0, width = 0, height = 0;
+  int plotW = 0, plotH = 0;      // the step's plot under the grid, full width (0: none)
+  int cols = 0, gridRows = 0;    // the grid of cells: every panel of every captured frame
+  std::vector<glm::ivec2> slots;  // grid column and row of cell i (capture row * panels + panel)
+  int width = 0, height = 0;
   std::vector<std::string> captionLines;
+  // Top-left corner of cell `i`.
+  glm::ivec2 cell(int i) const {
+    const glm::ivec2 g = slots[size_t(i)];
+    return {margin + g.x * cellW, gridTop + g.y * cellH};
+  }
 };
 
 std::vector<Panel> panelsOf(const TourStep& s) {
@@ -57,12 +64,41 @@ const ColourKey* gradientKey(const std::string& view) {
   return key && !key->stops.empty() ? key : nullptr;
 }
 
-FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const FigureFonts& fonts,
-                    const FigureOptions& o) {
+// Where each cell goes: in reading order, `cols` to a row.
+std::vector<glm::ivec2> readingOrder(int cells, int cols) {
+  std::vector<glm::ivec2> slots;
+  for (int i = 0; i < cells; ++i) slots.push_back({i % cols, i / cols});
+  return slots;
+}
+
+// Each viewport a column, its colour image on top and its views under it; captured frame counts
+// side by side (framesAcross: a column per viewport and frame count) or stacked (a block of rows
+// per frame count). A viewport's panels stay together either way.
+std::vector<glm::ivec2> viewportColumns(const std::vector<Panel>& panels, int frames, bool framesAcross) {
+  std::vector<glm::ivec2> slots;
+  const int viewports = panels.empty() ? 0 : static_cast<int>(panels.back().viewport) + 1;
+  int tallest = 0;
+  for (size_t c = 0, below = 0; c < panels.size(); ++c) {
+    below = c > 0 && panels[c].viewport == panels[c - 1].viewport ? below + 1 : 0;
+    tallest = std::max(tallest, static_cast<int>(below) + 1);
+  }
+  for (int f = 0; f < frames; ++f) {
+    int below = 0;
+    for (size_t c = 0; c < panels.size(); ++c) {
+      below = c > 0 && panels[c].viewport == panels[c - 1].viewport ? below + 1 : 0;
+      const int column = static_cast<int>(panels[c].viewport);
+      slots.push_back(framesAcross ? glm::ivec2(f * viewports + column, below) : glm::ivec2(column, f * tallest + below));
+    }
+  }
+  return slots;
+}
+
+FigureLayout layOutGrid(const TourStep& s, const std::vector<Panel>& panels, const FigureFonts& fonts,
+                        const FigureOptions& o, std::vector<glm::ivec2> slots) {
   FigureLayout l;
   l.panelW = o.panelWidth, l.panelH = o.panelHeight;
-  l.cols = static_cast<int>(panels.size());
-  l.rows = static_cast<int>(s.frames.size());
+  l.slots = std::move(slots);
+  for (const glm::ivec2& g : l.slots) l.cols = std::max(l.cols, g.x + 1), l.gridRows = std::max(l.gridRows, g.y + 1);
   const bool anyKey =
       std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return !p.view.empty() && gradientKey(p.view); });
   const int body = fonts.lineHeight(FigureFonts::Style::Body);
@@ -72,27 +108,82 @@ FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const F
   l.width = l.margin + l.cols * l.cellW;
   l.headerH = l.margin + fonts.lineHeight(FigureFonts::Style::Title);
   l.gridTop = l.headerH + l.margin / 2;
-  if (s.plot.kind != TourPlot::Kind::None) {  // at least 480 wide to be legible: a narrow figure widens
-    l.plotW = std::min(std::max(l.width - 2 * l.margin, 480), std::max(2 * l.panelW, 640));
+  if (s.plot.kind != TourPlot::Kind::None) {  // the full width, and at least 480 wide to be legible
+    l.width = std::max(l.width, 480 + 2 * l.margin);
+    l.plotW = l.width - 2 * l.margin;
     l.plotH = std::max(l.panelH, 200) + 4 * body;
-    l.width = std::max(l.width, l.plotW + 2 * l.margin);
   }
   l.captionLines = fonts.wrap(s.shownCaption(), l.width - 2 * l.margin, FigureFonts::Style::Body);
-  l.height = l.gridTop + l.rows * l.cellH + (l.plotH > 0 ? l.plotH + l.margin : 0) +
+  l.height = l.gridTop + l.gridRows * l.cellH + (l.plotH > 0 ? l.plotH + l.margin : 0) +
              static_cast<int>(l.captionLines.size()) * body + l.margin;
   return l;
+}
+
+// The grid whose figure comes closest to the aspect asked for (16:9 by default): six panels of
+// three viewports become three by two, not a strip. The structured grids (a row per frame count;
+// viewports as columns, frame counts across or stacked) win unless plain reading order comes
+// clearly closer to the aspect.
+FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const FigureFonts& fonts,
+                    const FigureOptions& o) {
+  const int frames = static_cast<int>(s.frames.size());
+  const int perFrame = std::max(static_cast<int>(panels.size()), 1);
+  const int cells = perFrame * frames;
+  auto miss = [&](const FigureLayout& l) {
+    return std::abs(std::log(double(l.width) / double(l.height) / double(o.aspect)));
+  };
+  FigureLayout best;
+  double bestMiss = 1e30;
+  for (auto slots : {readingOrder(cells, perFrame), viewportColumns(panels, frames, true),
+                     viewportColumns(panels, frames, false)}) {
+    FigureLayout l = layOutGrid(s, panels, fonts, o, std::move(slots));
+    if (miss(l) < bestMiss - 1e-9) bestMiss = miss(l), best = std::move(l);
+  }
+  const double slack = std::log(1.5);  // how much closer reading order must come to replace them
+  bestMiss -= slack;
+  for (int cols = 1; cols <= cells; ++cols) {
+    FigureLayout l = layOutGrid(s, panels, fonts, o, readingOrder(cells, cols));
+    if (miss(l) < bestMiss - 1e-9) bestMiss = miss(l), best = std::move(l);
+  }
+  return best;
 }
 
 void drawColourKey(RgbaImage& img, const FigureFonts& fonts, const ColourKey& key, int x, int y, int w) {
   for (int i = 0; i < w; ++i)
     img.fillRect(x + i, y, 1, kKeyBar, sampleColourKey(key, w > 1 ? float(i) / float(w - 1) : 0.0f));
-  const int ty = y + kKeyBar + 2;
-  for (const ColourStop& stop : key.stops) {
+  // The labels' spans; the ends always, a middle one only where it overlaps none already kept.
+  const int ty = y + kKeyBar + 2, gap = fonts.width(" ", FigureFonts::Style::Body);
+  std::vector<glm::ivec2> spans(key.stops.size(), glm::ivec2(0));  // x, width (0: not drawn)
+  for (size_t k = 0; k < key.stops.size(); ++k) {
+    const ColourStop& stop = key.stops[k];
     if (stop.label.empty()) continue;
     const int tw = fonts.width(stop.label, FigureFonts::Style::Body);
-    const int tx = std::clamp(x + static_cast<int>(stop.position * float(w)) - tw / 2, x, x + w - tw);
-    fonts.draw(img, tx, ty, stop.label, FigureFonts::Style::Body, kDimText);
+    spans[k] = {std::clamp(x + static_cast<int>(stop.position * float(w)) - tw / 2, x, x + w - tw), tw};
   }
+  auto overlaps = [&](size_t k, size_t j) {
+    return spans[j].y > 0 && spans[k].x < spans[j].x + spans[j].y + gap && spans[j].x < spans[k].x + spans[k].y + gap;
+  };
+  std::vector<size_t> order;
+  if (!spans.empty()) order = {0, spans.size() - 1};
+  for (size_t k = 1; k + 1 < spans.size(); ++k) order.push_back(k);
+  std::vector<size_t> kept;
+  for (size_t k : order) {
+    if (spans[k].y == 0 || std::find(kept.begin(), kept.end(), k) != kept.end()) continue;
+    if (std::any_of(kept.begin(), kept.end(), [&](size_t j) { return overlaps(k, j); })) continue;
+    kept.push_back(k);
+    fonts.draw(img, spans[k].x, ty, key.stops[k].label, FigureFonts::Style::Body, kDimText);
+  }
+}
+
+// `text` cut to `width` pixels with an ellipsis (a panel's title must not run into the next one).
+std::string fitted(const FigureFonts& fonts, const std::string& text, int width) {
+  if (fonts.width(text, FigureFonts::Style::Body) <= width) return text;
+  std::string cut = text;
+  while (!cut.empty() && fonts.width(cut + "\xE2\x80\xA6", FigureFonts::Style::Body) > width) {
+    cut.pop_back();
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();  // UTF-8
+    if (!cut.empty() && static_cast<unsigned char>(cut.back()) >= 0xC0) cut.pop_back();
+  }
+  return cut + "\xE2\x80\xA6";
 }
 
 std::string frameSuffix(const TourStep& s, int frames) {
@@ -107,8 +198,10 @@ void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fon
   const int body = fonts.lineHeight(FigureFonts::Style::Body);
   for (size_t c = 0; c < panels.size(); ++c) {
     const Panel& p = panels[c];
-    const int x = l.margin + static_cast<int>(c) * l.cellW, y = l.gridTop + row * l.cellH;
-    fonts.draw(out.image, x, y, p.title + frameSuffix(s, frames), FigureFonts::Style::Body, kText);
+    const glm::ivec2 at = l.cell(row * static_cast<int>(panels.size()) + static_cast<int>(c));
+    const int x = at.x, y = at.y;
+    fonts.draw(out.image, x, y, fitted(fonts, p.title + frameSuffix(s, frames), l.panelW), FigureFonts::Style::Body,
+               kText);
     const int iy = y + body;
     if (p.placeholder) {
       out.image.fillRect(x, iy, l.panelW, l.panelH, {0.18f, 0.18f, 0.2f});
@@ -140,13 +233,23 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
   if (s.setLight) scene.light.direction = directionFromLightAngles(s.lightAngles.x, s.lightAngles.y);
   const Camera camera = stepCamera(tour, step, scene);
 
-  const float bodyPx = std::clamp(o.panelHeight / 16.0f, 11.0f, 20.0f);
-  FigureFonts fonts(bodyPx, bodyPx * 1.4f);
+  // Text at least 1/40 of the figure's height (legible on a slide): the layout depends on the
+  // text size, so grow the text until it holds.
+  float bodyPx = std::clamp(o.panelHeight / 16.0f, 11.0f, 20.0f);
+  std::unique_ptr<FigureFonts> fonts;
   const std::vector<Panel> panels = panelsOf(s);
-  const FigureLayout l = layOut(s, panels, fonts, o);
+  FigureLayout l;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    fonts = std::make_unique<FigureFonts>(bodyPx, bodyPx * 1.4f);
+    l = layOut(s, panels, *fonts, o);
+    const float needed = float(l.height) / 40.0f;
+    if (bodyPx >= needed) break;
+    bodyPx = std::ceil(needed * 1.05f);
+  }
   FigureResult out;
+  out.bodyPixels = bodyPx;
   out.image = RgbaImage(l.width, l.height, kBackground);
-  fonts.draw(out.image, l.margin, l.margin / 2, s.title, FigureFonts::Style::Title, kText);
+  fonts->draw(out.image, l.margin, l.margin / 2, s.title, FigureFonts::Style::Title, kText);
 
   std::vector<std::unique_ptr<Viewport>> vps(s.viewports.size());
   std::vector<Viewport*> shown;
@@ -167,21 +270,21 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
       in.height = l.panelH;
       in.cut = f == 1;
       renderer.render(in, shown);
-      if (f == s.frames[row]) captureRow(out, l, fonts, s, panels, vps, static_cast<int>(row++), f);
+      if (f == s.frames[row]) captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row++), f);
     }
   } else {
     for (size_t row = 0; row < s.frames.size(); ++row)
-      captureRow(out, l, fonts, s, panels, vps, static_cast<int>(row), s.frames[row]);
+      captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row), s.frames[row]);
   }
-  const int body = fonts.lineHeight(FigureFonts::Style::Body);
-  int y = l.gridTop + l.rows * l.cellH;
+  const int body = fonts->lineHeight(FigureFonts::Style::Body);
+  int y = l.gridTop + l.gridRows * l.cellH;
   if (l.plotH > 0) {
     out.plot = stepPlot(tour, step, scene, camera, shaders, l.panelW, l.panelH);
-    drawFigurePlot(out.image, fonts, out.plot, l.margin, y, l.plotW, l.plotH);
+    drawFigurePlot(out.image, *fonts, out.plot, l.margin, y, l.plotW, l.plotH);
     y += l.plotH + l.margin;
   }
   for (const auto& line : l.captionLines) {
-    fonts.draw(out.image, l.margin, y, line, FigureFonts::Style::Body, kText);
+    fonts->draw(out.image, l.margin, y, line, FigureFonts::Style::Body, kText);
     y += body;
   }
   return out;
