@@ -7,6 +7,8 @@
 // Set by the visibility term (common/visibility_term.glsl) before each lookup: xy the receiver's
 // uv, zw d(stored depth)/d(uv) of its plane in that view.
 vec4 sl_receiverPlane = vec4(0.0);
+// The map's texels per side for that gradient (0: no plane set, e.g. views and probes).
+float sl_receiverPlaneTexels = 0.0;
 
 // The receiver's depth at a tap at `tapUV` read by a nearest-texel lookup: the plane at the
 // centre of the texel the tap falls in (that is where the stored depth was rasterized).

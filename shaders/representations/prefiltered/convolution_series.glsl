@@ -25,8 +25,14 @@ float convolutionAttenuation(int k) {
   return exp(-u_convolution_alpha * kM * kM);
 }
 
-// The receiver in the series' variable: 0.9 (d - offset).
-float convolutionReceiver(float receiverDepth) { return kConvolutionSpan * (receiverDepth - u_convolution_offset); }
+// The receiver in the series' variable: 0.9 (d - offset), d clamped to the map's [0, 1] first.
+// Under a grazing light the slope bias moves a receiver far in front of the light's near plane
+// (a sun 0.05 degrees up: tan = 1146, several depth ranges); unclamped, d - z then leaves the
+// period and wraps into shadow (convolution: 82 % false shadow there, issue #23). Every stored z
+// is >= 0, so d = 0 already means "in front of all of them".
+float convolutionReceiver(float receiverDepth) {
+  return kConvolutionSpan * (clamp(receiverDepth, 0.0, 1.0) - u_convolution_offset);
+}
 
 // Writes sin(c_k u), cos(c_k u) of u = 0.9 z into channels 2k-2, 2k-1 (the rest untouched).
 void convolutionBasis(float z, inout vec4 m[SL_MOMENT_TARGETS]) {

@@ -6,6 +6,7 @@
 // derivative (dw/dz = 2 c w), so it means the same depth spread at every depth.
 // SL_WARP_MAX_EXPONENT (from the storage format) clamps c so that w^2 stays finite.
 #include "representations/prefiltered/moment_math.glsl"
+#include "representations/prefiltered/receiver_spread.glsl"
 uniform float u_ewgf_exponent;
 uniform float u_ewgf_min_variance;
 
@@ -21,7 +22,9 @@ float representationFromMoments(vec4 m[SL_MOMENT_TARGETS], float receiverDepth) 
   float w = warpDepth(receiverDepth, vec2(c)).x;
   float mean = storageMean(m[0].x);
   float slope = 2.0 * c * w;
-  float variance = max(storageVariance(m[0].x, m[0].y), u_ewgf_min_variance * slope * slope);
+  // The receiver's own (warped) plane over the box is not an occluder (receiver_spread.glsl).
+  float variance =
+      max(storageVariance(m[0].x, m[0].y) - receiverPlaneWarpedVariance(c, mean), u_ewgf_min_variance * slope * slope);
   return gaussianVisibility(w, mean, variance);
 }
 // sigma^2 of the stored warped depths (the variance view: in warped units).

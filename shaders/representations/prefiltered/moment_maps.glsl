@@ -120,6 +120,10 @@ void momentsInBox(vec3 uvLayer, float width, out vec4 m[SL_MOMENT_TARGETS]) {
 
 void momentsAt(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) { momentsInBox(uvLayer, max(u_filter_width, 1.0), m); }
 
+// The box the hard representations filter over (prefiltered/receiver_spread.glsl declares it
+// before its representation's code).
+float filterBoxTexels() { return max(u_filter_width, 1.0); }
+
 // The soft representations (prefiltered/soft_moments.glsl) size the box per pixel and define
 // these two themselves.
 #ifndef SL_MOMENT_SOFT
