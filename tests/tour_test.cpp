@@ -3,6 +3,7 @@
 // figure without error or NaN.
 #include "gl_test_util.h"
 #include "tour/figure.h"
+#include "tour/step_plot.h"
 #include "tour/tour.h"
 #include "technique.h"
 
@@ -49,6 +50,19 @@ TEST(TourParse, GoodStepParsesWithDefaults) {
   EXPECT_EQ(t.steps[0].frames, std::vector<int>{1});
   EXPECT_TRUE(t.steps[0].built());
   EXPECT_EQ(t.steps[0].camera.kind, TourCamera::Kind::Scene);
+}
+
+// The dp/ds legend names a technique as the step's panels do (#23: it read "logpsm:logpsm...").
+TEST(TourParse, PlotLegendUsesTheViewportTitles) {
+  const Tour t = parseTour(tourWith(R"j({"title": "a", "viewports": [
+      {"technique": "lispsm", "label": "LiSPSM (n_opt)"},
+      {"technique": "logpsm", "label": "LogPSM, loose", "set": ["logpsm.max_error=16", "logpsm.tessellate=off"]}]})j"),
+                           "lecture.json");
+  const TourStep& s = t.steps[0];
+  EXPECT_EQ(stepSeriesLabel(s, "lispsm"), "LiSPSM (n_opt)");
+  EXPECT_EQ(stepSeriesLabel(s, "logpsm:logpsm.tessellate=off;logpsm.max_error=16"), "LogPSM, loose");
+  EXPECT_EQ(stepSeriesLabel(s, "logpsm:logpsm.max_error=16"), "logpsm (logpsm.max_error=16)");
+  EXPECT_EQ(stepSeriesLabel(s, "uniform"), "uniform");
 }
 
 TEST(TourParse, BadJsonNamesTheFile) { expectMessage(parseError("{\"steps\": ["), {"lecture.json", "invalid JSON"}); }

@@ -25,6 +25,27 @@ std::vector<std::string> sharedOverrides(const TourStep& s) {
 
 }  // namespace
 
+std::string stepSeriesLabel(const TourStep& s, const std::string& spec) {
+  const size_t colon = spec.find(':');
+  const std::string preset = spec.substr(0, colon);
+  std::vector<std::string> sets;
+  for (size_t at = colon; at != std::string::npos && at + 1 < spec.size();) {
+    const size_t next = spec.find_first_of(";,", at + 1);
+    sets.push_back(spec.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1));
+    at = next;
+  }
+  std::vector<std::string> sortedSets = sets;
+  std::sort(sortedSets.begin(), sortedSets.end());
+  for (const TourViewport& v : s.viewports) {
+    std::vector<std::string> o = v.overrides;
+    std::sort(o.begin(), o.end());
+    if (v.technique == preset && o == sortedSets && !v.label.empty()) return v.label;
+  }
+  std::string label = preset;
+  for (size_t k = 0; k < sets.size(); ++k) label += (k == 0 ? " (" : ", ") + sets[k];
+  return sets.empty() ? label : label + ")";
+}
+
 Plot stepPlot(const Tour& tour, size_t step, const Scene& scene, const Camera& camera, ShaderLibrary& shaders,
               int width, int height) {
   const TourStep& s = tour.steps.at(step);
@@ -32,7 +53,10 @@ Plot stepPlot(const Tour& tour, size_t step, const Scene& scene, const Camera& c
     if (s.plot.kind == TourPlot::Kind::Dpds) {
       std::vector<std::string> specs = s.plot.techniques;
       for (std::string& spec : specs) std::replace(spec.begin(), spec.end(), ';', ',');  // one technique's overrides
-      return dpdsPlot(dpdsCurves(scene, camera, width, height, specs), "dp/ds on '" + scene.name + "'");
+      Plot plot = dpdsPlot(dpdsCurves(scene, camera, width, height, specs), "dp/ds on '" + scene.name + "'");
+      for (size_t k = 0; k < s.plot.techniques.size() && k < plot.series.size(); ++k)
+        plot.series[k].label = stepSeriesLabel(s, s.plot.techniques[k]);
+      return plot;
     }
     if (s.plot.kind == TourPlot::Kind::Visibility) {
       const VisibilityPlotRequest request{.techniques = s.plot.techniques,

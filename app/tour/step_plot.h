@@ -10,6 +10,11 @@ namespace sl {
 
 class ShaderLibrary;
 
+// The legend name of a dp/ds plot's technique "preset[:key=v;key=v]" in step `s`: the title of
+// the viewport with that preset and exactly those overrides when there is one (the legend then
+// names what the caption and the panels name), else "preset (key=v, key=v)".
+std::string stepSeriesLabel(const TourStep& s, const std::string& spec);
+
 // An empty Plot for a step without one. A visibility plot renders (needs a current GL context);
 // throws std::runtime_error naming the step when the plot cannot be made (the pixel shows no
 // surface, say).
