@@ -14,6 +14,7 @@ for scene in basic columns techniques/reconstruction/boxes.json; do
     --size 640x360 --frames 10 --json "$out/$name.json"
   python3 scripts/bench-table.py "$out/$name.json" > "$out/$name.md"
 done
-bench --scene basic --techniques standard,forward --set shadowmap.size=512 --sweep forward.splat=1,2,4,8 \
+bench --scene basic --techniques standard,forward --set shadowmap.size=512 --set forward.grow=off \
+  --sweep forward.splat=1,2,4,8 \
   --size 640x360 --frames 5 --json "$out/forward-basic.json"
 python3 scripts/bench-table.py "$out/forward-basic.json" > "$out/forward-basic.md"

@@ -56,6 +56,7 @@ void ForwardState::splat(const AccumulationContext& c) {
   const int size = static_cast<int>(c.params->i("shadowmap.size"));
   p.set("u_eyeViewProj", c.proj * c.view);
   p.set("u_mapSize", size);
+  p.set("u_screenSize", glm::vec2(c.width, c.height));
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glEnable(GL_PROGRAM_POINT_SIZE);
@@ -120,8 +121,14 @@ class ForwardAccumulation : public Accumulation {
              .max = 16,
              .defaultValue = 4,
              .unit = "pixels",
-             .help = "side of the square each light sample lights in the eye view (Zhang's splat); smaller: more "
-                     "holes"},
+             .help = "side of the square each light sample lights in the eye view (Zhang's splat; with "
+                     "forward.grow the smallest side)"},
+            {.key = "forward.grow",
+             .type = ParamType::Bool,
+             .defaultValue = 1,
+             .help = "beyond the paper: each splat grows to its light texel's footprint in the eye view (up to 255 "
+                     "pixels), so a texel stretched over many pixels (grazing light) leaves no holes; off: Zhang's "
+                     "fixed forward.splat and the holes the paper shows"},
             {.key = "forward.footprint",
              .type = ParamType::Float,
              .min = 1,

@@ -103,9 +103,10 @@ TEST(Forward, HolesShrinkAsSplatsGrow) {
   test::GlHarness h;
   const Scene scene = loadScene("basic", defaultAssetsDir());
   const std::vector<std::string> base = {"shadowmap.size=256"};
-  auto with = [&](const std::string& splat) {
+  auto with = [&](const std::string& splat) {  // Zhang's fixed splats (forward.grow off)
     std::vector<std::string> s = base;
     s.push_back("forward.splat=" + splat);
+    s.push_back("forward.grow=off");
     return s;
   };
   const test::Frame small = test::renderOnce(h, scene, "forward", with("1"), 240, 135);
@@ -120,6 +121,23 @@ TEST(Forward, HolesShrinkAsSplatsGrow) {
   // Large splats cover nearly every pixel: what is left is the backward map's own error, plus the
   // frame's border (a GL point whose centre is off screen is clipped whole) and grazing slopes.
   EXPECT_LT(wl, wstd + 1.0);
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Issue #23: under a grazing light one light texel spans a long stretch of eye pixels, and
+// fixed splats left most of the frame dark (columns 64 % wrong, low-sun 87 %). Splats grown to
+// the texel's footprint keep them lit; the 0.05 degree sun, where a texel spans more than the
+// largest point, is the method's limit (techniques/reconstruction/README.md).
+TEST(Forward, GrownSplatsCoverGrazingTexels) {
+  test::GlHarness h;
+  for (const std::string id : {"columns", "low-sun"}) {
+    const Scene scene = loadScene(id, defaultAssetsDir());
+    const test::Frame forward = test::renderOnce(h, scene, "forward", {}, 160, 90);
+    const test::Frame standard = test::renderOnce(h, scene, "standard", {}, 160, 90);
+    expectSane(forward, "forward on " + id);
+    const double wf = wrongPct(scene, forward), wstd = wrongPct(scene, standard);
+    EXPECT_LE(wf, std::max(5.0, 3.0 * wstd)) << id << ": standard " << wstd << " %";
+  }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
