@@ -12,6 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 
 namespace sl {
 namespace {
@@ -39,6 +41,12 @@ ErrorMetrics wrongAgainstTruth(test::GlHarness& h, const Scene& scene, const std
   return compareVisibility(vis.data(), ref.data(), valid.data(), vis.size());
 }
 
+// Where shared/scenes-real is (SHADOWLAB_SHARED, else beside the source tree).
+std::string lowSunSharedDir() {
+  const char* env = std::getenv("SHADOWLAB_SHARED");
+  return env && *env ? env : std::string(SHADOWLAB_SOURCE_DIR) + "/../shared";
+}
+
 class PrefilteredLowSun : public ::testing::TestWithParam<LowSun> {};
 
 TEST_P(PrefilteredLowSun, AtMostThreeTimesStandardsWrongPixels) {
@@ -50,6 +58,27 @@ TEST_P(PrefilteredLowSun, AtMostThreeTimesStandardsWrongPixels) {
   EXPECT_LE(m.wrongPixelPct, std::max(5.0, 3.0 * standard.wrongPixelPct))
       << "false shadow " << m.falseShadowPct << " %, false light " << m.falseLightPct << " %; standard "
       << standard.wrongPixelPct << " %";
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// Sponza under a sun 3 degrees up: nearly everything is in shadow, and layered VSM read a bright
+// band past each layer boundary (5.9 % false light, standard 0.04 %): occluders of earlier layers
+// sit at warped 0, within the floor of a receiver just past its layer's start. msm16's leaks there
+// (6.4 %) are not fixed (techniques/prefiltered/README.md).
+TEST(PrefilteredLowSunReal, LayeredVsmUnderAThreeDegreeSunInSponza) {
+  if (!std::ifstream(lowSunSharedDir() + "/scenes-real/sponza/Sponza.gltf"))
+    GTEST_SKIP() << "shared/scenes-real not found under " << lowSunSharedDir() << ": Sponza is not compared";
+  test::GlHarness h;
+  Scene scene = loadScene("sponza", defaultAssetsDir());
+  const float e = glm::radians(3.0f);
+  scene.light.direction = glm::normalize(glm::vec3(0.95f * std::cos(e), -std::sin(e), 0.31f * std::cos(e)));
+  const ErrorMetrics standard = wrongAgainstTruth(h, scene, "standard");
+  for (const std::string preset : {"vsm", "lvsm"}) {
+    const ErrorMetrics m = wrongAgainstTruth(h, scene, preset);
+    EXPECT_EQ(m.nonfinite, 0) << preset;
+    EXPECT_LE(m.wrongPixelPct, std::max(5.0, 3.0 * standard.wrongPixelPct))
+        << preset << ": false light " << m.falseLightPct << " %; standard " << standard.wrongPixelPct << " %";
+  }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
