@@ -6,6 +6,9 @@
 #include "explorer/session_files.h"
 #include "explorer/settings.h"
 #include "explorer/shortcuts.h"
+#include "tour/tour.h"
+#include "explorer/ui_scale.h"
+#include "explorer/tour_player.h"
 #include "render/view_keys.h"
 #include "technique.h"
 
@@ -223,6 +226,41 @@ TEST(ExplorerSettings, CaptureRecordsOnlyChangedParameters) {
   EXPECT_TRUE(s.viewports[1].params.empty());
   EXPECT_EQ(s.viewports[1].enlargedView, "texels");
   EXPECT_FLOAT_EQ(s.uiScale, 1.25f);
+}
+
+// Issue #23: presenter mode cut long captions at a fixed five lines ("...at the largest"). The
+// strip now grows to what the text needs (up to kCaptionMaxShare of the window); every step of the
+// shipped tours must fit it whole, in presenter mode, at 1280x720 and 1920x1080, with the
+// explorer's font.
+TEST(ExplorerCaption, EveryShippedStepFitsTheStripInPresenterMode) {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  applyUiScale(1.0f);
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  io.FontGlobalScale = kPresenterScale;
+  io.DeltaTime = 1.0f / 60.0f;
+  for (const ImVec2 size : {ImVec2(1280, 720), ImVec2(1920, 1080)}) {
+    io.DisplaySize = size;
+    ImGui::NewFrame();
+    float tallest = 0.0f;
+    for (const char* name : {"survey", "pixel-correct", "filtering"}) {
+      const Tour tour = loadTour(std::string(SHADOWLAB_SOURCE_DIR) + "/tours/" + name + ".json");
+      for (const TourStep& s : tour.steps) {
+        const bool staged = s.frames.size() > 1 || (s.frames.size() == 1 && s.frames[0] > 1);
+        const float needed = captionStripHeight(s, size.x, staged);
+        tallest = std::max(tallest, needed);
+        EXPECT_LE(needed, size.y * kCaptionMaxShare) << name << " \"" << s.title << "\" at " << size.x << "x" << size.y;
+      }
+    }
+    // The strip before: five lines whatever the text. Some step needs more (it was cut).
+    const float fiveLines = ImGui::GetFontSize() * 5.0f * 1.25f + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    EXPECT_GT(tallest, fiveLines) << "at " << size.x << "x" << size.y;
+    ImGui::EndFrame();
+  }
+  ImGui::DestroyContext();
 }
 
 TEST(ExplorerColourKeys, EveryHeatMapViewHasAKeyThatSaysWhatBlackMeans) {

@@ -13,7 +13,7 @@
 # Suites that need no GL context (whole suite names, before the first '.').
 set(_unit_suites
   PageAllocator QuadtreeFit Cascaded Dpds FacePartitioned LayoutChoice Lispsm LogPsm Psm Tsm
-  SceneEffects FrameGraph ShadowDrawPlan Layout Params ParamDefines SceneFuzzRegressions SceneBuiltin SceneMotion
+  SceneEffects FrameGraph ShadowDrawPlan ExplorerCaption Layout Params ParamDefines SceneFuzzRegressions SceneBuiltin SceneMotion
   SceneCameraPath SceneGltf SceneJson SceneShapes SceneRealGltf MeshFixups Metrics TourParse
   DeepScene ExplorerErrorPanel ExplorerLink ExplorerViews ExplorerSettings ExplorerColourKeys
   ExplorerExports ExplorerShortcuts ExplorerCamera ExplorerLight ExplorerLayout Reference)

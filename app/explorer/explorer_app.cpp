@@ -320,7 +320,9 @@ bool FrameLoop::drawFrame(double now, float dt, int fbWidth, int fbHeight, bool 
       tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
   const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
   const MainAreaLayout layout = layoutMainArea(
-      ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()),
+      ImVec2(panelWidth, 0),
+      ImVec2(io.DisplaySize.x - panelWidth,
+             io.DisplaySize.y - tour.captionHeight(ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y))),
       state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
   advanceCameraAndTime(window, state, dt);
   // The visibility plot (hold V) reads the G-buffer under the mouse.
@@ -344,7 +346,8 @@ MainAreaResult FrameLoop::drawOverlays(const MainAreaLayout& layout, float panel
   const MainAreaResult area = drawMainArea(layout, state);
   state.hoveredViewport = area.hoveredViewport;
   tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
-  tour.drawPlot(ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - tour.captionHeight()));
+  const ImVec2 tourArea(io.DisplaySize.x - panelWidth, io.DisplaySize.y);
+  tour.drawPlot(ImVec2(panelWidth, 0), ImVec2(tourArea.x, tourArea.y - tour.captionHeight(tourArea)));
   drawDpdsWindow(state, layout.renderWidth, layout.renderHeight, ImVec2(panelWidth, 0),
                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
   const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;

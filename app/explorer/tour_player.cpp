@@ -12,14 +12,13 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
 namespace sl {
 namespace {
 
-constexpr float kPresenterScale = 1.75f;  // text readable from the back of a lecture hall
-constexpr float kCaptionLines = 5.0f;     // title, panel names, three lines of caption
 // The frame a step's plot is made at (the figures' default panel; the plot's pixel is its centre).
 constexpr int kPlotFrameWidth = 480, kPlotFrameHeight = 270;
 
@@ -163,20 +162,42 @@ void TourPlayer::handleKeys(ExplorerState& state, Renderer& renderer) {
   if (keyPressed(GLFW_KEY_F5)) setPresenter(!presenter_);
 }
 
-float TourPlayer::captionHeight() const {
-  if (!tour_) return 0.0f;
+namespace {
+float wrappedHeight(const std::string& text, float width) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float lines = kCaptionLines + (staged() ? 1.0f : 0.0f);  // the still-frame buttons' row
-  return ImGui::GetFontSize() * lines * 1.25f + style.WindowPadding.y * 2.0f;
+  const float wrap = std::max(width - 2.0f * style.WindowPadding.x, 1.0f);
+  return ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
+}
+}  // namespace
+
+float captionStripHeight(const TourStep& s, float width, bool staged) {
+  float h = ImGui::GetFrameHeightWithSpacing();  // step buttons, number and title
+  if (staged) h += ImGui::GetFrameHeightWithSpacing();
+  if (const std::string labels = viewportLabels(s); !labels.empty()) h += wrappedHeight(labels, width);
+  return h + wrappedHeight(s.shownCaption(), width) + 2.0f * ImGui::GetStyle().WindowPadding.y;
+}
+
+float TourPlayer::captionNeeded(float width) const {
+  if (!tour_) return 0.0f;
+  float h = captionStripHeight(tour_->steps[step_], width, staged());
+  if (!error_.empty()) h += wrappedHeight(error_, width);
+  if (!plotError_.empty()) h += wrappedHeight(plotError_, width);
+  return h;
+}
+
+float TourPlayer::captionHeight(ImVec2 area) const {
+  return std::min(captionNeeded(area.x), std::floor(area.y * kCaptionMaxShare));
 }
 
 void TourPlayer::drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize) {
   if (!tour_) return;
-  const float h = captionHeight();
+  const float h = captionHeight(areaSize);
   ImGui::SetNextWindowPos(ImVec2(areaMin.x, areaMin.y + areaSize.y - h));
   ImGui::SetNextWindowSize(ImVec2(areaSize.x, h));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+  // A scroll bar only where the text is taller than the strip may grow.
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing;
   ImGui::Begin("##tour caption", nullptr, flags);
   const TourStep& s = tour_->steps[step_];
   if (!presenter_) {
@@ -192,12 +213,14 @@ void TourPlayer::drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 ar
   ImGui::SameLine();
   ImGui::TextUnformatted(s.title.c_str());
   if (staged()) drawFrameButtons(state);
+  ImGui::PushTextWrapPos(0.0f);  // every line wraps as captionNeeded measured it
   if (const std::string labels = viewportLabels(s); !labels.empty()) ImGui::TextDisabled("%s", labels.c_str());
   if (!s.built()) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
   ImGui::TextWrapped("%s", s.shownCaption().c_str());
   if (!s.built()) ImGui::PopStyleColor();
   if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
   if (!plotError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", plotError_.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::End();
 }
 

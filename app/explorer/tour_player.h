@@ -21,6 +21,13 @@ namespace sl {
 
 class Renderer;
 
+// The height of the caption strip a step needs at `width` with the current font: its title row,
+// the still-frame row when `staged`, the viewport names and the caption, wrapped.
+float captionStripHeight(const TourStep& s, float width, bool staged);
+constexpr float kPresenterScale = 1.75f;  // presenter mode's text: readable from the back of a lecture hall
+// The caption strip grows to at most this share of the window's height; beyond, it scrolls.
+inline constexpr float kCaptionMaxShare = 0.55f;
+
 class TourPlayer {
  public:
   // Loads the tour and shows step `firstStep` (1-based); false after printing why not.
@@ -31,7 +38,10 @@ class TourPlayer {
   // Keys (ignored while a text field has the keyboard); call before the panels are drawn.
   void handleKeys(ExplorerState& state, Renderer& renderer);
   // Height the caption strip takes from the bottom of the main area (0 without a tour).
-  float captionHeight() const;
+  // area: the window less the side panel. What the step's text needs at that width (every line,
+  // the caption wrapped), at most 55 % of its height (beyond it the strip scrolls).
+  float captionHeight(ImVec2 area) const;
+  float captionNeeded(float width) const;
   // The caption strip (title, caption, step buttons) over the bottom `captionHeight()` of the area.
   void drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize);
   // The step's plot window (nothing for a step without a plot), at the top right of the area.
