@@ -3,6 +3,7 @@
 #include "explorer/explorer_state.h"
 #include "explorer/shortcuts.h"
 #include "explorer/tour_player.h"
+#include "explorer/viewport_area.h"
 #include "gl_test_util.h"
 #include "sanitizer_report.h"
 
@@ -175,6 +176,42 @@ TEST(TourPlayer, KeysStepAndTogglePresenterMode) {
   EXPECT_GT(io.FontGlobalScale, 1.5f);
   press(294);
   EXPECT_FALSE(player.presenter());
+  ImGui::DestroyContext();
+}
+
+// Issue #23: the step's plot window opened over viewport 2 (on the LogPSM step, the very map the
+// caption is about). A plot step now takes a strip on the right that the viewports are laid out
+// beside; a step without a plot takes none.
+TEST(TourPlayer, AStepsPlotHasAStripBesideTheViewports) {
+  test::GlHarness h;
+  ExplorerState state = basicSceneState(h);
+  const std::string tour = writeTour("plotstrip.json", R"({"steps": [{"title": "a", "viewports": ["standard"]},
+    {"title": "b", "scene": "columns", "viewports": ["lispsm", "logpsm", "psm"],
+     "plot": {"kind": "dpds", "techniques": ["lispsm", "logpsm"]}}]})");
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(1280, 720);
+  unsigned char* pixels = nullptr;
+  int w = 0, hgt = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &hgt);
+  TourPlayer player;
+  const ImVec2 area(1280, 720);
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 1, false));
+  ImGui::NewFrame();
+  EXPECT_EQ(player.plotStripWidth(area), 0.0f);
+  ImGui::EndFrame();
+  ASSERT_TRUE(player.start(state, h.renderer, tour, 2, false));
+  ImGui::NewFrame();
+  const float strip = player.plotStripWidth(area);
+  EXPECT_GT(strip, 200.0f);
+  EXPECT_LE(strip, 0.45f * area.x);
+  const MainAreaLayout layout = layoutMainArea(ImVec2(0, 0), ImVec2(area.x - strip, area.y), 3, true, ImVec2(1, 1));
+  for (const ViewportTile& t : layout.tiles) {
+    EXPECT_LE(t.imageMin.x + t.imageSize.x, area.x - strip);
+    EXPECT_LE(t.headerMin.x + t.headerSize.x, area.x - strip);
+  }
+  ImGui::EndFrame();
   ImGui::DestroyContext();
 }
 

@@ -319,11 +319,12 @@ bool FrameLoop::drawFrame(double now, float dt, int fbWidth, int fbHeight, bool 
   const float panelWidth =
       tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
   const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
-  const MainAreaLayout layout = layoutMainArea(
-      ImVec2(panelWidth, 0),
-      ImVec2(io.DisplaySize.x - panelWidth,
-             io.DisplaySize.y - tour.captionHeight(ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y))),
-      state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+  // A step's plot has a strip of its own on the right: it hides no viewport (#23).
+  const ImVec2 tourArea(io.DisplaySize.x - panelWidth, io.DisplaySize.y);
+  const MainAreaLayout layout =
+      layoutMainArea(ImVec2(panelWidth, 0),
+                     ImVec2(tourArea.x - tour.plotStripWidth(tourArea), tourArea.y - tour.captionHeight(tourArea)),
+                     state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
   advanceCameraAndTime(window, state, dt);
   // The visibility plot (hold V) reads the G-buffer under the mouse.
   const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);
@@ -347,7 +348,8 @@ MainAreaResult FrameLoop::drawOverlays(const MainAreaLayout& layout, float panel
   state.hoveredViewport = area.hoveredViewport;
   tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
   const ImVec2 tourArea(io.DisplaySize.x - panelWidth, io.DisplaySize.y);
-  tour.drawPlot(ImVec2(panelWidth, 0), ImVec2(tourArea.x, tourArea.y - tour.captionHeight(tourArea)));
+  const float plotWidth = tour.plotStripWidth(tourArea);
+  tour.drawPlot(ImVec2(io.DisplaySize.x - plotWidth, 0), ImVec2(plotWidth, tourArea.y - tour.captionHeight(tourArea)));
   drawDpdsWindow(state, layout.renderWidth, layout.renderHeight, ImVec2(panelWidth, 0),
                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
   const bool magnifierKey = keyDown(window, GLFW_KEY_M) && !io.WantTextInput;

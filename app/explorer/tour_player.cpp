@@ -242,17 +242,22 @@ void TourPlayer::drawFrameButtons(ExplorerState& state) {
   ImGui::TextDisabled("(now %d%s)", state.framesSinceCut, state.frozen ? ", frozen" : "");
 }
 
-void TourPlayer::drawPlot(ImVec2 areaMin, ImVec2 areaSize) {
-  if (!tour_ || plot_.empty()) return;
+float TourPlayer::plotStripWidth(ImVec2 area) const {
+  if (!tour_ || plot_.empty()) return 0.0f;
   const float line = ImGui::GetTextLineHeight();
-  const ImVec2 size(std::min(line * 34.0f, areaSize.x * 0.45f), std::min(line * 15.0f, areaSize.y * 0.4f));
-  const float windowW = size.x + ImGui::GetStyle().WindowPadding.x * 2.0f;
-  ImGui::SetNextWindowPos(ImVec2(areaMin.x + areaSize.x - windowW - line * 0.5f, areaMin.y + line * 0.5f),
-                          ImGuiCond_Always);
+  return std::floor(std::min(line * 34.0f, area.x * 0.4f) + ImGui::GetStyle().WindowPadding.x * 2.0f + line);
+}
+
+void TourPlayer::drawPlot(ImVec2 areaMin, ImVec2 areaSize) {
+  if (!tour_ || plot_.empty() || areaSize.x <= 0.0f) return;
+  const float line = ImGui::GetTextLineHeight();
+  const float padding = ImGui::GetStyle().WindowPadding.x;
+  const ImVec2 size(std::max(areaSize.x - 2.0f * padding - line, line),
+                    std::max(std::min(line * 15.0f, areaSize.y * 0.6f), line));
+  ImGui::SetNextWindowPos(ImVec2(areaMin.x + line * 0.5f, areaMin.y + line * 0.5f), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.92f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing;
-  // Collapsible from its title bar (the triangle) when it hides a viewport.
   if (ImGui::Begin(("step plot: " + plot_.title + "###tour plot").c_str(), nullptr, flags)) {
     drawPlotWidget(plot_, size);
     drawPlotCaption(plot_.x.label + "; y: " + plot_.y.label + (plot_.note.empty() ? "" : "; " + plot_.note), size.x);

@@ -45,6 +45,10 @@ class TourPlayer {
   // The caption strip (title, caption, step buttons) over the bottom `captionHeight()` of the area.
   void drawCaption(ExplorerState& state, Renderer& renderer, ImVec2 areaMin, ImVec2 areaSize);
   // The step's plot window (nothing for a step without a plot), at the top right of the area.
+  // Width of the strip the step's plot takes on the right of `area` (the window less the side
+  // panel; 0 without a plot): the viewports are laid out beside it, so the plot hides none.
+  float plotStripWidth(ImVec2 area) const;
+  // The plot window inside its strip (areaMin, areaSize: the strip above the caption).
   void drawPlot(ImVec2 areaMin, ImVec2 areaSize);
   // Shows step `index` (0-based); a step that fails to apply keeps the window with its message.
   void show(ExplorerState& state, Renderer& renderer, size_t index);
