@@ -23,6 +23,7 @@ const char* kUsage =
     "            [--soak SECONDS]                               (unattended reliability run: scripts/soak.sh)\n"
     "            [--frames N] [--screenshot-on-exit F.png]      open the explorer window\n"
     "  shadowlab --tour T.json [--tour-step N] [--presenter]    play a lecture tour (arrows/PageUp/PageDown, F5)\n"
+    "            [--monitor N]                                  presenter mode fills the window's display, or N\n"
     "  shadowlab render --scene S --technique T --out F.png ...  render headless (see render --help)\n"
     "  shadowlab list                                           techniques, parameters, views, scenes\n"
     "  shadowlab reference --scene S --out F.png ...            ray-traced shadow truth (see reference --help)\n"
@@ -39,7 +40,7 @@ int runExplorerCommand(int argc, char** argv) {
   sl::Args args(argc, argv, 1,
                 {"--scene", "--technique", "--set", "--camera", "--size", "--frames", "--screenshot-on-exit",
                  "--shaders", "--compare", "--view", "--light", "--tour", "--tour-step", "--settings", "--enlarge",
-                 "--ui-scale", "--soak", "--save-to"},
+                 "--ui-scale", "--soak", "--save-to", "--monitor"},
                 {"--magnifier", "--visibility-plot", "--dpds-plot", "--presenter", "--no-settings", "--show-help",
                  "--save-on-exit"});
   sl::ExplorerOptions o;
@@ -59,6 +60,11 @@ int runExplorerCommand(int argc, char** argv) {
   o.tour = args.get("--tour");  // its steps replace --scene, --technique and the views
   o.tourStep = args.getInt("--tour-step", 1);
   o.presenter = args.has("--presenter");
+  if (args.has("--monitor")) {
+    o.monitor = args.getInt("--monitor", 0);
+    if (o.monitor < 1)
+      throw sl::ArgError("--monitor: expected a display number from 1, got '" + args.get("--monitor") + "'");
+  }
   o.showHelp = args.has("--show-help");
   o.saveOnExit = args.has("--save-on-exit");
   o.screenshotDir = args.get("--save-to");

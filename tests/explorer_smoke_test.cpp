@@ -254,3 +254,31 @@ TEST(ExplorerSmoke, RealKeyEventsDriveShortcutsAndTourStages) {
   EXPECT_TRUE(windowShot) << "F12 wrote no window PNG into " << dir;
   std::filesystem::remove_all(dir);
 }
+
+// Issue #23: presenter mode stayed a 1280x720 window in the corner of a 1920x1080 screen. It now
+// fills the display the window is on (here Xvfb's one screen), and a --monitor past the last
+// display is a clear error before any window opens.
+TEST(ExplorerSmoke, PresenterModeFillsTheDisplay) {
+  if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (apt install xvfb); explorer not run";
+  const auto dir = std::filesystem::temp_directory_path() / ("shadowlab-presenter-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string shot = (dir / "shot.png").string();
+  const std::string tour = std::string(SHADOWLAB_SOURCE_DIR) + "/tours/pixel-correct.json";
+  const std::string command = "timeout 240 xvfb-run -a -s \"-screen 0 1600x900x24\" " + shellQuote(SHADOWLAB_BINARY) +
+                              " --no-settings --tour " + shellQuote(tour) + " --presenter --frames 6 " +
+                              "--screenshot-on-exit " + shellQuote(shot);
+  const CommandResult result = runCommand(command);
+  ASSERT_EQ(result.exitCode, 0) << command << "\n" << result.output;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* rgb = stbi_load(shot.c_str(), &width, &height, &channels, 3);
+  ASSERT_NE(rgb, nullptr) << "could not read " << shot;
+  stbi_image_free(rgb);
+  EXPECT_EQ(width, 1600);
+  EXPECT_EQ(height, 900);
+  const CommandResult bad =
+      runCommand("timeout 60 xvfb-run -a " + shellQuote(SHADOWLAB_BINARY) + " --no-settings --tour " +
+                 shellQuote(tour) + " --presenter --monitor 3 --frames 2");
+  EXPECT_EQ(bad.exitCode, 1) << bad.output;
+  EXPECT_NE(bad.output.find("--monitor 3: this display has 1 monitor"), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}

@@ -45,6 +45,7 @@ struct ExplorerOptions {
   std::string tour;           // lecture tour to play (explorer/tour_player.h), or ""
   int tourStep = 1;           // its first step shown (1-based)
   bool presenter = false;     // start the tour in presenter mode
+  int monitor = 0;            // the display presenter mode fills (1-based; 0 = the window's)
 };
 
 // Opens the window and runs until it is closed (or maxFrames have been drawn). Returns the

@@ -13,6 +13,7 @@
 #include "explorer/shortcuts.h"
 #include "explorer/soak.h"
 #include "explorer/side_panel.h"
+#include "explorer/presenter_window.h"
 #include "explorer/tour_player.h"
 #include "explorer/ui_scale.h"
 #include "explorer/viewport_area.h"
@@ -236,6 +237,7 @@ struct FrameLoop {
   std::vector<double> frameSeconds;  // whole frames (render + UI + swap), for --frames reports
   std::vector<std::string> printedShaderErrors;
   float appliedUiScale = state.uiScale;
+  PresenterWindow presenterWindow;
 
   // Until the window closes, --frames runs out or the soak ends. False when the exit screenshot
   // could not be written.
@@ -251,6 +253,7 @@ struct FrameLoop {
 bool FrameLoop::run() {
   for (int frame = 0;; ++frame) {
     clearKeyPresses();
+    presenterWindow.follow(window, tour.presenter(), state.options.monitor);
     glfwPollEvents();
     // A close request still draws one more frame, so --screenshot-on-exit has something to read.
     const bool lastFrame =
@@ -482,6 +485,11 @@ int runExplorer(const ExplorerOptions& options) {
   if (!glfwInit()) {
     std::cerr << kNoDisplayMessage << "  (GLFW: " << g_lastGlfwError << ")\n";
     return 2;
+  }
+  if (const std::string bad = checkMonitorIndex(options.monitor); !bad.empty()) {
+    std::cerr << "explorer: " << bad << "\n";
+    glfwTerminate();
+    return 1;
   }
   GLFWwindow* window = createWindow(options);
   if (!window) {
