@@ -65,6 +65,20 @@ TEST(TourParse, PlotLegendUsesTheViewportTitles) {
   EXPECT_EQ(stepSeriesLabel(s, "uniform"), "uniform");
 }
 
+// A step may show one of a viewport's views large instead of as a thumbnail (#23: four viewports'
+// thumbnails were a few pixels of image); it must be one of that viewport's views.
+TEST(TourParse, EnlargeNamesOneOfTheViewportsViews) {
+  const Tour t = parseTour(tourWith(R"({"title": "a", "viewports": [
+      {"technique": "vsm", "views": ["texels", "moments"], "enlarge": "moments"}, "pcf"]})"),
+                           "lecture.json");
+  EXPECT_EQ(t.steps[0].viewports[0].enlarged, "moments");
+  EXPECT_EQ(t.steps[0].viewports[1].enlarged, "");
+  expectMessage(parseError(tourWith(R"({"title": "a", "viewports": [
+      {"technique": "vsm", "views": ["texels"], "enlarge": "moments"}]})")),
+                {"lecture.json", "steps[0] (\"a\").viewports[0].enlarge",
+                 "'moments' is not one of this viewport's views", "texels"});
+}
+
 TEST(TourParse, BadJsonNamesTheFile) { expectMessage(parseError("{\"steps\": ["), {"lecture.json", "invalid JSON"}); }
 
 TEST(TourParse, UnknownFieldNamesStepAndKey) {

@@ -41,6 +41,8 @@ void applyViewports(ExplorerState& state, const TourStep& s) {
   state.viewportCount = viewportCountFor(s.viewports.size());
   ensureViewportSlots(state);
   applySelectedViews(state);
+  // A step may show one view large in a tile instead of thumbnails too small to read (#23).
+  for (size_t i = 0; i < s.viewports.size(); ++i) state.slots[i].enlargedView = s.viewports[i].enlarged;
 }
 
 // "1: n = z_n   2: n_opt": the tour's panel names and stand-ins, which the tiles' headers do not show.

@@ -73,13 +73,19 @@ TourViewport parseViewport(const JsonReader& r, const json& j, const std::string
   if (j.is_string()) {
     v.technique = r.string(j, where);
   } else {
-    r.checkKeys(j, where, {"technique", "set", "views", "label"});
+    r.checkKeys(j, where, {"technique", "set", "views", "label", "enlarge"});
     const json* t = JsonReader::find(j, "technique");
     if (!t) r.fail(where, "missing 'technique' (a preset id; `shadowlab list` shows them)");
     v.technique = r.string(*t, where + ".technique");
     if (const json* s = JsonReader::find(j, "set")) v.overrides = stringList(r, *s, where + ".set");
     if (const json* s = JsonReader::find(j, "views")) v.views = stringList(r, *s, where + ".views");
     if (const json* s = JsonReader::find(j, "label")) v.label = r.string(*s, where + ".label");
+    if (const json* s = JsonReader::find(j, "enlarge")) {
+      v.enlarged = r.string(*s, where + ".enlarge");
+      if (std::find(v.views.begin(), v.views.end(), v.enlarged) == v.views.end())
+        r.fail(where + ".enlarge",
+               "'" + v.enlarged + "' is not one of this viewport's views (" + joined(v.views) + ")");
+    }
   }
   if (!findPreset(v.technique)) {
     if (std::find(planned.begin(), planned.end(), v.technique) != planned.end()) {

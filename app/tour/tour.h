@@ -25,6 +25,7 @@ struct TourViewport {
   std::vector<std::string> overrides;  // "key=value", validated against the preset's declarations
   std::vector<std::string> views;      // debug views shown beside the colour image
   std::string label;                   // panel title ("" = the preset id)
+  std::string enlarged;                // one of `views` shown large in the tile instead of thumbnails ("" = none)
 };
 
 // Which camera a step looks through: a named scene camera (default: the scene's first), an
