@@ -2,7 +2,7 @@
 // the parameters every technique has, and techniques built from presets.
 #include "technique.h"
 #include "param_hints.h"
-#include "render/view_keys.h"
+#include "part/common_view_keys.h"
 
 namespace sl {
 

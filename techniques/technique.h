@@ -22,7 +22,7 @@ const Layout* findLayout(const std::string& id);
 const Representation* findRepresentation(const std::string& id);
 const Accumulation* findAccumulation(const std::string& id);
 const Preset* findPreset(const std::string& id);
-// What the colours of a debug view mean: a common view's key (render/view_keys.h) or the key its
+// What the colours of a debug view mean: a common view's key (part/common_view_keys.h) or the key its
 // family declares (Family::viewKeys); nullptr for views whose colours are the scene itself.
 const ColourKey* viewColourKey(const std::string& viewName);
 // Every view with a key, common and of every family (for tests and `shadowlab list`).

@@ -9,7 +9,7 @@
 #include "tour/tour.h"
 #include "explorer/ui_scale.h"
 #include "explorer/tour_player.h"
-#include "render/view_keys.h"
+#include "part/common_view_keys.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // a view none of its parts offers. GL tier: creating a state may touch GL.
 #include "gl_test_util.h"
 #include "render/renderer.h"
-#include "render/view_keys.h"
+#include "part/common_view_keys.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "render/view_keys.h"
+#include "part/common_view_keys.h"
 
 #include <algorithm>
 #include <map>
