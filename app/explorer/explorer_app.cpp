@@ -1,9 +1,11 @@
-// Window, context and frame loop of the explorer. Panels, the viewport area, the camera and the
-// magnifier live in their own files; this one wires them to GLFW, ImGui and the renderer.
+// The explorer's frame loop. The window and ImGui set-up are explorer_window.cpp; panels, the
+// viewport area, the camera and the magnifier live in their own files; this one wires them to
+// GLFW, ImGui and the renderer.
 #include "explorer/explorer.h"
 
 #include "explorer/error_panel.h"
 #include "explorer/explorer_state.h"
+#include "explorer/explorer_window.h"
 #include "explorer/magnifier.h"
 #include "explorer/plot_window.h"
 #include "explorer/visibility_plot.h"
@@ -47,53 +49,6 @@ constexpr float kMaxFrameSeconds = 0.1f;     // a stall (breakpoint, resize) mus
 const char* const kNoDisplayMessage =
     "shadowlab: no display found (DISPLAY unset or X server unreachable); run headless:\n"
     "  shadowlab render --scene basic --technique standard --out out.png\n";
-
-std::string g_lastGlfwError;
-void rememberGlfwError(int code, const char* description) {
-  g_lastGlfwError = description ? description : ("GLFW error " + std::to_string(code));
-}
-
-bool displayConfigured() {
-  const char* x11 = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x11 && *x11) || (wayland && *wayland);
-}
-
-GLFWwindow* createWindow(const ExplorerOptions& options) {
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);  // the renderer writes display-ready colours
-  return glfwCreateWindow(std::max(320, options.width), std::max(240, options.height), "shadowlab explorer", nullptr,
-                          nullptr);
-}
-
-void setUpImGui(GLFWwindow* window, float uiScale) {
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // the layout is fixed; do not litter the working directory
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.WindowRounding = 0.0f;
-  style.FrameRounding = 3.0f;
-  style.GrabRounding = 3.0f;
-  style.ItemSpacing = ImVec2(8, 5);
-  style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.62f, 0.95f, 1.0f);  // timing bars
-
-  installKeyPressRecorder(window);  // first: the backend chains to the callback it finds
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 450");
-  applyUiScale(uiScale);  // loads the font (16 px x scale)
-}
-
-void shutDownImGui() {
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-}
 
 bool keyDown(GLFWwindow* window, int key) { return glfwGetKey(window, key) == GLFW_PRESS; }
 
@@ -481,9 +436,9 @@ int runExplorer(const ExplorerOptions& options) {
   state.showHelp = options.showHelp;
   if (!options.screenshotDir.empty()) state.screenshotDir = options.screenshotDir;
 
-  glfwSetErrorCallback(rememberGlfwError);
+  installGlfwErrorRecorder();
   if (!glfwInit()) {
-    std::cerr << kNoDisplayMessage << "  (GLFW: " << g_lastGlfwError << ")\n";
+    std::cerr << kNoDisplayMessage << "  (GLFW: " << lastGlfwError() << ")\n";
     return 2;
   }
   if (const std::string bad = checkMonitorIndex(options.monitor); !bad.empty()) {
@@ -491,9 +446,9 @@ int runExplorer(const ExplorerOptions& options) {
     glfwTerminate();
     return 1;
   }
-  GLFWwindow* window = createWindow(options);
+  GLFWwindow* window = createExplorerWindow(options);
   if (!window) {
-    std::cerr << kNoDisplayMessage << "  (GLFW could not open an OpenGL 4.5 core window: " << g_lastGlfwError << ")\n";
+    std::cerr << kNoDisplayMessage << "  (GLFW could not open an OpenGL 4.5 core window: " << lastGlfwError() << ")\n";
     glfwTerminate();
     return 2;
   }
@@ -501,7 +456,7 @@ int runExplorer(const ExplorerOptions& options) {
   glfwSetWindowTitle(window, ("shadowlab explorer - " + state.sceneLabel).c_str());
   enableGlDebugOutput(false);
   keepGlDriverLoaded();
-  setUpImGui(window, state.uiScale);
+  setUpExplorerImGui(window, state.uiScale);
 
   int exitCode = 0;
   try {
@@ -511,7 +466,7 @@ int runExplorer(const ExplorerOptions& options) {
     exitCode = 1;
   }
   state.slots.clear();  // viewports own GL textures: free them while the context still exists
-  shutDownImGui();
+  shutDownExplorerImGui();
   glfwDestroyWindow(window);
   glfwTerminate();
   return exitCode;

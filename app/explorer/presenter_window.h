@@ -3,6 +3,7 @@
 // size, position and frame back when it leaves. --monitor N chooses the display instead.
 #pragma once
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <string>
