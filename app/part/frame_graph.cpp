@@ -45,7 +45,7 @@ std::vector<FrameGraph::Lifetime> FrameGraph::transientLifetimes() const {
   const std::vector<bool> live = liveMask();
   std::vector<Lifetime> out;
   for (const auto& [name, desc] : transients_) {
-    Lifetime l{name, passes_.size(), 0};
+    Lifetime l{name, desc, passes_.size(), 0};
     for (size_t k = 0; k < passes_.size(); ++k)
       if (live[k] && uses(passes_[k], name)) l.first = std::min(l.first, k), l.last = k;
     if (l.first < passes_.size()) out.push_back(l);
@@ -113,18 +113,13 @@ void FrameGraph::execute(const std::function<void(const Pass&, const std::functi
                          TransientAllocator* allocator) const {
   const std::vector<bool> live = liveMask();
   const std::vector<Lifetime> lifetimes = transientLifetimes();
-  auto descOf = [this](const std::string& name) {
-    for (const auto& [n, d] : transients_)
-      if (n == name) return d;
-    return TextureDesc{};
-  };
   if (!lifetimes.empty() && !allocator)
     throw std::logic_error("frame graph: transient textures declared but no allocator to lend them");
   lent_.clear();
   for (size_t k = 0; k < passes_.size(); ++k) {
     if (!live[k]) continue;
     for (const Lifetime& l : lifetimes)
-      if (l.first == k) lent_[l.resource] = allocator->acquire(descOf(l.resource), l.resource);
+      if (l.first == k) lent_[l.resource] = allocator->acquire(l.desc, l.resource);
     wrapper(passes_[k], passes_[k].execute);
     for (const Lifetime& l : lifetimes)
       if (l.last == k) {

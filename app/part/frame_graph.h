@@ -67,6 +67,7 @@ class FrameGraph {
   // The transient textures live passes use, with the live pass indices of their first and last use.
   struct Lifetime {
     std::string resource;
+    TextureDesc desc;
     size_t first = 0, last = 0;
   };
   std::vector<Lifetime> transientLifetimes() const;

@@ -46,7 +46,7 @@ std::vector<glm::vec3> unprojectCube(const glm::mat4& viewProj, float nearZ, flo
 
 // The light-space overview: the scene from above and behind, the camera frustum and every light
 // view's frustum as lines (the `lightspace` view).
-void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, const FrameInput& in) {
+void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, Texture2D& depth, const FrameInput& in) {
   Texture2D* target = &view;
   ProgramSpec sceneSpec{
       "view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
@@ -54,7 +54,6 @@ void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, const
       "view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
   Program& lp = shaders_.get(lineSpec);
   if (!lp.valid()) return;
-  Texture2D depth(GL_DEPTH_COMPONENT32F, target->width(), target->height(), "view.lightspace depth");
   Framebuffer fbo("view.lightspace");
   fbo.attach({target}, &depth);
   fbo.bind();
@@ -146,8 +145,11 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
 
   if (vp.views_.count("lightspace")) {
     Texture2D* target = vp.views_["lightspace"].get();
-    g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag}, [this, &vp, target, &in] {
-             drawLightSpaceOverview(vp, *target, in);
+    // Its depth buffer is the graph's (it was a new texture every frame).
+    const std::string depth = "view.lightspace.depth" + tag;
+    g.createTexture(depth, {GL_DEPTH_COMPONENT32F, target->width(), target->height()});
+    g.add({"view.lightspace" + tag, {}, {"view.lightspace" + tag, depth}, [this, &vp, target, &in, &g, depth] {
+             drawLightSpaceOverview(vp, *target, transientTexture(g, depth), in);
            }});
     g.requestSink("view.lightspace" + tag);
   }

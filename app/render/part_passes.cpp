@@ -38,11 +38,9 @@ void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const P
     gpu_->draw(programs, time, time, cull, only, cullTo);
     return;
   }
-  // A piecewise layer: cleared with the rest only when the representation does not keep it.
-  if (vp.representation->keepsLayers())
-    vp.representation->bindShadowLayer(layer);
-  else
-    vp.representation->beginShadowLayer(layer);
+  // A piecewise layer: bound without clearing when the representation keeps its layers (by
+  // default bindShadowLayer clears, as beginShadowLayer does).
+  vp.representation->bindShadowLayer(layer);
   glEnable(GL_SCISSOR_TEST);
   for (const ShadowTile& tile : draw.tiles) {
     glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);

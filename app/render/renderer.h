@@ -152,7 +152,7 @@ class Renderer {
   AccumulationOutput addDeferredShadePass(FrameGraph& g, Viewport& vp, const std::string& tag,
                                           const std::string& visibility, const Texture2D* visibilityTex);
   void addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
-  void drawLightSpaceOverview(const Viewport& vp, Texture2D& target, const FrameInput& in);
+  void drawLightSpaceOverview(const Viewport& vp, Texture2D& target, Texture2D& depth, const FrameInput& in);
   // Scenes with volumes: marches them over the viewport's colour (render/volume_pass.cpp).
   // depth: the target the colour's surfaces were drawn with; reads: what the lookup needs.
   void addVolumesPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::string& prelude,
