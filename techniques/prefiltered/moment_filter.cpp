@@ -1,4 +1,4 @@
-// The filter passes of the moment maps: a separable box blur (two fullscreen passes per layer,
+// The filter passes of the moment maps: a separable box blur (two compute passes per layer,
 // through a scratch target) or a mip chain built by 2x2 box downsampling. Both filter in log
 // space for ESM (SL_MOMENT_LOG_FILTER) and drop non-finite taps, so one broken texel cannot
 // spread into a lit or black square.
@@ -26,39 +26,42 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
 
 std::vector<const Texture2D*> pointers(const std::vector<Texture2D*>& v) { return {v.begin(), v.end()}; }
 
+// The GLSL image format qualifier of a moments target's storage.
+const char* imageFormatName(GLenum format) {
+  switch (format) {
+    case GL_R16F:
+      return "r16f";
+    case GL_RG16F:
+      return "rg16f";
+    case GL_RGBA16F:
+      return "rgba16f";
+    case GL_R32F:
+      return "r32f";
+    case GL_RG32F:
+      return "rg32f";
+    default:
+      return "rgba32f";
+  }
+}
+
+// Texels of one row or column a blur invocation filters.
+constexpr int kBlurRun = 8;
+
 }  // namespace
 
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                             const std::vector<Texture2D*>& scratch) {
   if (config_.method == FilterMethod::Sat) return buildSat(shaders);
-  const bool mips = config_.method == FilterMethod::Mipmap;
-  const ProgramSpec spec{mips ? "moment downsample" : "moment blur",
-                         {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
-                          {GL_FRAGMENT_SHADER, mips ? "passes/moment_downsample.frag" : "passes/moment_blur.frag"}},
-                         filterDefines(config_, spec_.logFilter)};
+  if (config_.method == FilterMethod::Blur) return blur(shaders, scratch);
+  const ProgramSpec spec{
+      "moment downsample",
+      {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/moment_downsample.frag"}},
+      filterDefines(config_, spec_.logFilter)};
   Program& p = shaders.get(spec);
   if (!p.valid()) return;
   p.use();
   if (spec_.logFilter) p.set("u_logExponent", logExponent_);
   const int layers = std::max(depth_.layers(), 1);
-  if (!mips) {
-    p.set("u_width", static_cast<float>(config_.width));
-    for (int l = 0; l < layers; ++l) {
-      p.set("u_layer", l);
-      for (int pass = 0; pass < 2; ++pass) {
-        // Horizontal into the scratch targets, then vertical back into the moments.
-        const std::vector<const Texture2D*> src = pass == 0 ? pointers(moments_) : pointers(scratch);
-        Framebuffer fbo("moment blur");
-        fbo.attachLayer(pass == 0 ? pointers(scratch) : pointers(moments_), nullptr, l);
-        fbo.bind();
-        TextureUnits units;
-        bindSources(p, units, src);
-        p.set("u_direction", pass == 0 ? glm::vec2(1, 0) : glm::vec2(0, 1));
-        drawFullscreen();
-      }
-    }
-    return;
-  }
   const int levels = moments_.front().levels();
   for (int level = 1; level < levels; ++level) {
     // Reading level-1 while level is attached is only defined when the sampled range excludes
@@ -81,6 +84,43 @@ void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>&
     glTextureParameteri(m.id(), GL_TEXTURE_BASE_LEVEL, 0);
     glTextureParameteri(m.id(), GL_TEXTURE_MAX_LEVEL, levels - 1);
   }
+}
+
+// The separable box blur as two compute passes per layer (shaders/passes/moment_blur.comp):
+// rows from the moments into the scratch targets, then columns back. On llvmpipe the blur was
+// two fullscreen fragment passes fetching and checking every tap; an invocation now fetches each
+// texel of its run once (docs/performance.md has the measurement).
+void MomentMapState::blur(ShaderLibrary& shaders, const std::vector<Texture2D*>& scratch) {
+  std::string defines = filterDefines(config_, spec_.logFilter) + "#define SL_BLUR_RUN " + std::to_string(kBlurRun) +
+                        "\n#define SL_BLUR_HALF " + std::to_string(config_.width / 2) + "\n";
+  for (size_t t = 0; t < moments_.size(); ++t)
+    defines += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(moments_[t].format()) + "\n";
+  Program& p = shaders.get({"moment blur", {{GL_COMPUTE_SHADER, "passes/moment_blur.comp"}}, defines});
+  if (!p.valid()) return;
+  p.use();
+  if (spec_.logFilter) p.set("u_logExponent", logExponent_);
+  p.set("u_width", static_cast<float>(config_.width));
+  const int size = moments_.front().width();
+  const GLuint runs = static_cast<GLuint>((size + kBlurRun - 1) / kBlurRun);
+  const GLuint lines = static_cast<GLuint>(size);
+  for (int l = 0; l < std::max(depth_.layers(), 1); ++l) {
+    p.set("u_layer", l);
+    for (int vertical = 0; vertical < 2; ++vertical) {
+      const std::vector<const Texture2D*> src = vertical == 0 ? pointers(moments_) : pointers(scratch);
+      const std::vector<const Texture2D*> dst = vertical == 0 ? pointers(scratch) : pointers(moments_);
+      TextureUnits units;
+      bindSources(p, units, src);
+      for (size_t t = 0; t < dst.size(); ++t) {
+        glBindImageTexture(static_cast<GLuint>(t), dst[t]->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, dst[t]->format());
+        p.set("u_dst" + std::to_string(t), static_cast<int>(t));
+      }
+      p.set("u_vertical", vertical);
+      glDispatchCompute((runs + 7) / 8, (lines + 7) / 8, 1);
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+  }
+  for (size_t t = 0; t < moments_.size(); ++t)
+    glBindImageTexture(static_cast<GLuint>(t), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
 }
 
 }  // namespace sl

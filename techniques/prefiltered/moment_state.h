@@ -64,6 +64,7 @@ class MomentMapState : public RepresentationState {
   void allocate(int size, int layers);
   std::string statusIn(const SceneEffects& fx, const ParamSet& params) const;
   void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
+  void blur(ShaderLibrary& shaders, const std::vector<Texture2D*>& scratch);  // moment_filter.cpp
   const MomentSpec& spec_;
   MomentConfig config_;
   std::vector<float> clear_;

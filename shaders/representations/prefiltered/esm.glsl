@@ -1,5 +1,5 @@
 // Exponential shadow maps (Annen et al. 2008): visibility exp(c (z_filtered - z_r)), where the
-// map holds depth filtered in log space (log(sum w exp(c z)) / c, passes/moment_filter.glsl),
+// map holds depth filtered in log space (log(sum w exp(c z)) / c, passes/moment_taps.glsl),
 // so that exp(c z) is never stored and large c cannot overflow any format.
 #include "representations/prefiltered/moment_math.glsl"
 uniform float u_esm_exponent;
