@@ -34,5 +34,10 @@ done
 echo "presets that render: ${#ok[@]}"
 grep -A5 failed "$out/check.log" | head -40
 list=$(printf '%s\n' "${ok[@]}" | grep -vx standard | paste -sd, -)
+# The SM clock while the benches run (the card idles at a low clock between light frames).
+(while sleep 5; do nvidia-smi --query-gpu=clocks.sm,utilization.gpu --format=csv,noheader; done) >"$out/clocks.txt" 2>&1 &
+clocks=$!
 SHADOWLAB=/tmp/sl BENCH_OUT="$out" PRESETS="$list" FRAMES="${FRAMES:-20}" WARMUP="${WARMUP:-5}" \
   scripts/bench-presets.sh "$tag" basic sponza terrain 2>&1 | grep -v '^bench: \[' | tail -30
+kill $clocks 2>/dev/null
+echo "SM clock during the benches (MHz, utilization):"; sort "$out/clocks.txt" | uniq -c | sort -rn | head -5
