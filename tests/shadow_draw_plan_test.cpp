@@ -24,11 +24,11 @@ TEST(ShadowDrawPlan, WarpedViewsTessellateTheCastersMatrixViewsDoNot) {
   const auto plain = casterStages(spaceOf({P::Matrix, P::Matrix}), "passes/shadow.frag");
   ASSERT_EQ(plain.size(), 2u);
   EXPECT_EQ(plain.back().second, "passes/shadow.frag");
-  const auto warped = casterStages(spaceOf({P::LogWarp}), "passes/shadow_moments.frag");
+  const auto warped = casterStages(spaceOf({P::LogWarp}), "passes/shadow_custom.frag");
   ASSERT_EQ(warped.size(), 4u);
   EXPECT_EQ(warped[1].first, static_cast<GLenum>(GL_TESS_CONTROL_SHADER));
   EXPECT_EQ(warped[2].first, static_cast<GLenum>(GL_TESS_EVALUATION_SHADER));
-  EXPECT_EQ(warped.back().second, "passes/shadow_moments.frag");
+  EXPECT_EQ(warped.back().second, "passes/shadow_custom.frag");
 }
 
 TEST(ShadowDrawPlan, TileClipIsItsPageTransformAfterTheLayer) {
@@ -42,12 +42,13 @@ TEST(ShadowDrawPlan, TileClipIsItsPageTransformAfterTheLayer) {
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(got[k], expected[k], 1e-5f);
 }
 
-// What the parts declare: the deep map draws opaque casters only, moment maps their own fragment
-// stage, and the log warp's views ask for tessellation (no hooks: the plan's data).
+// What the parts declare: the deep map draws opaque casters only, moment maps depth alone like a
+// depth map (their filter pass makes the moments), and the log warp's views ask for
+// tessellation (no hooks: the plan's data).
 TEST(ShadowDrawPlan, PartsDeclareTheirShareAsData) {
   EXPECT_EQ(findRepresentation("deep")->casterDraw().casters, CasterSet::Opaque);
   EXPECT_EQ(findRepresentation("depth-nearest")->casterDraw().casters, CasterSet::All);
-  EXPECT_EQ(findRepresentation("vsm")->casterDraw().fragment, "passes/shadow_moments.frag");
+  EXPECT_EQ(findRepresentation("vsm")->casterDraw().fragment, "passes/shadow.frag");
   EXPECT_EQ(findRepresentation("depth-pcf")->casterDraw().fragment, "passes/shadow.frag");
 }
 

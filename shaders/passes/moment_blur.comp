@@ -2,6 +2,10 @@
 // filters a run of SL_BLUR_RUN texels of one row (u_vertical = 0) or column (1): it fetches the
 // run and its SL_BLUR_HALF-texel aprons once, instead of every output texel fetching all of its
 // taps (a fragment pass did that; docs/performance.md has both measured).
+// SL_BLUR_FROM_DEPTH (the first direction): the source is the shadow pass's depth, turned into
+// the representation's moments here, once per fetched texel. The shadow pass then writes depth
+// alone, as a depth map's does, instead of every moment target for every caster fragment drawn.
+// With SL_BLUR_HALF 0 (a box of 1) this pass only turns depth into moments.
 // A box of width N texels: odd N has N equal taps; even N has N+1 taps with half weights at the
 // ends, the exact area of a width-N box over nearest-neighbour texels (so every width keeps the
 // texel centred). Edges clamp, as the texture's clamp-to-edge would.
@@ -15,88 +19,147 @@ uniform float u_width;
 const int kApron = SL_BLUR_HALF;
 const int kWindow = SL_BLUR_RUN + 2 * kApron;
 
+#ifdef SL_BLUR_FROM_DEPTH
+uniform sampler2DArray u_depth;
+#define SL_BLUR_SIZE_OF u_depth
+#else
+#define SL_BLUR_SIZE_OF u_src0
+uniform sampler2DArray u_src0;
+#if SL_MOMENT_TARGETS > 1
+uniform sampler2DArray u_src1;
+#endif
+#if SL_MOMENT_TARGETS > 2
+uniform sampler2DArray u_src2;
+#endif
+#if SL_MOMENT_TARGETS > 3
+uniform sampler2DArray u_src3;
+#endif
+#if SL_MOMENT_TARGETS > 4
+uniform sampler2DArray u_src4;
+#endif
+#if SL_MOMENT_TARGETS > 5
+uniform sampler2DArray u_src5;
+#endif
+#if SL_MOMENT_TARGETS > 6
+uniform sampler2DArray u_src6;
+#endif
+#if SL_MOMENT_TARGETS > 7
+uniform sampler2DArray u_src7;
+#endif
+#endif
+
+layout(SL_BLUR_FORMAT0, binding = 0) writeonly uniform image2DArray u_dst0;
+#if SL_MOMENT_TARGETS > 1
+layout(SL_BLUR_FORMAT1, binding = 1) writeonly uniform image2DArray u_dst1;
+#endif
+#if SL_MOMENT_TARGETS > 2
+layout(SL_BLUR_FORMAT2, binding = 2) writeonly uniform image2DArray u_dst2;
+#endif
+#if SL_MOMENT_TARGETS > 3
+layout(SL_BLUR_FORMAT3, binding = 3) writeonly uniform image2DArray u_dst3;
+#endif
+#if SL_MOMENT_TARGETS > 4
+layout(SL_BLUR_FORMAT4, binding = 4) writeonly uniform image2DArray u_dst4;
+#endif
+#if SL_MOMENT_TARGETS > 5
+layout(SL_BLUR_FORMAT5, binding = 5) writeonly uniform image2DArray u_dst5;
+#endif
+#if SL_MOMENT_TARGETS > 6
+layout(SL_BLUR_FORMAT6, binding = 6) writeonly uniform image2DArray u_dst6;
+#endif
+#if SL_MOMENT_TARGETS > 7
+layout(SL_BLUR_FORMAT7, binding = 7) writeonly uniform image2DArray u_dst7;
+#endif
+
+// Every target's window: target t's texel i at g_window[t * kWindow + i].
+vec4 g_window[SL_MOMENT_TARGETS * kWindow];
+
 ivec3 texelAt(int along, int line) { return u_vertical == 1 ? ivec3(line, along, u_layer) : ivec3(along, line, u_layer); }
 
 float tapWeight(int i) { return clamp(0.5 * u_width + 0.5 - abs(float(i)), 0.0, 1.0); }
 
-// Filters the run of `line` of `src` that starts at `start` (texels past `last` clamp to it).
-void blurRun(sampler2DArray src, int start, int line, int last, out vec4 result[SL_BLUR_RUN]) {
-  vec4 window[kWindow];
-  for (int i = 0; i < kWindow; ++i) window[i] = texelFetch(src, texelAt(clamp(start - kApron + i, 0, last), line), 0);
-  for (int o = 0; o < SL_BLUR_RUN; ++o) {
-    TapSum s = tapSumBegin();
-#ifdef SL_MOMENT_LOG_FILTER
-    for (int i = -kApron; i <= kApron; ++i) s.big = tapMax(s.big, window[o + kApron + i]);
+// Fetches the run starting at `start` of `line` and its aprons (texels past the map clamp).
+void fetchWindow(int start, int line, int last) {
+  for (int i = 0; i < kWindow; ++i) {
+    ivec3 at = texelAt(clamp(start - kApron + i, 0, last), line);
+#ifdef SL_BLUR_FROM_DEPTH
+    vec4 m[SL_MOMENT_TARGETS];
+    representationMoments(sanitizeDepth(texelFetch(u_depth, at, 0).r), m);
+    for (int t = 0; t < SL_MOMENT_TARGETS; ++t) g_window[t * kWindow + i] = m[t];
+#else
+    g_window[i] = texelFetch(u_src0, at, 0);
+#if SL_MOMENT_TARGETS > 1
+    g_window[kWindow + i] = texelFetch(u_src1, at, 0);
 #endif
-    for (int i = -kApron; i <= kApron; ++i) tapAdd(s, window[o + kApron + i], tapWeight(i));
-    result[o] = tapSumEnd(s);
+#if SL_MOMENT_TARGETS > 2
+    g_window[2 * kWindow + i] = texelFetch(u_src2, at, 0);
+#endif
+#if SL_MOMENT_TARGETS > 3
+    g_window[3 * kWindow + i] = texelFetch(u_src3, at, 0);
+#endif
+#if SL_MOMENT_TARGETS > 4
+    g_window[4 * kWindow + i] = texelFetch(u_src4, at, 0);
+#endif
+#if SL_MOMENT_TARGETS > 5
+    g_window[5 * kWindow + i] = texelFetch(u_src5, at, 0);
+#endif
+#if SL_MOMENT_TARGETS > 6
+    g_window[6 * kWindow + i] = texelFetch(u_src6, at, 0);
+#endif
+#if SL_MOMENT_TARGETS > 7
+    g_window[7 * kWindow + i] = texelFetch(u_src7, at, 0);
+#endif
+#endif
   }
 }
 
-#define SL_BLUR_RUN_OF(src, dst)                                                   \
-  {                                                                                \
-    vec4 result[SL_BLUR_RUN];                                                      \
-    blurRun(src, start, line, last, result);                                       \
-    for (int o = 0; o < SL_BLUR_RUN && start + o <= last; ++o)                     \
-      imageStore(dst, texelAt(start + o, line), result[o]);                        \
+// Target t's box average around the run's texel o.
+vec4 filtered(int t, int o) {
+  int centre = t * kWindow + o + kApron;
+  TapSum s = tapSumBegin();
+#ifdef SL_MOMENT_LOG_FILTER
+  for (int i = -kApron; i <= kApron; ++i) s.big = tapMax(s.big, g_window[centre + i]);
+#endif
+  for (int i = -kApron; i <= kApron; ++i) tapAdd(s, g_window[centre + i], tapWeight(i));
+  return tapSumEnd(s);
+}
+
+// Target t's run, filtered, into `dst` (both loops have constant bounds, so that the compiler
+// unrolls them and the window stays in registers: llvmpipe indexes an array in memory otherwise).
+#define SL_STORE_RUN(t, dst)                                                          \
+  {                                                                                   \
+    vec4 run[SL_BLUR_RUN];                                                            \
+    for (int o = 0; o < SL_BLUR_RUN; ++o) run[o] = filtered(t, o);                    \
+    for (int o = 0; o < SL_BLUR_RUN; ++o)                                             \
+      if (start + o <= last) imageStore(dst, texelAt(start + o, line), run[o]);       \
   }
 
-uniform sampler2DArray u_src0;
-layout(SL_BLUR_FORMAT0, binding = 0) writeonly uniform image2DArray u_dst0;
-#if SL_MOMENT_TARGETS > 1
-uniform sampler2DArray u_src1;
-layout(SL_BLUR_FORMAT1, binding = 1) writeonly uniform image2DArray u_dst1;
-#endif
-#if SL_MOMENT_TARGETS > 2
-uniform sampler2DArray u_src2;
-layout(SL_BLUR_FORMAT2, binding = 2) writeonly uniform image2DArray u_dst2;
-#endif
-#if SL_MOMENT_TARGETS > 3
-uniform sampler2DArray u_src3;
-layout(SL_BLUR_FORMAT3, binding = 3) writeonly uniform image2DArray u_dst3;
-#endif
-#if SL_MOMENT_TARGETS > 4
-uniform sampler2DArray u_src4;
-layout(SL_BLUR_FORMAT4, binding = 4) writeonly uniform image2DArray u_dst4;
-#endif
-#if SL_MOMENT_TARGETS > 5
-uniform sampler2DArray u_src5;
-layout(SL_BLUR_FORMAT5, binding = 5) writeonly uniform image2DArray u_dst5;
-#endif
-#if SL_MOMENT_TARGETS > 6
-uniform sampler2DArray u_src6;
-layout(SL_BLUR_FORMAT6, binding = 6) writeonly uniform image2DArray u_dst6;
-#endif
-#if SL_MOMENT_TARGETS > 7
-uniform sampler2DArray u_src7;
-layout(SL_BLUR_FORMAT7, binding = 7) writeonly uniform image2DArray u_dst7;
-#endif
-
 void main() {
-  int last = textureSize(u_src0, 0).x - 1;
+  int last = textureSize(SL_BLUR_SIZE_OF, 0).x - 1;
   int start = int(gl_GlobalInvocationID.x) * SL_BLUR_RUN;
   int line = int(gl_GlobalInvocationID.y);
   if (start > last || line > last) return;
-  SL_BLUR_RUN_OF(u_src0, u_dst0)
+  fetchWindow(start, line, last);
+  SL_STORE_RUN(0, u_dst0)
 #if SL_MOMENT_TARGETS > 1
-  SL_BLUR_RUN_OF(u_src1, u_dst1)
+  SL_STORE_RUN(1, u_dst1)
 #endif
 #if SL_MOMENT_TARGETS > 2
-  SL_BLUR_RUN_OF(u_src2, u_dst2)
+  SL_STORE_RUN(2, u_dst2)
 #endif
 #if SL_MOMENT_TARGETS > 3
-  SL_BLUR_RUN_OF(u_src3, u_dst3)
+  SL_STORE_RUN(3, u_dst3)
 #endif
 #if SL_MOMENT_TARGETS > 4
-  SL_BLUR_RUN_OF(u_src4, u_dst4)
+  SL_STORE_RUN(4, u_dst4)
 #endif
 #if SL_MOMENT_TARGETS > 5
-  SL_BLUR_RUN_OF(u_src5, u_dst5)
+  SL_STORE_RUN(5, u_dst5)
 #endif
 #if SL_MOMENT_TARGETS > 6
-  SL_BLUR_RUN_OF(u_src6, u_dst6)
+  SL_STORE_RUN(6, u_dst6)
 #endif
 #if SL_MOMENT_TARGETS > 7
-  SL_BLUR_RUN_OF(u_src7, u_dst7)
+  SL_STORE_RUN(7, u_dst7)
 #endif
 }

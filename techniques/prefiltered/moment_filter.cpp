@@ -1,7 +1,8 @@
-// The filter passes of the moment maps: a separable box blur (two compute passes per layer,
-// through a scratch target) or a mip chain built by 2x2 box downsampling. Both filter in log
-// space for ESM (SL_MOMENT_LOG_FILTER) and drop non-finite taps, so one broken texel cannot
-// spread into a lit or black square.
+// The passes that make the moment maps from the shadow pass's depth: the representation's
+// moments of each texel, blurred on the way by a separable box (two compute passes per layer,
+// through a scratch target), or then mip-mapped by 2x2 box downsampling, or summed into a table
+// (moment_sat.cpp). Filters work in log space for ESM (SL_MOMENT_LOG_FILTER) and drop
+// non-finite taps, so one broken texel cannot spread into a lit or black square.
 #include "gl/texture_units.h"
 #include "prefiltered/moment_state.h"
 
@@ -50,9 +51,19 @@ constexpr int kBlurRun = 8;
 }  // namespace
 
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
-                            const std::vector<Texture2D*>& scratch) {
+                            const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique) {
+  const int layers = std::max(depth_.layers(), 1);
+  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
+  for (int l = 0; l < layers; ++l) {
+    // Depth to moments, blurred along rows on the way when the method is a blur; then columns.
+    runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false);
+    if (blurs) runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true);
+  }
   if (config_.method == FilterMethod::Sat) return buildSat(shaders);
-  if (config_.method == FilterMethod::Blur) return blur(shaders, scratch);
+  if (config_.method == FilterMethod::Mipmap) buildMips(shaders, drawFullscreen);
+}
+
+void MomentMapState::buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
   const ProgramSpec spec{
       "moment downsample",
       {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/moment_downsample.frag"}},
@@ -86,40 +97,46 @@ void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>&
   }
 }
 
-// The separable box blur as two compute passes per layer (shaders/passes/moment_blur.comp):
-// rows from the moments into the scratch targets, then columns back. On llvmpipe the blur was
-// two fullscreen fragment passes fetching and checking every tap; an invocation now fetches each
-// texel of its run once (docs/performance.md has the measurement).
-void MomentMapState::blur(ShaderLibrary& shaders, const std::vector<Texture2D*>& scratch) {
-  std::string defines = filterDefines(config_, spec_.logFilter) + "#define SL_BLUR_RUN " + std::to_string(kBlurRun) +
-                        "\n#define SL_BLUR_HALF " + std::to_string(config_.width / 2) + "\n";
-  for (size_t t = 0; t < moments_.size(); ++t)
-    defines += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(moments_[t].format()) + "\n";
-  Program& p = shaders.get({"moment blur", {{GL_COMPUTE_SHADER, "passes/moment_blur.comp"}}, defines});
+// One direction of the box blur as a compute pass (shaders/passes/moment_blur.comp), one layer:
+// from the depth (the first direction, or the plain depth-to-moments step of a box of 1) or from
+// the first direction's scratch targets. On llvmpipe the blur was two fullscreen fragment passes
+// fetching every tap; an invocation now fetches each texel of its run once, and the shadow pass
+// writes depth alone (docs/performance.md has both measured).
+void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
+                                 const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst,
+                                 int layer, bool vertical) {
+  const bool fromDepth = src.front() == &depth_;
+  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
+  std::string prelude = fromDepth ? defines() + "#include \"" + module_ + "\"\n#define SL_BLUR_FROM_DEPTH\n"
+                                  : filterDefines(config_, spec_.logFilter);
+  prelude += "#define SL_BLUR_RUN " + std::to_string(kBlurRun) + "\n#define SL_BLUR_HALF " +
+             std::to_string(blurs ? config_.width / 2 : 0) + "\n";
+  for (size_t t = 0; t < dst.size(); ++t)
+    prelude += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(dst[t]->format()) + "\n";
+  Program& p = shaders.get(
+      {fromDepth ? "moments from depth" : "moment blur", {{GL_COMPUTE_SHADER, "passes/moment_blur.comp"}}, prelude});
   if (!p.valid()) return;
   p.use();
-  if (spec_.logFilter) p.set("u_logExponent", logExponent_);
-  p.set("u_width", static_cast<float>(config_.width));
-  const int size = moments_.front().width();
-  const GLuint runs = static_cast<GLuint>((size + kBlurRun - 1) / kBlurRun);
-  const GLuint lines = static_cast<GLuint>(size);
-  for (int l = 0; l < std::max(depth_.layers(), 1); ++l) {
-    p.set("u_layer", l);
-    for (int vertical = 0; vertical < 2; ++vertical) {
-      const std::vector<const Texture2D*> src = vertical == 0 ? pointers(moments_) : pointers(scratch);
-      const std::vector<const Texture2D*> dst = vertical == 0 ? pointers(scratch) : pointers(moments_);
-      TextureUnits units;
-      bindSources(p, units, src);
-      for (size_t t = 0; t < dst.size(); ++t) {
-        glBindImageTexture(static_cast<GLuint>(t), dst[t]->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, dst[t]->format());
-        p.set("u_dst" + std::to_string(t), static_cast<int>(t));
-      }
-      p.set("u_vertical", vertical);
-      glDispatchCompute((runs + 7) / 8, (lines + 7) / 8, 1);
-      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
+  TextureUnits units;
+  if (fromDepth) {
+    bindTechnique(p, units);  // what representationMoments reads (exponents, quantization)
+    units.bind(p, "u_depth", depth_.id());
+  } else {
+    bindSources(p, units, src);
   }
-  for (size_t t = 0; t < moments_.size(); ++t)
+  if (spec_.logFilter) p.set("u_logExponent", logExponent_);
+  p.set("u_width", static_cast<float>(blurs ? config_.width : 1));
+  p.set("u_layer", layer);
+  p.set("u_vertical", vertical ? 1 : 0);
+  for (size_t t = 0; t < dst.size(); ++t) {
+    glBindImageTexture(static_cast<GLuint>(t), dst[t]->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, dst[t]->format());
+    p.set("u_dst" + std::to_string(t), static_cast<int>(t));
+  }
+  const GLuint size = static_cast<GLuint>(depth_.width());
+  const GLuint runs = (size + kBlurRun - 1) / kBlurRun;
+  glDispatchCompute((runs + 7) / 8, (size + 7) / 8, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  for (size_t t = 0; t < dst.size(); ++t)
     glBindImageTexture(static_cast<GLuint>(t), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
 }
 

@@ -62,11 +62,9 @@ void MomentMapState::allocate(int size, int layers) {
     moments_.push_back(Texture2D::array(format, size, size, layers, levels, "moments " + std::to_string(t)));
   }
   shadowFbos_.clear();
-  std::vector<const Texture2D*> colors;
-  for (const auto& m : moments_) colors.push_back(&m);
   for (int l = 0; l < layers; ++l) {
     shadowFbos_.emplace_back("moment map layer " + std::to_string(l));
-    shadowFbos_.back().attachLayer(colors, &depth_, l);
+    shadowFbos_.back().attachLayer({}, &depth_, l);
   }
 }
 
@@ -88,35 +86,34 @@ void MomentMapState::prepare(int size, int layers) {
 void MomentMapState::beginShadowLayer(int layer) {
   const Framebuffer& fbo = shadowFbos_.at(static_cast<size_t>(layer));
   fbo.bind();
-  for (int t = 0; t < config_.targets(); ++t)
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, t, &clear_[static_cast<size_t>(4 * t)]);
   glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene), *ctx.params) : "";
-  std::string out = ctx.shadowMap;
-  if (config_.width > 1 || config_.method != FilterMethod::Blur) {
-    out = "moments.filtered" + ctx.viewportTag;
-    ShaderLibrary* shaders = ctx.shaders;
-    auto draw = ctx.drawFullscreen;
-    static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
-    const std::string name = names[static_cast<int>(config_.method)];
-    // The blur's first direction lands in scratch targets the frame graph lends for the pass (one
-    // per moments target, of its format and size); mip-maps and tables need none.
-    std::vector<std::string> writes = {out};
-    const std::vector<TextureDesc> descs = scratchTargets();
-    for (size_t t = 0; t < descs.size(); ++t) {
-      writes.push_back("moments.scratch" + std::to_string(t) + ctx.viewportTag);
-      graph.createTexture(writes.back(), descs[t]);
-    }
-    const std::vector<std::string> scratch(writes.begin() + 1, writes.end());
-    graph.add({name + ctx.viewportTag, {ctx.shadowMap}, writes, [this, shaders, draw, &graph, scratch] {
-                 std::vector<Texture2D*> targets;
-                 for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
-                 filter(*shaders, draw, targets);
-               }});
+  // The shadow pass drew depth alone; one pass makes the moments of it, filtered.
+  const std::string out = "moments.filtered" + ctx.viewportTag;
+  ShaderLibrary* shaders = ctx.shaders;
+  auto draw = ctx.drawFullscreen;
+  auto bindTechnique = ctx.bindTechnique;
+  static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
+  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
+  const std::string name =
+      config_.method == FilterMethod::Blur && !blurs ? "prefilter.moments" : names[static_cast<int>(config_.method)];
+  // The blur's first direction lands in scratch targets the frame graph lends for the pass (one
+  // per moments target, of its format and size); mip-maps and tables need none.
+  std::vector<std::string> writes = {out};
+  const std::vector<TextureDesc> descs = scratchTargets();
+  for (size_t t = 0; t < descs.size(); ++t) {
+    writes.push_back("moments.scratch" + std::to_string(t) + ctx.viewportTag);
+    graph.createTexture(writes.back(), descs[t]);
   }
+  const std::vector<std::string> scratch(writes.begin() + 1, writes.end());
+  graph.add({name + ctx.viewportTag, {ctx.shadowMap}, writes, [this, shaders, draw, bindTechnique, &graph, scratch] {
+               std::vector<Texture2D*> targets;
+               for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
+               filter(*shaders, draw, targets, bindTechnique);
+             }});
   addMomentViewPasses(graph, ctx, out, views());
   return out;
 }

@@ -1,8 +1,8 @@
-// The shadow targets of the pre-filtered representations: 1..8 colour texture arrays (a layer
-// per light view, 16- or 32-bit float, with mip levels when filtered by mip-mapping) that the
-// shadow pass writes the representation's moments into, plus the depth array that decides which
-// caster is nearest. After the shadow pass the filter passes blur them (or build their mips);
-// the visibility tests then read them through one bilinear (or trilinear) sampler.
+// The shadow targets of the pre-filtered representations: the depth array the shadow pass draws
+// (the nearest caster, as a depth map's), and 1..8 colour texture arrays (a layer per light view,
+// 16- or 32-bit float, with mip levels when filtered by mip-mapping) that the filter pass fills
+// with the representation's moments of that depth, blurred on the way (or then mip-mapped or
+// summed); the visibility tests read them through one bilinear (or trilinear) sampler.
 #pragma once
 
 #include "gl/gl_util.h"
@@ -33,7 +33,8 @@ struct MomentConfig {
 
 class MomentMapState : public RepresentationState {
  public:
-  explicit MomentMapState(const MomentSpec& spec) : spec_(spec) {}
+  // module: the representation's GLSL module (representationMoments), for the depth-to-moments pass.
+  MomentMapState(const MomentSpec& spec, std::string module) : spec_(spec), module_(std::move(module)) {}
   ~MomentMapState() override;
   void configure(const ParamSet& params) override;
   void prepare(int size, int layers) override;
@@ -48,13 +49,15 @@ class MomentMapState : public RepresentationState {
   // A fixed filter width is no penumbra: in an area-light scene it says it ignores the radius.
   std::string status() const override { return status_; }
 
-  // Runs the filter passes now (blur or mips), as the frame graph's pass does.
   // What the blur's first direction writes: one target like each moments target (level 0 only);
   // none for mip-maps and summed-area tables. The frame graph lends them (transient textures).
   std::vector<TextureDesc> scratchTargets() const;
-  // scratch: the targets of scratchTargets() (lent by the graph).
+  // Sets the technique's uniforms on a program that includes the representation's module.
+  using TechniqueBinder = std::function<void(const Program&, TextureUnits&)>;
+  // Runs the passes that make the moments from the depth now (with the blur, mips or table), as
+  // the frame graph's pass does. scratch: the targets of scratchTargets() (lent by the graph).
   void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
-              const std::vector<Texture2D*>& scratch);
+              const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique);
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
@@ -64,8 +67,12 @@ class MomentMapState : public RepresentationState {
   void allocate(int size, int layers);
   std::string statusIn(const SceneEffects& fx, const ParamSet& params) const;
   void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
-  void blur(ShaderLibrary& shaders, const std::vector<Texture2D*>& scratch);  // moment_filter.cpp
+  void buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
+  void runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
+                   const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst, int layer,
+                   bool vertical);
   const MomentSpec& spec_;
+  std::string module_;
   MomentConfig config_;
   std::vector<float> clear_;
   std::string defines_;

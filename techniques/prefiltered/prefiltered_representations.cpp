@@ -35,8 +35,11 @@ class PrefilteredRepresentation : public Representation {
   std::string help() const override { return help_; }
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
-  CasterDraw casterDraw() const override { return {"passes/shadow_moments.frag"}; }
-  std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<MomentMapState>(spec_); }
+  // Depth alone, as a depth map's: the filter pass makes the moments (moment_filter.cpp).
+  CasterDraw casterDraw() const override { return {}; }
+  std::unique_ptr<RepresentationState> createState() const override {
+    return std::make_unique<MomentMapState>(spec_, module_);
+  }
 
  private:
   std::string id_, help_, module_;
