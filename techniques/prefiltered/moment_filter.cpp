@@ -52,14 +52,14 @@ constexpr int kBlurRun = 8;
 
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                             const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique) {
-  const int layers = std::max(depth_.layers(), 1);
   const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
-  for (int l = 0; l < layers; ++l) {
-    // Depth to moments, blurred along rows on the way when the method is a blur; then columns.
-    runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false);
-    if (blurs) runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true);
-  }
-  if (config_.method == FilterMethod::Sat) return buildSat(shaders);
+  if (!momentsInShadowPass())
+    for (int l = 0; l < std::max(depth_.layers(), 1); ++l) {
+      // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
+      runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false);
+      if (blurs) runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true);
+    }
+  if (config_.method == FilterMethod::Sat) buildSat(shaders);
   if (config_.method == FilterMethod::Mipmap) buildMips(shaders, drawFullscreen);
 }
 

@@ -62,9 +62,12 @@ void MomentMapState::allocate(int size, int layers) {
     moments_.push_back(Texture2D::array(format, size, size, layers, levels, "moments " + std::to_string(t)));
   }
   shadowFbos_.clear();
+  std::vector<const Texture2D*> colors;
+  if (momentsInShadowPass())
+    for (const auto& m : moments_) colors.push_back(&m);
   for (int l = 0; l < layers; ++l) {
     shadowFbos_.emplace_back("moment map layer " + std::to_string(l));
-    shadowFbos_.back().attachLayer({}, &depth_, l);
+    shadowFbos_.back().attachLayer(colors, &depth_, l);
   }
 }
 
@@ -86,6 +89,9 @@ void MomentMapState::prepare(int size, int layers) {
 void MomentMapState::beginShadowLayer(int layer) {
   const Framebuffer& fbo = shadowFbos_.at(static_cast<size_t>(layer));
   fbo.bind();
+  if (momentsInShadowPass())
+    for (int t = 0; t < config_.targets(); ++t)
+      glClearNamedFramebufferfv(fbo.id(), GL_COLOR, t, &clear_[static_cast<size_t>(4 * t)]);
   glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 

@@ -62,6 +62,11 @@ class MomentMapState : public RepresentationState {
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
   const std::vector<float>& clearValue() const { return clear_; }
+  // The soft representations' shadow pass writes the moments of every caster fragment itself
+  // (passes/shadow_moments.frag): their summed-area tables sum rows serially, and taking the
+  // moments in a pass of their own measured slower there (docs/performance.md). The others'
+  // shadow pass draws depth alone and the filter pass takes the moments of each texel once.
+  bool momentsInShadowPass() const { return spec_.soft(); }
 
  private:
   void allocate(int size, int layers);
