@@ -77,6 +77,23 @@ TEST(FigureCli, AllWritesEveryStepAndThePlot) {
   EXPECT_NE(text.find("lispsm"), std::string::npos);
 }
 
+// --check prints each claim with both numbers and fails (5) when one does not hold: standard
+// cannot have a thousandth of uniform's wrong pixels, and uniform is not better than standard.
+TEST(FigureCli, CheckReportsClaimsAndFailsOnOneThatDoesNotHold) {
+  const std::string tour = writeTour("figure_claims.json", R"({"title": "t", "steps": [
+    {"title": "fit", "scene": "basic", "camera": {"position": [1.5, 3.2, 2.4], "target": [0.7, 0.2, 0.3]},
+     "viewports": [{"technique": "uniform", "set": ["shadowmap.size=256"]},
+                   {"technique": "standard", "set": ["shadowmap.size=256"]}],
+     "claims": [{"better": 2, "than": 1}, {"better": 2, "than": 1, "factor": 1000}]}]})");
+  const TourRunResult r = runTour("figure --tour " + tour + " --step 1 --size 160x90 --check --out " +
+                                  ::testing::TempDir() + "figure_claims.png");
+  EXPECT_EQ(r.code, 5) << r.output;
+  EXPECT_NE(r.output.find("viewport 2 (standard)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("claimed 1x fewer, holds"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("claimed 1000x fewer, does NOT hold"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 claim(s) do not hold"), std::string::npos) << r.output;
+}
+
 TEST(FigureCli, BadInputIsAClearError) {
   const std::string tour = writeTour("figure_bad.json", kTwoSteps);
   TourRunResult r = runTour("figure --tour " + tour + " --step 3 --out /tmp/never.png");

@@ -126,6 +126,40 @@ TEST(TourParse, StructuralErrors) {
                 {"light", "elevation"});
 }
 
+TEST(TourParse, ClaimsNameTheirViewportsAndMetric) {
+  const Tour t = parseTour(tourWith(R"({"title": "a", "viewports": ["uniform", "standard"], "frames": [1, 5],
+      "claims": [{"better": 2, "than": 1, "factor": 2, "metric": "false_light"}, {"converges": 1}]})"),
+                           "lecture.json");
+  ASSERT_EQ(t.steps[0].claims.size(), 2u);
+  EXPECT_EQ(t.steps[0].claims[0].kind, TourClaim::Kind::Better);
+  EXPECT_EQ(t.steps[0].claims[0].viewport, 2);
+  EXPECT_EQ(t.steps[0].claims[0].than, 1);
+  EXPECT_EQ(t.steps[0].claims[0].factor, 2.0);
+  EXPECT_EQ(t.steps[0].claims[0].metric, TourClaim::Metric::FalseLight);
+  EXPECT_EQ(t.steps[0].claims[1].kind, TourClaim::Kind::Converges);
+  const std::string two = R"({"title": "a", "viewports": ["uniform", "standard"], "claims": [)";
+  expectMessage(parseError(tourWith(two + R"({"better": 3, "than": 1}]})")), {"claims[0].better", "3"});
+  expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 1}]})")), {"claims[0].than", "itself"});
+  expectMessage(parseError(tourWith(two + R"({"better": 1}]})")), {"claims[0]", "'than'"});
+  expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 2, "metric": "psnr"}]})")),
+                {"claims[0].metric", "psnr"});
+  expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 2, "factor": 0.5}]})")),
+                {"claims[0].factor", "[1, 1000]"});
+  expectMessage(parseError(tourWith(two + R"({"converges": 1}]})")), {"claims", "two frame counts"});
+  expectMessage(parseError(tourWith(two + R"({"converges": 1, "better": 2}]})")), {"claims[0]", "either"});
+}
+
+TEST(TourParse, ErrorViewIsOfferedByEveryTechniqueAndPlotPointIsAShare) {
+  const Tour t = parseTour(tourWith(R"({"title": "a", "scene": "overlap", "viewports": [{"technique": "vsm",
+      "views": ["error"]}], "plot": {"kind": "visibility", "techniques": ["vsm"], "point": [0.25, 0.75]}})"),
+                           "lecture.json");
+  EXPECT_EQ(t.steps[0].viewports[0].views, std::vector<std::string>{"error"});
+  EXPECT_EQ(t.steps[0].plot.point, glm::vec2(0.25f, 0.75f));
+  const std::string plot = R"({"title": "a", "viewports": ["vsm"], "plot": {"kind": "visibility", "techniques": ["vsm"], )";
+  expectMessage(parseError(tourWith(plot + R"("point": [0.5, 1.5]}})")), {"plot.point", "[0, 1]"});
+  expectMessage(parseError(tourWith(plot + R"("point": [0.5, 0.5], "pixel": [3, 4]}})")), {"plot.point", "not both"});
+}
+
 TEST(TourParse, PlannedTechniqueMarksTheStepNotBuilt) {
   const Tour t = parseTour(
       tourWith(

@@ -1,6 +1,7 @@
 // `shadowlab figure`: renders tour steps headless as figures (tour/figure.h), one PNG per step,
 // plus an SVG beside it for a step with a plot (the plot drawn under the panels, tour/step_plot.h).
 #include "cli/args.h"
+#include "tour/tour_claims.h"
 #include "cli/commands.h"
 #include "gl/gl_util.h"
 #include "gl/headless_context.h"
@@ -20,20 +21,21 @@ namespace fs = std::filesystem;
 
 const char* kFigureUsage =
     "usage: shadowlab figure --tour T.json (--step N --out F.png | --all --out DIR) [--size WxH]\n"
-    "                        [--aspect W:H]\n"
+    "                        [--aspect W:H] [--check]\n"
     "  renders tour steps headless for slides: every viewport and its debug views (for each frame\n"
     "  count of the step) in a grid whose figure comes closest to --aspect (default 16:9), title and\n"
     "  caption burnt in, text at least 1/40 of the figure's height. N counts from 1; --size is one\n"
     "  panel (default 480x270). --all writes DIR/step-01.png ...; a step with a plot draws it under\n"
-    "  the panels at full width and also writes it as F.svg.\n";
+    "  the panels at full width and also writes it as F.svg. --check also checks each step's claims\n"
+    "  (docs/tour-format.md) against the ray-traced reference at the panel size, prints them, and\n"
+    "  exits with 5 when one does not hold.\n";
 
 // "16:9" or "1.78": a finite width / height ratio between 1/8 and 8.
 float parseAspect(const std::string& text) {
   float w = 0, h = 1;
   char extra = 0;
-  const bool ok = text.find(':') != std::string::npos
-                      ? std::sscanf(text.c_str(), "%f:%f%c", &w, &h, &extra) == 2
-                      : std::sscanf(text.c_str(), "%f%c", &w, &extra) == 1;
+  const bool ok = text.find(':') != std::string::npos ? std::sscanf(text.c_str(), "%f:%f%c", &w, &h, &extra) == 2
+                                                      : std::sscanf(text.c_str(), "%f%c", &w, &extra) == 1;
   const float a = ok && h > 0 ? w / h : 0.0f;
   if (!std::isfinite(a) || a < 0.125f || a > 8.0f)
     throw ArgError("--aspect " + text + ": expected W:H (e.g. 16:9) or a ratio between 0.125 and 8");
@@ -49,7 +51,7 @@ int runFigureCommand(int argc, char** argv) {
       return 0;
     }
   try {
-    Args args(argc, argv, 2, {"--tour", "--step", "--out", "--size", "--aspect", "--shaders"}, {"--all"});
+    Args args(argc, argv, 2, {"--tour", "--step", "--out", "--size", "--aspect", "--shaders"}, {"--all", "--check"});
     if (!args.has("--tour")) throw ArgError("--tour T.json is required");
     if (!args.has("--out")) throw ArgError("--out is required");
     if (args.has("--all") == args.has("--step")) throw ArgError("give either --step N or --all");
@@ -74,6 +76,7 @@ int runFigureCommand(int argc, char** argv) {
     }
 
     long long nonfinite = 0;
+    int claimsFailed = 0;
     std::vector<std::string> errors;
     {
       HeadlessContext context;
@@ -93,6 +96,12 @@ int runFigureCommand(int argc, char** argv) {
         std::cout << "figure: " << png << " (" << describeStep(tour, step) << ", " << r.panels << " panels"
                   << (tour.steps[step].built() ? "" : ", not built yet") << ")\n";
         if (!r.plot.empty()) writePlotSvg(r.plot, fs::path(png).replace_extension(".svg").string());
+        if (args.has("--check"))
+          for (const ClaimCheck& c :
+               checkStepClaims(tour, step, shaders, options.panelWidth, options.panelHeight, "")) {
+            std::cout << "claim: " << describeStep(tour, step) << ": " << c.text << "\n";
+            claimsFailed += c.holds ? 0 : 1;
+          }
       }
       errors = shaders.errors();
     }
@@ -101,6 +110,10 @@ int runFigureCommand(int argc, char** argv) {
     if (nonfinite > 0) {
       std::cerr << "figure: " << nonfinite << " non-finite visibility pixels\n";
       return 4;
+    }
+    if (claimsFailed > 0) {
+      std::cerr << "figure: " << claimsFailed << " claim(s) do not hold\n";
+      return 5;
     }
     return 0;
   } catch (const ArgError& e) {

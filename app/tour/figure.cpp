@@ -2,6 +2,7 @@
 // uses, with a still camera, and each captured frame's images are copied into one CPU image.
 #include "tour/figure.h"
 
+#include "bench/reference_cache.h"
 #include "explorer/explorer_state.h"
 #include "gl/shader_library.h"
 #include "part/colour_key.h"
@@ -31,8 +32,8 @@ struct Panel {
 
 struct FigureLayout {
   int margin = 12, panelW = 0, panelH = 0, cellW = 0, cellH = 0, headerH = 0, gridTop = 0, keyH = 0;
-  int plotW = 0, plotH = 0;      // the step's plot under the grid, full width (0: none)
-  int cols = 0, gridRows = 0;    // the grid of cells: every panel of every captured frame
+  int plotW = 0, plotH = 0;       // the step's plot under the grid, full width (0: none)
+  int cols = 0, gridRows = 0;     // the grid of cells: every panel of every captured frame
   std::vector<glm::ivec2> slots;  // grid column and row of cell i (capture row * panels + panel)
   int width = 0, height = 0;
   std::vector<std::string> captionLines;
@@ -53,7 +54,10 @@ std::vector<Panel> panelsOf(const TourStep& s) {
       continue;
     }
     panels.push_back({v, "", false, name});
-    for (const auto& view : vp.views) panels.push_back({v, view, false, name + " \xC2\xB7 " + view});
+    // With one viewport its name is the colour panel's title; the views are named alone, so that
+    // the frame count after them is not cut off.
+    const std::string prefix = s.viewports.size() == 1 ? "" : name + " \xC2\xB7 ";
+    for (const auto& view : vp.views) panels.push_back({v, view, false, prefix + view});
   }
   return panels;
 }
@@ -87,7 +91,8 @@ std::vector<glm::ivec2> viewportColumns(const std::vector<Panel>& panels, int fr
     for (size_t c = 0; c < panels.size(); ++c) {
       below = c > 0 && panels[c].viewport == panels[c - 1].viewport ? below + 1 : 0;
       const int column = static_cast<int>(panels[c].viewport);
-      slots.push_back(framesAcross ? glm::ivec2(f * viewports + column, below) : glm::ivec2(column, f * tallest + below));
+      slots.push_back(framesAcross ? glm::ivec2(f * viewports + column, below)
+                                   : glm::ivec2(column, f * tallest + below));
     }
   }
   return slots;
@@ -133,8 +138,8 @@ FigureLayout layOut(const TourStep& s, const std::vector<Panel>& panels, const F
   };
   FigureLayout best;
   double bestMiss = 1e30;
-  for (auto slots : {readingOrder(cells, perFrame), viewportColumns(panels, frames, true),
-                     viewportColumns(panels, frames, false)}) {
+  for (auto slots :
+       {readingOrder(cells, perFrame), viewportColumns(panels, frames, true), viewportColumns(panels, frames, false)}) {
     FigureLayout l = layOutGrid(s, panels, fonts, o, std::move(slots));
     if (miss(l) < bestMiss - 1e-9) bestMiss = miss(l), best = std::move(l);
   }
@@ -194,14 +199,17 @@ std::string frameSuffix(const TourStep& s, int frames) {
 // Copies one capture (a row) of every panel from the viewports' textures.
 void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fonts, const TourStep& s,
                 const std::vector<Panel>& panels, const std::vector<std::unique_ptr<Viewport>>& vps, int row,
-                int frames) {
+                int frames, const ReferenceImage* reference) {
   const int body = fonts.lineHeight(FigureFonts::Style::Body);
   for (size_t c = 0; c < panels.size(); ++c) {
     const Panel& p = panels[c];
     const glm::ivec2 at = l.cell(row * static_cast<int>(panels.size()) + static_cast<int>(c));
     const int x = at.x, y = at.y;
-    fonts.draw(out.image, x, y, fitted(fonts, p.title + frameSuffix(s, frames), l.panelW), FigureFonts::Style::Body,
-               kText);
+    // The name gives way to the frame count: cut the name, never the count after it.
+    const std::string suffix = frameSuffix(s, frames);
+    const std::string title =
+        fitted(fonts, p.title, l.panelW - fonts.width(suffix, FigureFonts::Style::Body)) + suffix;
+    fonts.draw(out.image, x, y, fitted(fonts, title, l.panelW), FigureFonts::Style::Body, kText);
     const int iy = y + body;
     if (p.placeholder) {
       out.image.fillRect(x, iy, l.panelW, l.panelH, {0.18f, 0.18f, 0.2f});
@@ -209,9 +217,13 @@ void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fon
       continue;
     }
     const Viewport& vp = *vps[p.viewport];
-    const Texture2D* tex = p.view.empty() ? vp.colorTexture() : vp.viewTexture(p.view);
-    if (!tex) throw std::runtime_error("view '" + p.view + "' was not drawn");
-    out.image.blitBottomUp(tex->readRgba8(), l.panelW, l.panelH, x, iy);
+    if (p.view == kErrorView) {
+      out.image.blitBottomUp(viewportErrorImage(vp, *reference), l.panelW, l.panelH, x, iy);
+    } else {
+      const Texture2D* tex = p.view.empty() ? vp.colorTexture() : vp.viewTexture(p.view);
+      if (!tex) throw std::runtime_error("view '" + p.view + "' was not drawn");
+      out.image.blitBottomUp(tex->readRgba8(), l.panelW, l.panelH, x, iy);
+    }
     ++out.panels;
     if (!p.view.empty()) {
       if (const ColourKey* key = gradientKey(p.view))
@@ -256,12 +268,24 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
   for (size_t v = 0; v < s.viewports.size(); ++v) {
     if (!findPreset(s.viewports[v].technique)) continue;
     vps[v] = std::make_unique<Viewport>(makeTechnique(s.viewports[v].technique, s.viewports[v].overrides));
-    vps[v]->shownViews = s.viewports[v].views;
+    for (const std::string& view : s.viewports[v].views)
+      if (view != kErrorView) vps[v]->shownViews.push_back(view);
     shown.push_back(vps[v].get());
   }
   if (!shown.empty()) {
     Renderer renderer(shaders);
     renderer.setScene(scene);
+    // The error view's truth: the scene traced once for the still camera.
+    std::unique_ptr<ReferenceImage> reference;
+    for (const Panel& p : panels)
+      if (p.view == kErrorView && !reference) {
+        FrameInput in;
+        in.camera = camera;
+        in.width = l.panelW;
+        in.height = l.panelH;
+        ReferenceCache cache(scene, ReferenceSettings{});
+        reference = std::make_unique<ReferenceImage>(cache.forFrame(renderer, in));
+      }
     size_t row = 0;
     for (int f = 1; f <= s.frames.back(); ++f) {
       FrameInput in;
@@ -270,11 +294,11 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
       in.height = l.panelH;
       in.cut = f == 1;
       renderer.render(in, shown);
-      if (f == s.frames[row]) captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row++), f);
+      if (f == s.frames[row]) captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row++), f, reference.get());
     }
   } else {
     for (size_t row = 0; row < s.frames.size(); ++row)
-      captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row), s.frames[row]);
+      captureRow(out, l, *fonts, s, panels, vps, static_cast<int>(row), s.frames[row], nullptr);
   }
   const int body = fonts->lineHeight(FigureFonts::Style::Body);
   int y = l.gridTop + l.gridRows * l.cellH;

@@ -5,10 +5,19 @@
 #include "plot/visibility_plot_data.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace sl {
 namespace {
+
+// The plot's pixel at a panel of width x height: "point" is a share of the panel, so that the
+// plot shows the same place at any size; else "pixel" as given (-1: the centre).
+glm::ivec2 stepPlotPixel(const TourPlot& p, int width, int height) {
+  if (p.point.x < 0.0f) return p.pixel;
+  return {static_cast<int>(std::lround(p.point.x * float(width - 1))),
+          static_cast<int>(std::lround(p.point.y * float(height - 1)))};
+}
 
 // Overrides every viewport of the step shares (a filter width, say) hold for the plotted
 // techniques too, so the plot shows what the panels show.
@@ -49,6 +58,7 @@ std::string stepSeriesLabel(const TourStep& s, const std::string& spec) {
 Plot stepPlot(const Tour& tour, size_t step, const Scene& scene, const Camera& camera, ShaderLibrary& shaders,
               int width, int height) {
   const TourStep& s = tour.steps.at(step);
+
   try {
     if (s.plot.kind == TourPlot::Kind::Dpds) {
       std::vector<std::string> specs = s.plot.techniques;
@@ -63,7 +73,7 @@ Plot stepPlot(const Tour& tour, size_t step, const Scene& scene, const Camera& c
                                           .overrides = sharedOverrides(s),
                                           .width = width,
                                           .height = height,
-                                          .pixel = s.plot.pixel};
+                                          .pixel = stepPlotPixel(s.plot, width, height)};
       return visibilityPlot(shaders, scene, camera, request);
     }
   } catch (const std::exception& e) {

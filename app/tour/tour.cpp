@@ -64,8 +64,13 @@ TourCamera parseCamera(const JsonReader& r, const json& j, const std::string& wh
   return c;
 }
 
-// The debug views a technique offers, from its part states (no GL needed to ask).
-std::vector<std::string> offeredViews(const Technique& t) { return Viewport(t).availableViews(); }
+// The debug views a technique offers, from its part states (no GL needed to ask), and "error"
+// (kErrorView: the difference to the ray-traced reference, which every viewport can show).
+std::vector<std::string> offeredViews(const Technique& t) {
+  std::vector<std::string> views = Viewport(t).availableViews();
+  views.push_back(kErrorView);
+  return views;
+}
 
 TourViewport parseViewport(const JsonReader& r, const json& j, const std::string& where,
                            const std::vector<std::string>& planned, std::vector<std::string>& missing) {
@@ -124,7 +129,7 @@ std::vector<int> parseFrames(const JsonReader& r, const json& j, const std::stri
 }
 
 TourPlot parsePlot(const JsonReader& r, const json& j, const std::string& where) {
-  r.checkKeys(j, where, {"kind", "techniques", "pixel"});
+  r.checkKeys(j, where, {"kind", "techniques", "pixel", "point"});
   TourPlot p;
   const json* k = JsonReader::find(j, "kind");
   if (!k) r.fail(where, "missing 'kind' (dpds or visibility)");
@@ -148,11 +153,53 @@ TourPlot parsePlot(const JsonReader& r, const json& j, const std::string& where)
     if (!px->is_array() || px->size() != 2) r.expected(where + ".pixel", "[x, y]", *px);
     p.pixel = {r.integer((*px)[0], where + ".pixel[0]", 0, 8192), r.integer((*px)[1], where + ".pixel[1]", 0, 8192)};
   }
+  if (const json* pt = JsonReader::find(j, "point")) {
+    if (p.kind != TourPlot::Kind::Visibility) r.fail(where + ".point", "only a visibility plot has a point");
+    if (JsonReader::find(j, "pixel")) r.fail(where + ".point", "give either 'pixel' or 'point', not both");
+    const std::vector<float> f = r.numbers(*pt, where + ".point", 2, false);
+    for (float v : f)
+      if (!(v >= 0.0f && v <= 1.0f)) r.fail(where + ".point", "shares of the panel's width and height, in [0, 1]");
+    p.point = {f[0], f[1]};
+  }
   return p;
 }
 
-const std::vector<std::string> kStepKeys = {"title",     "caption", "scene", "camera",  "light",
-                                            "viewports", "frames",  "plot",  "requires"};
+// {"better": i, "than": j, "factor": f} or {"converges": i, "factor": f}; i, j: viewports from 1.
+TourClaim parseClaim(const JsonReader& r, const json& j, const std::string& where, int viewports) {
+  r.checkKeys(j, where, {"better", "than", "converges", "factor", "metric"});
+  TourClaim c;
+  const json* better = JsonReader::find(j, "better");
+  const json* converges = JsonReader::find(j, "converges");
+  if (!better == !converges) r.fail(where, "a claim is either {\"better\": i, \"than\": j} or {\"converges\": i}");
+  if (better) {
+    c.viewport = r.integer(*better, where + ".better", 1, viewports);
+    const json* than = JsonReader::find(j, "than");
+    if (!than) r.fail(where, "missing 'than' (the viewport it is better than)");
+    c.than = r.integer(*than, where + ".than", 1, viewports);
+    if (c.than == c.viewport) r.fail(where + ".than", "a viewport cannot be better than itself");
+  } else {
+    c.kind = TourClaim::Kind::Converges;
+    c.viewport = r.integer(*converges, where + ".converges", 1, viewports);
+    if (JsonReader::find(j, "than")) r.fail(where + ".than", "only a 'better' claim has 'than'");
+  }
+  if (const json* m = JsonReader::find(j, "metric")) {
+    const std::string metric = r.string(*m, where + ".metric");
+    if (metric == "false_light")
+      c.metric = TourClaim::Metric::FalseLight;
+    else if (metric == "false_shadow")
+      c.metric = TourClaim::Metric::FalseShadow;
+    else if (metric != "wrong")
+      r.fail(where + ".metric", "unknown metric '" + metric + "' (wrong, false_light, false_shadow)");
+  }
+  if (const json* f = JsonReader::find(j, "factor")) {
+    c.factor = r.number(*f, where + ".factor");
+    if (!(c.factor >= 1.0 && c.factor <= 1000.0)) r.fail(where + ".factor", "must be in [1, 1000]");
+  }
+  return c;
+}
+
+const std::vector<std::string> kStepKeys = {"title",     "caption", "scene", "camera", "light",
+                                            "viewports", "frames",  "plot",  "claims", "requires"};
 
 TourStep parseStep(const JsonReader& r, const json& j, const std::string& where) {
   r.checkKeys(j, where, kStepKeys);
@@ -180,6 +227,15 @@ TourStep parseStep(const JsonReader& r, const json& j, const std::string& where)
         parseViewport(r, (*vps)[i], where + ".viewports[" + std::to_string(i) + "]", planned, s.missing));
   if (const json* f = JsonReader::find(j, "frames")) s.frames = parseFrames(r, *f, where + ".frames");
   if (const json* p = JsonReader::find(j, "plot")) s.plot = parsePlot(r, *p, where + ".plot");
+  if (const json* c = JsonReader::find(j, "claims")) {
+    if (!c->is_array()) r.expected(where + ".claims", "an array of claims", *c);
+    for (size_t i = 0; i < c->size(); ++i)
+      s.claims.push_back(
+          parseClaim(r, (*c)[i], where + ".claims[" + std::to_string(i) + "]", static_cast<int>(s.viewports.size())));
+    for (const TourClaim& claim : s.claims)
+      if (claim.kind == TourClaim::Kind::Converges && s.frames.size() < 2)
+        r.fail(where + ".claims", "a 'converges' claim needs at least two frame counts in 'frames'");
+  }
   return s;
 }
 

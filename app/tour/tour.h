@@ -20,6 +20,11 @@ class TourError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The view every viewport may list: its visibility against the ray-traced reference (grey agree,
+// orange false shadow, blue false light; app/metrics errorImage), as the explorer's accuracy
+// panel and figures draw it.
+constexpr const char* kErrorView = "error";
+
 struct TourViewport {
   std::string technique;               // preset id (possibly a planned one, see TourStep::missing)
   std::vector<std::string> overrides;  // "key=value", validated against the preset's declarations
@@ -44,6 +49,24 @@ struct TourPlot {
   Kind kind = Kind::None;
   std::vector<std::string> techniques;  // dpds: "preset[:key=v;key=v]"; visibility: pre-filtered presets
   glm::ivec2 pixel{-1, -1};             // visibility: screen pixel from the bottom left (-1: centre)
+  glm::vec2 point{-1.0f, -1.0f};        // or that pixel as shares of the panel's width and height (any size)
+};
+
+// A comparison the step's caption makes, checked against the ray-traced reference (wrong pixels,
+// or false light or shadow, app/metrics) by TourClaims tests and `shadowlab figure --check`:
+// - Better: viewport `viewport` has at most 1/factor of viewport `than`'s wrong pixels at the
+//   step's last frame (viewports numbered from 1, as in figures);
+// - Converges: viewport `viewport` has at most 1/factor of its own wrong pixels at the step's
+//   first captured frame by its last.
+struct TourClaim {
+  enum class Kind { Better, Converges };
+  // What is counted: wrong pixels, or only those lit where the truth is shadowed (leaks), or only
+  // those shadowed where it is lit ("metric": "wrong", "false_light", "false_shadow").
+  enum class Metric { Wrong, FalseLight, FalseShadow };
+  Kind kind = Kind::Better;
+  Metric metric = Metric::Wrong;
+  int viewport = 1, than = 0;
+  double factor = 1.0;
 };
 
 struct TourStep {
@@ -55,6 +78,7 @@ struct TourStep {
   std::vector<TourViewport> viewports;
   std::vector<int> frames{1};  // still-camera frame counts captured (increasing, >= 1)
   TourPlot plot;
+  std::vector<TourClaim> claims;
   // Planned presets this step names that the registry does not have yet ("requires"): the step
   // is kept, not rendered, and its caption says so.
   std::vector<std::string> missing;
