@@ -255,6 +255,42 @@ TEST(ExplorerSmoke, RealKeyEventsDriveShortcutsAndTourStages) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue #26: Return did not close a Ctrl+click edit box. Dear ImGui 1.86 reads keys as held
+// state at each frame, so a tap that fell between two frames (12 fps on llvmpipe) was lost; the
+// recorder now holds a release back until ImGui has seen the key down. Ctrl+click bias.slope of
+// viewport 1 (its slider at 138,643 of the 1280x720 window with default settings), type 3,
+// Return: the box closes (Ctrl+Q then quits; an open box would take it as text) and the value
+// reaches the parameters (the settings file written on exit).
+TEST(ExplorerSmoke, ReturnClosesACtrlClickEditBoxAtALowFrameRate) {
+  if (!onPath("xvfb-run") || !onPath("xdotool"))
+    GTEST_SKIP() << "xvfb-run or xdotool is not on PATH (apt install xvfb xdotool); explorer not run";
+  const std::string dir = testing::TempDir() + "shadowlab-return-" + std::to_string(getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string settings = dir + "/settings.json", log = dir + "/explorer.log";
+  const std::string explorer = shellQuote(SHADOWLAB_BINARY) + " --size 1280x720 --frames 100000 --settings " +
+                               shellQuote(settings) + " >" + shellQuote(log) + " 2>&1 &";
+  const std::string keys =
+      "pid=$!; wid=$(timeout 60 xdotool search --sync --onlyvisible --name 'shadowlab explorer' | head -n1); "
+      "[ -n \"$wid\" ] || { echo 'no explorer window'; kill $pid; exit 1; }; "
+      "xdotool mousemove --window \"$wid\" 600 150; xdotool windowfocus --sync \"$wid\" || true; sleep 2; "
+      "xdotool mousemove --window \"$wid\" 138 643; sleep 0.5; "
+      "xdotool keydown ctrl; xdotool click 1; xdotool keyup ctrl; sleep 0.5; xdotool type 3; sleep 0.5; "
+      "xdotool key Return; sleep 1; xdotool mousemove --window \"$wid\" 600 300; sleep 0.5; "
+      "xdotool key ctrl+q; sleep 5; kill $pid 2>/dev/null && echo 'still running'; wait $pid; echo \"explorer exit $?\"";
+  const CommandResult r =
+      runCommand("timeout 180 xvfb-run -a -s '-screen 0 1280x720x24' sh -c " + shellQuote(explorer + " " + keys));
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(r.output.find("still running"), std::string::npos) << "Ctrl+Q was typed into the box: Return left it open\n"
+                                                               << r.output << output;
+  ASSERT_NE(r.output.find("explorer exit 0"), std::string::npos) << r.output << output;
+  std::ifstream saved(settings);
+  const std::string text((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"bias.slope\": 3"), std::string::npos) << "bias.slope=3 not in the settings: " << text;
+  std::filesystem::remove_all(dir);
+}
+
 // Issue #23: presenter mode stayed a 1280x720 window in the corner of a 1920x1080 screen. It now
 // fills the display the window is on (here Xvfb's one screen), and a --monitor past the last
 // display is a clear error before any window opens.

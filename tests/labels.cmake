@@ -26,7 +26,7 @@ set(_explorer_suites ExplorerSmoke TourPlayer)
 set(_real_regex "Real|[Ss]ponza|/tree|/engine|\"tree\"|\"engine\"")
 # Measured over 10 s in the normal build (scripts/test.sh prints every test's time); the
 # every-preset sweeps on Sponza are labelled where CMakeLists.txt adds them.
-set(_slow_regex "^ExplorerSmoke\\.(ShortSoak|BrokenAccumulation|RealKeyEvents)")
+set(_slow_regex "^ExplorerSmoke\\.(ShortSoak|BrokenAccumulation|RealKeyEvents|ReturnCloses)")
 # (ctest's names of parameterised tests end in "  # GetParam() = ...": no '$' anchors.)
 set(_smoke_regex "^Render\\.OnlyShownViewsCostAPass|^Scenes/Golden\\.RendersAsBefore/basic__(standard|pcf|pixel_correct) ")
 

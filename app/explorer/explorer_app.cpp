@@ -260,6 +260,7 @@ void FrameLoop::beginUi(double now) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
+  releaseKeysSeenDown();
   handleShortcuts(state);
   if (state.quitRequested) glfwSetWindowShouldClose(window, GLFW_TRUE);  // seen at the next frame's start
   tour.handleKeys(state, renderer);

@@ -53,8 +53,10 @@ void setUpExplorerImGui(GLFWwindow* window, float uiScale) {
   style.ItemSpacing = ImVec2(8, 5);
   style.Colors[ImGuiCol_PlotHistogram] = ImVec4(0.30f, 0.62f, 0.95f, 1.0f);  // timing bars
 
-  installKeyPressRecorder(window);  // first: the backend chains to the callback it finds
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  // After the backend: the recorder sees each key first and hands it on to the backend's
+  // callback, holding back a release ImGui has not yet seen pressed (shortcuts.cpp).
+  installKeyPressRecorder(window);
   ImGui_ImplOpenGL3_Init("#version 450");
   applyUiScale(uiScale);  // loads the font (16 px x scale)
 }

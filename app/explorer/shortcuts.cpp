@@ -48,8 +48,26 @@ struct KeyPress {
 std::vector<KeyPress> g_presses;  // since the last clearKeyPresses (one window per process)
 GLFWkeyfun g_previousKeyCallback = nullptr;
 
+// Dear ImGui 1.86 reads keys as held-down state at NewFrame: a key pressed and released between
+// two frames (a quick tap at 12 fps on llvmpipe, or xdotool) was never seen, so Return did not
+// close a Ctrl+click edit box. Its release waits until ImGui has seen it down for one frame.
+struct HeldKey {
+  GLFWwindow* window;
+  int key, scancode, mods;
+};
+std::vector<int> g_downThisFrame;     // pressed since the last NewFrame
+std::vector<HeldKey> g_heldReleases;  // released before ImGui saw them down
+
 void recordKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  if (action == GLFW_PRESS) recordKeyPress(key, mods);
+  if (action == GLFW_PRESS) {
+    recordKeyPress(key, mods);
+    g_downThisFrame.push_back(key);
+  }
+  if (action == GLFW_RELEASE &&
+      std::find(g_downThisFrame.begin(), g_downThisFrame.end(), key) != g_downThisFrame.end()) {
+    g_heldReleases.push_back({window, key, scancode, mods});
+    return;
+  }
   if (g_previousKeyCallback) g_previousKeyCallback(window, key, scancode, action, mods);
 }
 
@@ -60,6 +78,14 @@ bool pressed(int key) { return keyPressed(key, false); }
 void installKeyPressRecorder(GLFWwindow* window) { g_previousKeyCallback = glfwSetKeyCallback(window, recordKey); }
 
 void clearKeyPresses() { g_presses.clear(); }
+
+void releaseKeysSeenDown() {
+  g_downThisFrame.clear();
+  const std::vector<HeldKey> held = std::move(g_heldReleases);
+  g_heldReleases.clear();
+  for (const HeldKey& k : held)
+    if (g_previousKeyCallback) g_previousKeyCallback(k.window, k.key, k.scancode, GLFW_RELEASE, k.mods);
+}
 
 void recordKeyPress(int key, int mods) { g_presses.push_back({key, mods}); }
 

@@ -29,6 +29,9 @@ float steppedUiScale(float scale, int steps);  // clamped to [kMinUiScale, kMaxU
 // which chains to the callback it finds; clear before each poll.
 void installKeyPressRecorder(GLFWwindow* window);
 void clearKeyPresses();
+// After ImGui::NewFrame: hands ImGui the releases of keys pressed and released since the frame
+// before (it has now seen them down once; see recordKey in shortcuts.cpp).
+void releaseKeysSeenDown();
 void recordKeyPress(int key, int mods);  // what the callback does for a press (tests call it too)
 // The GLFW modifier bits held when `key` (a GLFW key code) was pressed since the last clear, or
 // -1 when it was not pressed (key repeats do not count).
