@@ -54,7 +54,7 @@ TEST(ExplorerLayout, ThreeViewportsSitInOneRowFourInTwo) {
   EXPECT_EQ(viewportCountFor(0), 1);
   EXPECT_EQ(viewportCountFor(7), kMaxViewports);
   const ImVec2 area(1200, 600);
-  const MainAreaLayout three = layoutMainArea(ImVec2(0, 0), area, 3, false, ImVec2(1, 1));
+  const MainAreaLayout three = layoutMainArea(ImVec2(0, 0), area, 3, 0, ImVec2(1, 1));
   ASSERT_EQ(three.tiles.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(three.tiles[i].headerMin.y, three.tiles[0].headerMin.y) << i;
@@ -62,7 +62,7 @@ TEST(ExplorerLayout, ThreeViewportsSitInOneRowFourInTwo) {
     EXPECT_LE(three.tiles[i].headerMin.x + three.tiles[i].headerSize.x, area.x) << i;
     if (i) EXPECT_GT(three.tiles[i].headerMin.x, three.tiles[i - 1].headerMin.x + three.tiles[i - 1].headerSize.x - 1);
   }
-  const MainAreaLayout four = layoutMainArea(ImVec2(0, 0), area, 4, false, ImVec2(1, 1));
+  const MainAreaLayout four = layoutMainArea(ImVec2(0, 0), area, 4, 0, ImVec2(1, 1));
   ASSERT_EQ(four.tiles.size(), 4u);
   EXPECT_EQ(four.tiles[1].headerMin.y, four.tiles[0].headerMin.y);
   EXPECT_GT(four.tiles[2].headerMin.y, four.tiles[0].headerMin.y);

@@ -223,7 +223,7 @@ TEST(TourPlayer, AStepsPlotHasAStripBesideTheViewports) {
   const float strip = player.plotStripWidth(area);
   EXPECT_GT(strip, 200.0f);
   EXPECT_LE(strip, 0.45f * area.x);
-  const MainAreaLayout layout = layoutMainArea(ImVec2(0, 0), ImVec2(area.x - strip, area.y), 3, true, ImVec2(1, 1));
+  const MainAreaLayout layout = layoutMainArea(ImVec2(0, 0), ImVec2(area.x - strip, area.y), 3, 3, ImVec2(1, 1));
   for (const ViewportTile& t : layout.tiles) {
     EXPECT_LE(t.imageMin.x + t.imageSize.x, area.x - strip);
     EXPECT_LE(t.headerMin.x + t.headerSize.x, area.x - strip);

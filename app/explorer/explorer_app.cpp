@@ -277,13 +277,13 @@ bool FrameLoop::drawFrame(double now, float dt, int fbWidth, int fbHeight, bool 
   const ImGuiIO& io = ImGui::GetIO();
   const float panelWidth =
       tour.presenter() ? 0.0f : std::min(sidePanelWidth(state.uiScale, io.DisplaySize.x), io.DisplaySize.x - 1.0f);
-  const bool anyThumbnails = !state.selectedViews.empty() && !availableViewNames(state).empty();
+  const int thumbnails = availableViewNames(state).empty() ? 0 : static_cast<int>(state.selectedViews.size());
   // A step's plot has a strip of its own on the right: it hides no viewport (#23).
   const ImVec2 tourArea(io.DisplaySize.x - panelWidth, io.DisplaySize.y);
   const MainAreaLayout layout =
       layoutMainArea(ImVec2(panelWidth, 0),
                      ImVec2(tourArea.x - tour.plotStripWidth(tourArea), tourArea.y - tour.captionHeight(tourArea)),
-                     state.viewportCount, anyThumbnails, io.DisplayFramebufferScale);
+                     state.viewportCount, thumbnails, io.DisplayFramebufferScale);
   advanceCameraAndTime(window, state, dt);
   // The visibility plot (hold V) reads the G-buffer under the mouse.
   const bool plotKey = state.plotPinned || (keyDown(window, GLFW_KEY_V) && !io.WantTextInput);

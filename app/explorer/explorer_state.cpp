@@ -128,6 +128,7 @@ void setViewportPreset(ExplorerState& state, int slot, const std::string& preset
       s.viewport = std::make_unique<Viewport>(std::move(t));
     s.error.clear();
     s.enlargedView.clear();
+    s.title.clear();
   } catch (const std::exception& e) {
     s.error = e.what();
   }

@@ -26,6 +26,7 @@ struct ViewportSlot {
   std::unique_ptr<Viewport> viewport;
   std::string enlargedView;  // debug view shown in the big image instead of the colour ("" = colour)
   std::string error;         // last rejected parameter value or preset
+  std::string title;         // a tour's name for it ("n = z_n"), shown in its header ("" = the technique's)
 };
 
 struct ExplorerState {

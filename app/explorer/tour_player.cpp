@@ -36,6 +36,7 @@ void applyViewports(ExplorerState& state, const TourStep& s) {
       slot.viewport = std::make_unique<Viewport>(std::move(t));
     slot.error.clear();
     slot.enlargedView.clear();
+    slot.title = findPreset(v.technique) ? v.label : v.technique + " (not built yet: standard shown)";
     state.selectedViews.insert(v.views.begin(), v.views.end());
   }
   state.viewportCount = viewportCountFor(s.viewports.size());

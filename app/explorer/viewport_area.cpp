@@ -31,7 +31,9 @@ ImVec2 fitAspect(ImVec2 size, float aspect) {
 
 void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSlot& slot, int index) {
   const Viewport& vp = *slot.viewport;
-  std::string text = std::to_string(index + 1) + "  " + vp.technique.label();
+  // A tour's name for the viewport comes first: it is what the caption talks about.
+  std::string text = std::to_string(index + 1) + "  " +
+                     (slot.title.empty() ? vp.technique.label() : slot.title + "   " + vp.technique.label());
   if (!slot.enlargedView.empty()) text += "   [" + slot.enlargedView + "]";
   // Representations report too (the irregular z-buffer's overflow, a layout it cannot use).
   for (const PartState* part :
@@ -124,7 +126,16 @@ void drawThumbnails(ImDrawList* draw, const ViewportTile& tile, ViewportSlot& sl
 
 }  // namespace
 
-MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, bool withThumbnails,
+float thumbnailShare(int viewportCount, int thumbnailsPerTile) {
+  if (thumbnailsPerTile <= 0) return 0.0f;
+  if (viewportCount >= 4) return kThumbnailShare;  // 2x2 tiles are short: "enlarge" shows a view large
+  // One view under a tall tile gets close to the image's own size; two a third of the height.
+  if (thumbnailsPerTile == 1) return 0.45f;
+  if (thumbnailsPerTile == 2) return 0.33f;
+  return kThumbnailShare;
+}
+
+MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, int thumbnailsPerTile,
                               ImVec2 framebufferScale) {
   MainAreaLayout layout;
   layout.areaMin = areaMin;
@@ -135,7 +146,7 @@ MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount
   const float tileW = std::floor((areaSize.x - kGap * float(columns + 1)) / float(columns));
   const float tileH = std::floor((areaSize.y - kGap * float(rows + 1)) / float(rows));
   const float headerH = std::floor(ImGui::GetTextLineHeight() + 8.0f);
-  const float thumbsH = withThumbnails ? std::floor(tileH * kThumbnailShare) : 0.0f;
+  const float thumbsH = std::floor(tileH * thumbnailShare(viewportCount, thumbnailsPerTile));
   // Whole framebuffer pixels, so one rendered pixel is exactly one screen pixel (magnifier).
   const int renderW = std::max(1, int(std::floor(tileW * framebufferScale.x)));
   const int renderH = std::max(1, int(std::floor((tileH - headerH - thumbsH) * framebufferScale.y)));

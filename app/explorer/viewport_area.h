@@ -24,9 +24,14 @@ struct MainAreaLayout {
 };
 
 // Tiles the area: 1 = full, 2 or 3 = side by side, 4 = 2x2. All images get the same size because
-// the renderer draws every viewport of a frame at one resolution.
-MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, bool withThumbnails,
+// the renderer draws every viewport of a frame at one resolution. thumbnailsPerTile: the debug
+// views shown under each image (0: none). Tall tiles (one row) with one or two views give them
+// a larger share of the height, so that a slide's view is read, not guessed (#26).
+MainAreaLayout layoutMainArea(ImVec2 areaMin, ImVec2 areaSize, int viewportCount, int thumbnailsPerTile,
                               ImVec2 framebufferScale);
+
+// The share of a tile's height its thumbnails take (0 without any).
+float thumbnailShare(int viewportCount, int thumbnailsPerTile);
 
 // A big image copied straight to the window (glBlitFramebuffer) before ImGui draws on top:
 // drawing it as a blended ImGui quad costs a third of the frame on a software rasterizer.

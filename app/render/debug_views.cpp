@@ -50,8 +50,11 @@ void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, Textu
   Texture2D* target = &view;
   ProgramSpec sceneSpec{
       "view overview", {{GL_VERTEX_SHADER, "views/overview.vert"}, {GL_FRAGMENT_SHADER, "views/overview.frag"}}, ""};
-  ProgramSpec lineSpec{
-      "view lines", {{GL_VERTEX_SHADER, "views/lines.vert"}, {GL_FRAGMENT_SHADER, "views/lines.frag"}}, ""};
+  ProgramSpec lineSpec{"view lines",
+                       {{GL_VERTEX_SHADER, "views/lines.vert"},
+                        {GL_GEOMETRY_SHADER, "views/lines.geom"},
+                        {GL_FRAGMENT_SHADER, "views/lines.frag"}},
+                       ""};
   Program& lp = shaders_.get(lineSpec);
   if (!lp.valid()) return;
   Framebuffer fbo("view.lightspace");
@@ -96,6 +99,10 @@ void Renderer::drawLightSpaceOverview(const Viewport& vp, Texture2D& view, Textu
                        lines.data());
   lp.use();
   lp.set("u_viewProj", overview);
+  // Lines that stay visible when the view is minified (a thumbnail, a projector): 1/300 of the
+  // target's height, at least 1.5 pixels.
+  lp.set("u_targetSize", glm::vec2(target->width(), target->height()));
+  lp.set("u_lineWidth", std::max(1.5f, float(target->height()) / 300.0f));
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(linesVao_);
   glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size() / 6));

@@ -1,3 +1,3 @@
-in vec3 v_color;
+in vec3 g_color;
 out vec4 o_color;
-void main() { o_color = vec4(v_color, 1.0); }
+void main() { o_color = vec4(g_color, 1.0); }
