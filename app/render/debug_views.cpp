@@ -116,16 +116,15 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
   const Texture2D* visTex = vp.visibilityTexture();
 
   auto fullscreenView = [&](const std::string& name, const std::string& frag, std::vector<std::string> reads,
-                            bool needsTechnique) {
+                            bool needsTechnique, const std::string& vert = "passes/fullscreen.vert") {
     if (!vp.views_.count(name)) return;
     const std::string modules = needsTechnique ? prelude : "";
     Texture2D* target = vp.views_[name].get();
     g.add({"view." + name + tag,
            reads,
            {"view." + name + tag},
-           [this, &vp, target, frag, modules, visTex, needsTechnique] {
-             ProgramSpec spec{
-                 "view " + frag, {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, frag}}, modules};
+           [this, &vp, target, frag, vert, modules, visTex, needsTechnique] {
+             ProgramSpec spec{"view " + frag, {{GL_VERTEX_SHADER, vert}, {GL_FRAGMENT_SHADER, frag}}, modules};
              Program& p = shaders_.get(spec);
              if (!p.valid()) return;
              Framebuffer fbo("view target");
@@ -145,7 +144,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
            }});
     g.requestSink("view." + name + tag);
   };
-  fullscreenView("shadowmap", "views/shadowmap.frag", {sm}, false);
+  fullscreenView("shadowmap", "views/shadowmap.frag", {sm}, false, "views/shadowmap.vert");
   fullscreenView("texels", "views/texels.frag", {"gbuffer"}, true);
   fullscreenView("aliasing", "views/aliasing.frag", {"gbuffer"}, true);
   fullscreenView("visibility", "views/visibility.frag", {"gbuffer", visibility}, false);

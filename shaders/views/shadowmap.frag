@@ -1,26 +1,13 @@
 // The shadow map as the light sees it, letterboxed into the view, near = bright. With several
 // light views (cascades) their layers are tiled side by side. Each layer's grey ramp spans the
-// depths actually in it (estimated from a 12x12 grid of texels), not the whole [0, 1] range: a
-// warped layout (LiSPSM, PSM) packs the scene into a sliver of depth and would look flat grey.
+// depths actually in it (estimated from a 12x12 grid of texels, once, by views/shadowmap.vert),
+// not the whole [0, 1] range: a warped layout (LiSPSM, PSM) packs the scene into a sliver of
+// depth and would look flat grey.
 uniform sampler2DArray u_shadowDepth;
 uniform vec2 u_viewSize;
 in vec2 v_uv;
+flat in vec2 v_layerRange[8];  // views/shadowmap.vert
 out vec4 o_color;
-
-const int kGrid = 12;
-
-// Smallest and largest depth below 1 (1 = cleared, nothing drawn) among grid samples of a layer.
-vec2 layerDepthRange(int layer) {
-  ivec2 size = textureSize(u_shadowDepth, 0).xy;
-  vec2 range = vec2(1.0, 0.0);
-  for (int y = 0; y < kGrid; ++y)
-    for (int x = 0; x < kGrid; ++x) {
-      ivec2 texel = ivec2((vec2(x, y) + 0.5) / float(kGrid) * vec2(size));
-      float d = texelFetch(u_shadowDepth, ivec3(texel, layer), 0).r;
-      if (d < 1.0) range = vec2(min(range.x, d), max(range.y, d));
-    }
-  return range;
-}
 
 void main() {
   int layers = textureSize(u_shadowDepth, 0).z;
@@ -39,7 +26,7 @@ void main() {
     o_color = vec4(0.0, 0.0, 0.0, 1.0);  // cleared: nothing drawn there
     return;
   }
-  vec2 range = layerDepthRange(layer);
+  vec2 range = v_layerRange[min(layer, 7)];
   // Padded so that depths the grid missed still grade a little beyond its ends.
   float pad = max(0.05 * (range.y - range.x), 1e-6);
   float lo = range.x <= range.y ? range.x - pad : 0.0, hi = range.x <= range.y ? range.y + pad : 1.0;
