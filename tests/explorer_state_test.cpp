@@ -1,5 +1,6 @@
 // Explorer state changes that need no window: the light-direction control.
 #include "explorer/explorer_state.h"
+#include "explorer/plot_window.h"
 #include "explorer/viewport_area.h"
 #include "scene/scene.h"
 
@@ -68,6 +69,25 @@ TEST(ExplorerLayout, ThreeViewportsSitInOneRowFourInTwo) {
   EXPECT_GT(four.tiles[2].headerMin.y, four.tiles[0].headerMin.y);
   EXPECT_EQ(four.tiles[2].headerMin.x, four.tiles[0].headerMin.x);
   ImGui::DestroyContext();
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// #23: the plot strip's legend ran past its edge. Entries flow and wrap within the width.
+TEST(ExplorerLayout, PlotLegendEntriesWrapWithinTheWidth) {
+  const std::vector<float> widths = {90, 120, 60, 200, 80, 400};
+  const std::vector<ImVec2> at = flowLegend(widths, 300.0f, 20.0f);
+  ASSERT_EQ(at.size(), widths.size());
+  for (size_t k = 0; k < at.size(); ++k)
+    if (widths[k] <= 300.0f) EXPECT_LE(at[k].x + widths[k], 300.0f) << "entry " << k << " passes the edge";
+  EXPECT_EQ(at[0].y, 0.0f);
+  EXPECT_EQ(at[2].y, 0.0f);   // 90 + 120 + 60 fit one row
+  EXPECT_EQ(at[3].y, 20.0f);  // 200 wraps
+  EXPECT_EQ(at[4].y, 20.0f);  // 200 + 80
+  EXPECT_EQ(at[5].x, 0.0f);   // wider than the whole width: a row of its own
+  EXPECT_EQ(at[5].y, 40.0f);
 }
 
 }  // namespace sl

@@ -27,16 +27,36 @@ const std::vector<std::pair<std::string, Technique>>& referenceLayouts() {
 
 }  // namespace
 
+std::vector<ImVec2> flowLegend(const std::vector<float>& entryWidths, float width, float lineHeight) {
+  std::vector<ImVec2> out;
+  float x = 0.0f, y = 0.0f;
+  for (float w : entryWidths) {
+    if (x > 0.0f && x + w > width) x = 0.0f, y += lineHeight;
+    out.push_back(ImVec2(x, y));
+    x += w;
+  }
+  return out;
+}
+
 void drawPlotWidget(const Plot& plot, ImVec2 size) {
   const PlotFrame f = resolvePlot(plot);
   ImDrawList* list = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float line = ImGui::GetTextLineHeight();
-  float legendW = 0.0f;
-  for (const PlotSeries& s : plot.series) legendW = std::max(legendW, ImGui::CalcTextSize(s.label.c_str()).x);
-  legendW = std::min(legendW + line * 2.0f, size.x * 0.4f);
-  const float left = origin.x + ImGui::CalcTextSize("0.001").x + 6.0f, right = origin.x + size.x - legendW;
-  const float top = origin.y + line * 0.5f, bottom = origin.y + size.y - line * 1.5f;
+  // The legend goes right of the plot when its widest name fits in 40 % of the width, else in
+  // rows under it (a narrow plot strip cut the names at its edge, #23).
+  float widest = 0.0f;
+  for (const PlotSeries& s : plot.series) widest = std::max(widest, ImGui::CalcTextSize(s.label.c_str()).x);
+  const float entryW = widest + line * 2.0f;
+  const bool legendBelow = entryW > size.x * 0.4f;
+  // Below: entries flow left to right and wrap, each as wide as its own name.
+  std::vector<float> widths;
+  for (const PlotSeries& s : plot.series) widths.push_back(ImGui::CalcTextSize(s.label.c_str()).x + line * 2.0f);
+  const std::vector<ImVec2> flow = flowLegend(widths, size.x, line);
+  const int rows = legendBelow && !flow.empty() ? int(flow.back().y / line) + 1 : 0;
+  const float left = origin.x + ImGui::CalcTextSize("0.001").x + 6.0f;
+  const float right = origin.x + size.x - (legendBelow ? line * 0.5f : entryW);
+  const float top = origin.y + line * 0.5f, bottom = origin.y + size.y - line * (1.5f + float(rows));
   auto at = [&](glm::vec2 u) { return ImVec2(left + u.x * (right - left), bottom - u.y * (bottom - top)); };
   const ImU32 grid = IM_COL32(60, 62, 70, 255), text = IM_COL32(180, 184, 190, 255);
   list->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(20, 20, 24, 255));
@@ -65,12 +85,15 @@ void drawPlotWidget(const Plot& plot, ImVec2 size) {
     }
   list->PopClipRect();
   list->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(115, 117, 128, 255));
+  list->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   for (size_t k = 0; k < plot.series.size(); ++k) {
-    const ImVec2 p(right + line * 0.5f, top + float(k) * line);
+    const ImVec2 p = legendBelow ? ImVec2(origin.x + flow[k].x, bottom + line * 1.3f + flow[k].y)
+                                 : ImVec2(right + line * 0.5f, top + float(k) * line);
     const ImU32 c = toImU32(plot.series[k].colour);
     list->AddLine(ImVec2(p.x, p.y + line * 0.5f), ImVec2(p.x + line, p.y + line * 0.5f), c, 2.0f);
     list->AddText(ImVec2(p.x + line * 1.3f, p.y), c, plot.series[k].label.c_str());
   }
+  list->PopClipRect();
   ImGui::Dummy(size);
 }
 

@@ -10,11 +10,17 @@
 #include <imgui.h>
 
 #include <string>
+#include <vector>
 
 namespace sl {
 
 // Draws `plot` at the cursor of the current window, `size` pixels including the legend.
 void drawPlotWidget(const Plot& plot, ImVec2 size);
+
+// Where legend entries of these widths go in rows `lineHeight` apart within `width` pixels: left
+// to right, wrapping before an entry that would pass the edge (an entry wider than the whole
+// width gets a row of its own). Offsets from the legend's top-left corner.
+std::vector<ImVec2> flowLegend(const std::vector<float>& entryWidths, float width, float lineHeight);
 
 // Dimmed text wrapped to `width` (a plot's axis labels and notes) under the widget.
 void drawPlotCaption(const std::string& text, float width);
