@@ -56,7 +56,10 @@ bool keyDown(GLFWwindow* window, int key) { return glfwGetKey(window, key) == GL
 // there is still held), never while a text field has the keyboard.
 FlyInput readFlyInput(GLFWwindow* window, ExplorerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
-  const bool overViewport = state.hoveredViewport >= 0;
+  // Last frame's hover, and the mouse still inside that tile now.
+  const bool overViewport = state.hoveredViewport >= 0 && io.MousePos.x >= state.hoveredTileMin[0] &&
+                            io.MousePos.y >= state.hoveredTileMin[1] && io.MousePos.x < state.hoveredTileMax[0] &&
+                            io.MousePos.y < state.hoveredTileMax[1];
   if (overViewport && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) state.looking = true;
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.looking = false;
 
@@ -305,6 +308,8 @@ MainAreaResult FrameLoop::drawOverlays(const MainAreaLayout& layout, float panel
   const ImGuiIO& io = ImGui::GetIO();
   const MainAreaResult area = drawMainArea(layout, state);
   state.hoveredViewport = area.hoveredViewport;
+  state.hoveredTileMin[0] = area.hoveredTileMin.x, state.hoveredTileMin[1] = area.hoveredTileMin.y;
+  state.hoveredTileMax[0] = area.hoveredTileMax.x, state.hoveredTileMax[1] = area.hoveredTileMax.y;
   tour.drawCaption(state, renderer, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
   const ImVec2 tourArea(io.DisplaySize.x - panelWidth, io.DisplaySize.y);
   const float plotWidth = tour.plotStripWidth(tourArea);

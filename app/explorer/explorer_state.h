@@ -84,6 +84,9 @@ struct ExplorerState {
   std::string renderError;             // exception from the last frame, shown until a frame works again
   float smoothedFrameMs = 0.0f;
   int hoveredViewport = -1;  // viewport image under the mouse in the previous frame
+  // That tile's rectangle (ImGui coordinates): at 2-3 fps the mouse can leave it between two
+  // frames, and the wheel then meant for the side panel changed the camera speed (#26).
+  float hoveredTileMin[2] = {0, 0}, hoveredTileMax[2] = {0, 0};
   // Accuracy panel and `error` view (owned by the frame loop; null outside it).
   ErrorPanel* errorPanel = nullptr;
 };

@@ -223,6 +223,10 @@ MainAreaResult drawMainArea(const MainAreaLayout& layout, ExplorerState& state) 
     } else if (hovered) {
       result.hoveredViewport = i;
     }
+    if (result.hoveredViewport == i) {
+      result.hoveredTileMin = tile.imageMin;
+      result.hoveredTileMax = ImVec2(tile.imageMin.x + tile.imageSize.x, tile.thumbsMin.y + tile.thumbsSize.y);
+    }
     drawThumbnails(draw, tile, slot, i, state);
   }
   ImGui::End();

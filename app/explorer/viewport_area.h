@@ -41,8 +41,9 @@ struct ScreenBlit {
 };
 
 struct MainAreaResult {
-  int hoveredViewport = -1;      // image under the mouse, -1 = none
-  MagnifierTarget hoveredImage;  // what the magnifier would enlarge there
+  int hoveredViewport = -1;               // image under the mouse, -1 = none
+  ImVec2 hoveredTileMin, hoveredTileMax;  // its tile (image and thumbnails)
+  MagnifierTarget hoveredImage;           // what the magnifier would enlarge there
   std::vector<ScreenBlit> blits;
 };
 
