@@ -1,26 +1,17 @@
 // What the shipped tours' captions claim, checked numerically: each step's "claims" against the
 // ray-traced reference (one test per tour), and the dp/ds step's curves against its caption.
 #include "gl_test_util.h"
+#include "shipped_tours.h"
 #include "gl/shader_library.h"
 #include "plot/dpds.h"
 #include "tour/tour.h"
 #include "tour/tour_claims.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 
 namespace sl {
 namespace {
-
-std::vector<std::string> claimTourFiles() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SHADOWLAB_SOURCE_DIR) + "/tours"))
-    if (e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // At the figures' default panel size (figure --size): the claims were written against it.
 class TourClaims : public ::testing::TestWithParam<std::string> {};
@@ -41,13 +32,7 @@ TEST_P(TourClaims, EveryStepsClaimsHoldAgainstTheReference) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Tours, TourClaims, ::testing::ValuesIn(claimTourFiles()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = std::filesystem::path(info.param).stem().string();
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Tours, TourClaims, ::testing::ValuesIn(test::shippedTourFiles()), test::tourTestName);
 
 // log10 of the largest over the smallest finite ratio: how far a curve is from flat.
 double dpdsLogSpread(const DpdsCurve& c) {

@@ -2,6 +2,7 @@
 // field), planned techniques, and every step of every shipped tour rendered headless as a
 // figure without error or NaN.
 #include "gl_test_util.h"
+#include "shipped_tours.h"
 #include "tour/figure.h"
 #include "tour/step_plot.h"
 #include "tour/tour.h"
@@ -35,13 +36,7 @@ void expectMessage(const std::string& message, const std::vector<std::string>& p
   for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
 }
 
-std::vector<std::string> shippedTours() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SHADOWLAB_SOURCE_DIR) + "/tours"))
-    if (e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> shippedTours() { return test::shippedTourFiles(); }
 
 TEST(TourParse, GoodStepParsesWithDefaults) {
   const Tour t = parseTour(tourWith(kGoodStep), "lecture.json");
@@ -155,7 +150,8 @@ TEST(TourParse, ErrorViewIsOfferedByEveryTechniqueAndPlotPointIsAShare) {
                            "lecture.json");
   EXPECT_EQ(t.steps[0].viewports[0].views, std::vector<std::string>{"error"});
   EXPECT_EQ(t.steps[0].plot.point, glm::vec2(0.25f, 0.75f));
-  const std::string plot = R"({"title": "a", "viewports": ["vsm"], "plot": {"kind": "visibility", "techniques": ["vsm"], )";
+  const std::string plot =
+      R"({"title": "a", "viewports": ["vsm"], "plot": {"kind": "visibility", "techniques": ["vsm"], )";
   expectMessage(parseError(tourWith(plot + R"("point": [0.5, 1.5]}})")), {"plot.point", "[0, 1]"});
   expectMessage(parseError(tourWith(plot + R"("point": [0.5, 0.5], "pixel": [3, 4]}})")), {"plot.point", "not both"});
 }
@@ -269,13 +265,7 @@ TEST_P(ShippedTour, EveryStepRendersAsAFigure) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Tours, ShippedTour, ::testing::ValuesIn(shippedTours()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = std::filesystem::path(info.param).stem().string();
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Tours, ShippedTour, ::testing::ValuesIn(shippedTours()), test::tourTestName);
 
 // Six panels (three viewports with a view each) make a grid near 16:9 (each viewport a column, its
 // view under it), not a 6x1 strip; a portrait aspect makes a narrower one.
