@@ -14,8 +14,12 @@ vec4 layoutClipIn(vec3 worldPos, int view) {
 #ifdef SL_LOG_WARP
   // With LogPSM's perspective part w is the distance from the log's pole (1 at the map's near
   // side), clamped where the log is (t/δ >= -0.999): a point behind the pole is off the map.
-  c.w = max(c.w, 1e-3);
-  c.y = (2.0 * logWarp(c.y * 0.5 + 0.5, lightViewSplit[view].w) - 1.0) * c.w;  // layouts/logpsm.glsl
+  // δ <= 0 (no warp, and a spot light's perspective fallback): the matrix's clip position as is;
+  // the warp's y assumes the orthographic basis (w = 1 there), and a spot's w is not 1.
+  if (lightViewSplit[view].w > 0.0) {
+    c.w = max(c.w, 1e-3);
+    c.y = (2.0 * logWarp(c.y * 0.5 + 0.5, lightViewSplit[view].w) - 1.0) * c.w;  // layouts/logpsm.glsl
+  }
 #endif
   return c;
 }
