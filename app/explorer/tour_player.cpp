@@ -261,7 +261,12 @@ void TourPlayer::drawPlot(ImVec2 areaMin, ImVec2 areaSize) {
   ImGui::SetNextWindowBgAlpha(0.92f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing;
-  if (ImGui::Begin(("step plot: " + plot_.title + "###tour plot").c_str(), nullptr, flags)) {
+  // The plot's title (a visibility plot's names the pixel and its map uv) is wrapped inside the
+  // window: as the title bar it was cut at the strip's width.
+  if (ImGui::Begin("step plot###tour plot", nullptr, flags)) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size.x);
+    ImGui::TextWrapped("%s", plot_.title.c_str());
+    ImGui::PopTextWrapPos();
     drawPlotWidget(plot_, size);
     drawPlotCaption(plot_.x.label + "; y: " + plot_.y.label + (plot_.note.empty() ? "" : "; " + plot_.note), size.x);
   }
