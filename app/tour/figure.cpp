@@ -207,8 +207,7 @@ void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fon
     const int x = at.x, y = at.y;
     // The name gives way to the frame count: cut the name, never the count after it.
     const std::string suffix = frameSuffix(s, frames);
-    const std::string title =
-        fitted(fonts, p.title, l.panelW - fonts.width(suffix, FigureFonts::Style::Body)) + suffix;
+    const std::string title = fitted(fonts, p.title, l.panelW - fonts.width(suffix, FigureFonts::Style::Body)) + suffix;
     fonts.draw(out.image, x, y, fitted(fonts, title, l.panelW), FigureFonts::Style::Body, kText);
     const int iy = y + body;
     if (p.placeholder) {
@@ -239,10 +238,16 @@ void captureRow(FigureResult& out, const FigureLayout& l, const FigureFonts& fon
 
 }  // namespace
 
+Scene stepSceneWithLight(const Tour& tour, size_t step, const std::string& assetsDir) {
+  const TourStep& s = tour.steps.at(step);
+  Scene scene = loadStepScene(tour, step, assetsDir.empty() ? defaultAssetsDir() : assetsDir);
+  if (s.setLight) scene.light.direction = directionFromLightAngles(s.lightAngles.x, s.lightAngles.y);
+  return scene;
+}
+
 FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shaders, const FigureOptions& o) {
   const TourStep& s = tour.steps.at(step);
-  Scene scene = loadStepScene(tour, step, o.assetsDir.empty() ? defaultAssetsDir() : o.assetsDir);
-  if (s.setLight) scene.light.direction = directionFromLightAngles(s.lightAngles.x, s.lightAngles.y);
+  const Scene scene = stepSceneWithLight(tour, step, o.assetsDir);
   const Camera camera = stepCamera(tour, step, scene);
 
   // Text at least 1/40 of the figure's height (legible on a slide): the layout depends on the
@@ -277,15 +282,14 @@ FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shad
     renderer.setScene(scene);
     // The error view's truth: the scene traced once for the still camera.
     std::unique_ptr<ReferenceImage> reference;
-    for (const Panel& p : panels)
-      if (p.view == kErrorView && !reference) {
-        FrameInput in;
-        in.camera = camera;
-        in.width = l.panelW;
-        in.height = l.panelH;
-        ReferenceCache cache(scene, ReferenceSettings{});
-        reference = std::make_unique<ReferenceImage>(cache.forFrame(renderer, in));
-      }
+    if (std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return p.view == kErrorView; })) {
+      FrameInput in;
+      in.camera = camera;
+      in.width = l.panelW;
+      in.height = l.panelH;
+      ReferenceCache cache(scene, ReferenceSettings{});
+      reference = std::make_unique<ReferenceImage>(cache.forFrame(renderer, in));
+    }
     size_t row = 0;
     for (int f = 1; f <= s.frames.back(); ++f) {
       FrameInput in;

@@ -33,4 +33,8 @@ struct FigureResult {
 // for the missing techniques. Throws TourError (bad scene/camera) or std::runtime_error.
 FigureResult renderTourFigure(const Tour& tour, size_t step, ShaderLibrary& shaders, const FigureOptions& options);
 
+// The step's scene (assetsDir "" = defaultAssetsDir()) with the step's light direction applied,
+// as figures and claim checks render it.
+Scene stepSceneWithLight(const Tour& tour, size_t step, const std::string& assetsDir);
+
 }  // namespace sl

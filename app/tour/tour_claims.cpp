@@ -1,7 +1,7 @@
 #include "tour/tour_claims.h"
 
 #include "bench/reference_cache.h"
-#include "explorer/explorer_state.h"
+#include "tour/figure.h"
 #include "metrics/metrics.h"
 #include "render/renderer.h"
 #include "technique.h"
@@ -66,8 +66,7 @@ std::vector<ClaimCheck> checkStepClaims(const Tour& tour, size_t step, ShaderLib
                                         const std::string& assetsDir) {
   const TourStep& s = tour.steps.at(step);
   if (s.claims.empty() || !s.built()) return {};
-  Scene scene = loadStepScene(tour, step, assetsDir.empty() ? defaultAssetsDir() : assetsDir);
-  if (s.setLight) scene.light.direction = directionFromLightAngles(s.lightAngles.x, s.lightAngles.y);
+  const Scene scene = stepSceneWithLight(tour, step, assetsDir);
   FrameInput in;
   in.camera = stepCamera(tour, step, scene);
   in.width = width;

@@ -27,7 +27,11 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
 
 std::vector<const Texture2D*> pointers(const std::vector<Texture2D*>& v) { return {v.begin(), v.end()}; }
 
-// The GLSL image format qualifier of a moments target's storage.
+// Texels of one row or column a blur invocation filters.
+constexpr int kBlurRun = 8;
+
+}  // namespace
+
 const char* imageFormatName(GLenum format) {
   switch (format) {
     case GL_R16F:
@@ -45,14 +49,9 @@ const char* imageFormatName(GLenum format) {
   }
 }
 
-// Texels of one row or column a blur invocation filters.
-constexpr int kBlurRun = 8;
-
-}  // namespace
-
 void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                             const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique) {
-  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
+  const bool blurs = config_.blurs();
   if (!momentsInShadowPass())
     for (int l = 0; l < std::max(depth_.layers(), 1); ++l) {
       // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
@@ -106,7 +105,7 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
                                  const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst,
                                  int layer, bool vertical) {
   const bool fromDepth = src.front() == &depth_;
-  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
+  const bool blurs = config_.blurs();
   std::string prelude = fromDepth ? defines() + "#include \"" + module_ + "\"\n#define SL_BLUR_FROM_DEPTH\n"
                                   : filterDefines(config_, spec_.logFilter);
   prelude += "#define SL_BLUR_RUN " + std::to_string(kBlurRun) + "\n#define SL_BLUR_HALF " +

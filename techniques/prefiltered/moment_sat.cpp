@@ -13,8 +13,6 @@ namespace sl {
 
 namespace {
 
-const char* imageFormat(GLenum format) { return format == GL_R32F ? "r32f" : format == GL_RG32F ? "rg32f" : "rgba32f"; }
-
 // The mean of the finite texels of every layer of `table`: the offset the table subtracts, so
 // that its sums grow like a random walk instead of linearly with the texel count. Read back
 // (a stall on a GPU; free on a software rasterizer, where every pass is synchronous).
@@ -22,7 +20,7 @@ glm::vec4 finiteMean(ShaderLibrary& shaders, const Texture2D& table, int layers)
   const int size = table.width();
   const ProgramSpec spec{"moment table mean",
                          {{GL_COMPUTE_SHADER, "passes/moment_sat_mean.comp"}},
-                         std::string("#define SL_SAT_FORMAT ") + imageFormat(table.format()) + "\n"};
+                         std::string("#define SL_SAT_FORMAT ") + imageFormatName(table.format()) + "\n"};
   Program& p = shaders.get(spec);
   if (!p.valid()) return glm::vec4(0.0f);
   GLuint buffers[2];
@@ -62,7 +60,7 @@ void MomentMapState::buildSat(ShaderLibrary& shaders) {
     satOffset_[t] = finiteMean(shaders, table, layers);
     const ProgramSpec spec{"moment summed-area table",
                            {{GL_COMPUTE_SHADER, "passes/moment_sat.comp"}},
-                           std::string("#define SL_SAT_FORMAT ") + imageFormat(table.format()) + "\n"};
+                           std::string("#define SL_SAT_FORMAT ") + imageFormatName(table.format()) + "\n"};
     Program& p = shaders.get(spec);
     if (!p.valid()) return;
     p.use();

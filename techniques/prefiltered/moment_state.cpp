@@ -97,15 +97,16 @@ void MomentMapState::beginShadowLayer(int layer) {
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene), *ctx.params) : "";
-  // The shadow pass drew depth alone; one pass makes the moments of it, filtered.
+  // One pass makes the filtered moments: of the depth the shadow pass drew, or (the soft ones,
+  // momentsInShadowPass) summed from the moments it wrote.
   const std::string out = "moments.filtered" + ctx.viewportTag;
   ShaderLibrary* shaders = ctx.shaders;
   auto draw = ctx.drawFullscreen;
   auto bindTechnique = ctx.bindTechnique;
   static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
-  const bool blurs = config_.method == FilterMethod::Blur && config_.width > 1;
-  const std::string name =
-      config_.method == FilterMethod::Blur && !blurs ? "prefilter.moments" : names[static_cast<int>(config_.method)];
+  const std::string name = config_.method == FilterMethod::Blur && !config_.blurs()
+                               ? "prefilter.moments"
+                               : names[static_cast<int>(config_.method)];
   // The blur's first direction lands in scratch targets the frame graph lends for the pass (one
   // per moments target, of its format and size); mip-maps and tables need none.
   std::vector<std::string> writes = {out};
@@ -126,7 +127,7 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
 
 std::vector<TextureDesc> MomentMapState::scratchTargets() const {
   std::vector<TextureDesc> out;
-  if (config_.method != FilterMethod::Blur || config_.width <= 1) return out;
+  if (!config_.blurs()) return out;
   for (const Texture2D& m : moments_) out.push_back({m.format(), m.width(), m.height(), std::max(m.layers(), 1), 1});
   return out;
 }

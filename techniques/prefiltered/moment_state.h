@@ -28,8 +28,12 @@ struct MomentConfig {
   int width = 1;  // box width in texels
   bool operator==(const MomentConfig&) const = default;
   int targets() const { return (channels + 3) / 4; }
+  bool blurs() const { return method == FilterMethod::Blur && width > 1; }  // a blur pass, with scratch targets
   int channelsOf(int target) const { return std::min(4, channels - 4 * target); }
 };
+
+// The GLSL image format qualifier of a moments target's storage ("rg16f", "rgba32f", ...).
+const char* imageFormatName(GLenum format);
 
 class MomentMapState : public RepresentationState {
  public:
