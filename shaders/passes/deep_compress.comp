@@ -1,6 +1,8 @@
 // Deep shadow map, step 2 (Lokovic & Veach 2000, section 4): per light texel, the fragments of
 // its list sorted by depth and the volumes ray-marched along the texel's light ray make one
-// transmittance function T(z) (a step of 1 - alpha per fragment, exp(-sigma dz) per march step),
+// transmittance function T(z): the average over the texel's light-image samples of each sample's
+// product of (1 - alpha) over its fragments (section 4.1, a box filter), times exp(-sigma dz) per
+// march step (the march is shared by the samples, one ray per texel),
 // compressed to at most SL_DEEP_NODES piecewise-linear nodes by their greedy error-bounded
 // placement: each segment is extended while a line from its start stays within the tolerance
 // of every vertex it spans. A texel that needs more nodes doubles its tolerance and tries again
@@ -9,11 +11,12 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430) readonly buffer DeepCounts { uint deepCount[]; };
 layout(std430) readonly buffer DeepFragments { vec2 deepFragment[]; };
-layout(std430) buffer DeepOverflow { uint deepOverflow[2]; };
+layout(std430) buffer DeepOverflow { uint deepOverflow[3]; };  // dropped, relaxed, samples
 layout(rg32f, binding = 0) writeonly uniform image2DArray u_deepNodesOut;
 layout(r32f, binding = 1) writeonly uniform image2DArray u_deepCountsOut;
 uniform float u_deep_size;
 uniform float u_deep_tolerance;
+uniform vec4 u_deepWindow[SL_MAX_LIGHT_VIEWS];  // the part of each view's map uv the deep map covers
 
 const int kRaw = 2 * SL_DEEP_FRAGMENTS + SL_DEEP_STEPS + 2;
 // Width of a fragment's step in depth units: the step is a steep segment, not a jump, so every
@@ -67,18 +70,28 @@ void buildFunction(uint texel, vec2 uv, int view) {
   int steps = d1 > d0 ? SL_DEEP_STEPS : 0;
   float dz = steps > 0 ? (d1 - d0) / float(steps) : 0.0;
   float worldStep = dz * length(dir);
-  float T = 1.0;
+  // T = volume * mean over samples of opacity[s]: a fragment of sample s takes
+  // volume * opacity[s] * alpha / samples from T.
+  float opacityProduct[16];
+  for (int s = 0; s < 16; ++s) opacityProduct[s] = 1.0;
+  float samples = float(clamp(int(deepOverflow[2]), 1, 16));  // as rasterized (deep_fragments.frag)
+  float volume = 1.0, T = 1.0;
   int i = 0, k = 0;
   if (n > 0 || steps > 0) pushRaw(min(n > 0 ? fz[0] : 2.0, steps > 0 ? d0 : 2.0), 1.0);
   while (i < n || k < steps) {
     float zf = i < n ? fz[i] : 3.0, zv = k < steps ? d0 + float(k + 1) * dz : 3.0;
     if (zf <= zv) {
       pushRaw(zf, T);
-      T *= 1.0 - fa[i];
+      int s = clamp(int(ceil(fa[i])) - 1, 0, 15);
+      float alpha = fa[i] - float(s);
+      T -= volume * opacityProduct[s] * alpha / samples;
+      opacityProduct[s] *= 1.0 - alpha;
       pushRaw(zf + kStep, T);
       ++i;
     } else {
-      T *= exp(-volumesExtinction(origin + dir * (d0 + (float(k) + 0.5) * dz)) * worldStep);
+      float e = exp(-volumesExtinction(origin + dir * (d0 + (float(k) + 0.5) * dz)) * worldStep);
+      volume *= e;
+      T *= e;
       pushRaw(zv, T);
       ++k;
     }
@@ -124,7 +137,8 @@ void main() {
   ivec3 id = ivec3(gl_GlobalInvocationID);
   if (id.x >= size || id.y >= size) return;
   uint texel = uint((id.z * size + id.y) * size + id.x);
-  vec2 uv = (vec2(id.xy) + 0.5) / float(size);
+  vec4 window = u_deepWindow[clamp(id.z, 0, SL_MAX_LIGHT_VIEWS - 1)];
+  vec2 uv = window.xy + (vec2(id.xy) + 0.5) / float(size) * window.zw;
   buildFunction(texel, uv, id.z);
   float tolerance = max(u_deep_tolerance, 1e-6);
   int count = 0;

@@ -8,6 +8,8 @@ uniform sampler2DArray u_shadowMap;
 #ifdef SL_DEEP
 uniform sampler2DArray u_deepNodes;   // layer view * SL_DEEP_NODES + k: (depth, transmittance)
 uniform sampler2DArray u_deepCounts;  // layer view: nodes used
+// Per view: the window of the map uv the deep map covers (xy origin, zw size; deep_fit.h).
+uniform vec4 u_deepWindow[SL_MAX_LIGHT_VIEWS];
 
 float deepTexelTransmittance(ivec2 t, int view, float z) {
   int n = int(texelFetch(u_deepCounts, ivec3(t, view), 0).r + 0.5);
@@ -24,11 +26,14 @@ float deepTexelTransmittance(ivec2 t, int view, float z) {
 }
 
 float deepTransmittance(vec3 uvLayer, float z) {
+  int view = int(uvLayer.z + 0.5);
+  vec4 window = u_deepWindow[clamp(view, 0, SL_MAX_LIGHT_VIEWS - 1)];
+  vec2 uv = (uvLayer.xy - window.xy) / window.zw;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;  // no deep caster there
   ivec2 size = textureSize(u_deepCounts, 0).xy;
-  vec2 p = uvLayer.xy * vec2(size) - 0.5;
+  vec2 p = uv * vec2(size) - 0.5;
   vec2 f = p - floor(p);
   ivec2 i0 = ivec2(floor(p));
-  int view = int(uvLayer.z + 0.5);
   float t[4];
   for (int k = 0; k < 4; ++k)
     t[k] = deepTexelTransmittance(clamp(i0 + ivec2(k & 1, k >> 1), ivec2(0), size - 1), view, z);

@@ -1,4 +1,5 @@
-// The deep shadow map as the light sees it (view 0): nodes used per texel, 0 black, then the
+// The deep shadow map as the light sees it (view 0, over the whole map: outside the window the
+// deep map covers (deep_fit.h) it is black, no function): nodes used per texel, 0 black, then the
 // ramp up to SL_DEEP_NODES (yellow); texels whose function was empty stay black. The key along
 // the bottom has one band per node count, 0 at the left. Needs the technique prelude.
 uniform vec2 u_viewSize;
@@ -23,6 +24,11 @@ void main() {
     return;
   }
   vec2 uv = vec2(v_uv.x, (v_uv.y - keyHeight) / (1.0 - keyHeight));
+  uv = (uv - u_deepWindow[0].xy) / u_deepWindow[0].zw;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+    o_color = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
   ivec2 size = textureSize(u_deepCounts, 0).xy;
   float n = texelFetch(u_deepCounts, ivec3(clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0), 0).r;
   o_color = vec4(countColor(n), 1.0);

@@ -8,10 +8,16 @@ namespace sl {
 
 namespace {
 
-// The centre of the deep texel holding uv.
-glm::ivec2 texelOf(const DeepState& state, glm::vec2 uv) {
+// The deep texel holding layer uv (deep uv through the layer's window, deep_fit.h).
+glm::ivec2 texelOf(const DeepState& state, glm::vec2 uv, int layer) {
   const int size = state.counts().width();
-  return glm::clamp(glm::ivec2(glm::floor(uv * float(size))), glm::ivec2(0), glm::ivec2(size - 1));
+  const glm::vec2 deep = state.window(layer).toDeep(uv);
+  return glm::clamp(glm::ivec2(glm::floor(deep * float(size))), glm::ivec2(0), glm::ivec2(size - 1));
+}
+
+bool insideWindow(const DeepState& state, glm::vec2 uv, int layer) {
+  const glm::vec2 deep = state.window(layer).toDeep(uv);
+  return deep.x >= 0.0f && deep.y >= 0.0f && deep.x <= 1.0f && deep.y <= 1.0f;
 }
 
 }  // namespace
@@ -19,7 +25,8 @@ glm::ivec2 texelOf(const DeepState& state, glm::vec2 uv) {
 std::vector<float> deepTexelCurve(const DeepState& state, glm::vec2 uv, int layer, int samples) {
   if (!state.active() || !state.counts() || samples < 2) return {};
   const int nodes = state.nodes().layers() / std::max(state.counts().layers(), 1);
-  const glm::ivec2 t = texelOf(state, uv);
+  if (!insideWindow(state, uv, layer)) return std::vector<float>(static_cast<size_t>(samples), 1.0f);
+  const glm::ivec2 t = texelOf(state, uv, layer);
   float count = 0.0f;
   glGetTextureSubImage(state.counts().id(), 0, t.x, t.y, layer, 1, 1, 1, GL_RED, GL_FLOAT, sizeof(count), &count);
   std::vector<glm::vec2> node(static_cast<size_t>(nodes));
@@ -50,7 +57,9 @@ VisibilityCurve DeepState::visibilityCurve(const CurveQuery& q) const {
   c.values = deepTexelCurve(*this, glm::vec2(q.uvLayer), static_cast<int>(q.uvLayer.z), q.samples);
   if (c.values.empty()) return {};
   c.truthLabel = "reference (opaque hits included)";
-  const glm::vec2 centre = (glm::vec2(texelOf(*this, glm::vec2(q.uvLayer))) + 0.5f) / float(counts().width());
+  const int layer = static_cast<int>(q.uvLayer.z);
+  const glm::vec2 centre =
+      window(layer).toLayer((glm::vec2(texelOf(*this, glm::vec2(q.uvLayer), layer)) + 0.5f) / float(counts().width()));
   for (int s = 0; s < q.samples; ++s)
     c.truthRay.push_back(lightRayPoint(*q.view, centre, float(s) / float(q.samples - 1)));
   return c;

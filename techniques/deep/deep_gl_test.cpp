@@ -217,6 +217,60 @@ TEST(DeepGl, TexelCurveFollowsTheReference) {
   EXPECT_GE(close + 6, above + 1);  // all but the samples right at the three steps
 }
 
+// #23's bar: with its defaults deep is within a third of the opaque map's rmse on hair (the
+// light fraction against the reference; 0.33x at 640x360, docs in the deep README).
+TEST(DeepGl, HairRmseIsAtMostAThirdOfTheOpaqueMaps) {
+  test::GlHarness h;
+  const Scene scene = loadScene("hair", kAssets);
+  const int w = 256, hgt = 144;
+  const test::Frame deep = test::renderOnce(h, scene, "deep", {}, w, hgt);
+  const test::Frame opaque = test::renderOnce(h, scene, "standard", {}, w, hgt);
+  const double deepRmse = test::visibilityError(scene, deep).rmse,
+               opaqueRmse = test::visibilityError(scene, opaque).rmse;
+  EXPECT_LE(deepRmse, opaqueRmse / 3.0) << "deep " << deepRmse << " opaque " << opaqueRmse;
+}
+
+// Lokovic & Veach's supersampling (section 4.1): stripes a third of a deep texel wide and half
+// opaque give each texel 1 or 0.5 with one sample per texel, and the coverage-weighted values
+// between them with four; both average the true 1 - 0.5 * 0.1 over the map.
+TEST(DeepGl, SamplesAverageTheCoverageOfThinCasters) {
+  test::GlHarness h;
+  GLint maxSamples = 1;
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_SAMPLES, &maxSamples);
+  if (maxSamples < 4) GTEST_SKIP() << "GL_MAX_FRAMEBUFFER_SAMPLES " << maxSamples << " < 4";
+  std::string json = R"({"objects":[{"name":"ground","shape":"plane","size":[4,4]})";
+  for (int k = 0; k < 20; ++k)  // 0.01 wide every 0.1 over [-1, 1]: coverage 0.1
+    json += R"(,{"shape":"plane","size":[0.01,2],"opacity":0.5,"transform":{"translate":[)" +
+            std::to_string(-0.95 + 0.1 * k) + ",3.4,0]}}";
+  const Scene scene = deepSceneFrom(json + "]," + kTopCamera + "}");
+  h.renderer.setScene(scene);
+  for (int samples : {1, 4}) {
+    Viewport vp(makeTechnique("deep", {"deep.size=64", "deep.samples=" + std::to_string(samples)}));
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = in.height = 32;
+    h.renderer.render(in, {&vp});
+    const auto* state = dynamic_cast<const DeepState*>(vp.representation.get());
+    ASSERT_NE(state, nullptr);
+    EXPECT_EQ(state->samples(), samples);
+    double sum = 0.0;
+    int between = 0, n = 0;
+    for (int i = 0; i < 64 * 64; i += 7) {  // texels across the stripes, whichever way they run
+      const glm::vec2 deep((float(i % 64) + 0.5f) / 64.0f, (float(i / 64) + 0.5f) / 64.0f);
+      if (glm::any(glm::lessThan(deep, glm::vec2(0.1f))) || glm::any(glm::greaterThan(deep, glm::vec2(0.9f))))
+        continue;  // the window's padding
+      const float t = deepTexelCurve(*state, state->window(0).toLayer(deep), 0, 2).back();
+      sum += t;
+      between += t > 0.55f && t < 0.95f;
+      ++n;
+    }
+    ASSERT_GT(n, 300);
+    EXPECT_NEAR(sum / n, 0.95, 0.03) << samples << " samples";
+    if (samples == 1) EXPECT_EQ(between, 0) << "one sample: a stripe covers a texel's centre or not";
+    if (samples == 4) EXPECT_GT(between, n / 4) << "four samples: partial coverage";
+  }
+}
+
 TEST(DeepGl, OverflowIsReportedNotGarbage) {
   test::GlHarness h;
   const Scene scene = loadScene("hair", kAssets);

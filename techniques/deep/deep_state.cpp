@@ -38,6 +38,7 @@ void DeepState::configure(const ParamSet& params) {
   maxFragments_ = params.i("deep.fragments");
   deepSize_ = params.i("deep.size");
   steps_ = params.i("deep.volume_steps");
+  samplesAsked_ = params.i("deep.samples");
 }
 
 void DeepState::prepare(int size, int layers) {
@@ -58,7 +59,7 @@ void DeepState::prepare(int size, int layers) {
     glCreateBuffers(1, &fragments_);
     glNamedBufferStorage(fragments_, static_cast<GLsizeiptr>(fragments * 2 * sizeof(float)), nullptr, 0);
     glCreateBuffers(1, &overflowBuffer_);
-    glNamedBufferStorage(overflowBuffer_, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(overflowBuffer_, sizeof(overflow_), nullptr, GL_DYNAMIC_STORAGE_BIT);
     label(GL_BUFFER, fragmentCounts_, "deep fragment counts");
     label(GL_BUFFER, fragments_, "deep fragment lists");
     label(GL_BUFFER, overflowBuffer_, "deep overflow counters");
@@ -71,6 +72,19 @@ void DeepState::prepare(int size, int layers) {
   }
   glNamedFramebufferParameteri(emptyFbo_, GL_FRAMEBUFFER_DEFAULT_WIDTH, deepSize_);
   glNamedFramebufferParameteri(emptyFbo_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, deepSize_);
+  setSampleCount();
+}
+
+// The light image is supersampled (Lokovic & Veach 2000, section 4.1: a texel's function is the
+// filtered average of its samples' functions): deep.samples rounded down to a power of two the
+// implementation offers. How many it rasterized, the fragment pass records (gl_NumSamples; Mesa
+// reports GL_SAMPLES = 0 for a framebuffer without attachments) and the compress pass divides by.
+void DeepState::setSampleCount() {
+  GLint maxSamples = 1;
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_SAMPLES, &maxSamples);
+  int asked = 1;
+  while (asked * 2 <= std::min(samplesAsked_, std::max(maxSamples, 1))) asked *= 2;
+  glNamedFramebufferParameteri(emptyFbo_, GL_FRAMEBUFFER_DEFAULT_SAMPLES, asked > 1 ? asked : 0);
 }
 
 std::string DeepState::defines() const {
@@ -84,6 +98,8 @@ void DeepState::bind(const Program& p, TextureUnits& units) const {
   if (!active_ || !nodes_) return;
   units.bind(p, "u_deepNodes", nodes_.id());
   units.bind(p, "u_deepCounts", counts_.id());
+  for (size_t i = 0; i < windows_.size(); ++i)
+    p.set("u_deepWindow[" + std::to_string(i) + "]", glm::vec4(windows_[i].origin, windows_[i].size));
 }
 
 // Listed in every scene (views are offered before the first frame); without semi-transparent
@@ -92,7 +108,8 @@ std::vector<std::string> DeepState::views() const { return {"deep-nodes"}; }
 
 std::string DeepState::status() const {
   if (!active_) return "deep: no semi-transparent casters, depth map only";
-  std::string s = "deep: " + std::to_string(deepSize_) + "² texels, " + std::to_string(nodeCount_) + " nodes";
+  std::string s = "deep: " + std::to_string(deepSize_) + "² texels × " + std::to_string(samples()) + " samples, " +
+                  std::to_string(nodeCount_) + " nodes";
   if (overflow_[0])
     s += "; OVERFLOW: " + std::to_string(overflow_[0]) +
          " fragments beyond deep.fragments=" + std::to_string(maxFragments_) + " dropped (raise it)";
@@ -106,6 +123,20 @@ long long DeepState::texels() const {
   return t;
 }
 
+// Each light view's deep map covers the window of it that the semi-transparent casters and the
+// volumes reach (deep_fit.h), as far as the viewport can magnify.
+void DeepState::fitWindows(const PartContext& ctx) {
+  GLint maxDims[2] = {16384, 16384}, boundsRange[2] = {-32768, 32767};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxDims);
+  glGetIntegerv(GL_VIEWPORT_BOUNDS_RANGE, boundsRange);
+  const int reach = std::min({maxDims[0], maxDims[1], -boundsRange[0], boundsRange[1]});
+  const int maxMagnify = std::max(reach / std::max(deepSize_, 1), 1);
+  windows_.fill(DeepWindow{});
+  const auto& views = ctx.lightSpace->views;
+  for (size_t i = 0; i < views.size() && i < windows_.size(); ++i)
+    windows_[i] = deepFitWindow(*ctx.scene, ctx.time, views[i], deepSize_, maxMagnify);
+}
+
 // Every semi-transparent fragment seen from the light goes into its texel's list (depth, alpha);
 // a full list counts the fragment as overflow instead of writing past its end.
 void DeepState::fragmentsPass(const PartContext& ctx) {
@@ -116,11 +147,14 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
   bindStorage("DeepFragments", fragments_);
   bindStorage("DeepOverflow", overflowBuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_);
-  glViewport(0, 0, deepSize_, deepSize_);
   glDisable(GL_DEPTH_TEST);
+  glEnable(GL_MULTISAMPLE);  // on by default; said here because the samples are the point
   const ProgramSpec spec{"deep fragments", casterStages(*ctx.lightSpace, "passes/deep_fragments.frag"),
                          ctx.techniquePrelude};
   for (int layer = 0; layer < layers_; ++layer) {
+    // The viewport magnifies the layer's window onto the deep map's texels (deep_fit.h).
+    const glm::ivec4 vp = deepViewport(windows_[static_cast<size_t>(layer)], deepSize_);
+    glViewport(vp.x, vp.y, vp.z, vp.w);
     ctx.drawSemiTransparent(spec, [&ctx, layer](const Program& p, TextureUnits& units) {
       ctx.bindTechnique(p, units);
       p.set("u_shadowView", layer);
@@ -171,6 +205,7 @@ std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {
     }
     return ctx.shadowMap;
   }
+  fitWindows(ctx);
   const std::string fragments = "deep-fragments" + tag, deep = "deep-compress" + tag;
   graph.add({fragments, {}, {fragments}, [this, ctx] { fragmentsPass(ctx); }});
   graph.add({deep, {ctx.shadowMap, fragments}, {deep}, [this, ctx] { compressPass(ctx); }});

@@ -5,10 +5,13 @@
 // no deep pass, no define, the same shaders as depth-nearest.
 #pragma once
 
+#include "deep/deep_fit.h"
 #include "part/depth_map_state.h"
 #include "gl/gl_util.h"
 #include "part/part.h"
 
+#include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -36,21 +39,30 @@ class DeepState : public RepresentationState {
   // needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
   unsigned overflowFragments() const { return overflow_[0]; }
   unsigned relaxedTexels() const { return overflow_[1]; }
+  // Light-image samples per deep texel, as the last frame's fragment pass rasterized them.
+  int samples() const { return std::max(static_cast<int>(overflow_[2]), 1); }
   const Texture2D& nodes() const { return nodes_; }    // RG32F array: layer view*N + k = (depth, T)
   const Texture2D& counts() const { return counts_; }  // R32F array: nodes used per texel
+  // The part of light view `layer` the deep map covers this frame (deep_fit.h).
+  const DeepWindow& window(int layer) const { return windows_.at(static_cast<size_t>(layer)); }
 
  private:
   void releaseBuffers();
+  void setSampleCount();
   void fragmentsPass(const PartContext& ctx);
   void compressPass(const PartContext& ctx);
+  void fitWindows(const PartContext& ctx);
 
   DepthMapState opaque_;
   bool active_ = false;
   int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, layers_ = 1;
+  // deep.samples as asked, and as the framebuffer without attachments actually rasterizes.
+  int samplesAsked_ = 1;
   Texture2D nodes_, counts_;
+  std::array<DeepWindow, kMaxLightViews> windows_{};
   GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, emptyFbo_ = 0;
   size_t bufferTexels_ = 0, bufferFragments_ = 0;
-  unsigned overflow_[2] = {0, 0};
+  unsigned overflow_[3] = {0, 0, 0};  // DeepOverflow: dropped fragments, relaxed texels, samples
 };
 
 }  // namespace sl
