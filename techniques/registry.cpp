@@ -101,6 +101,7 @@ Family reconstructionFamily();
 Family softFamily();
 Family deepFamily();
 Family optimizedPcfFamily();
+Family pointFamily();
 
 const ColourKey* viewColourKey(const std::string& viewName) {
   if (const ColourKey* key = commonViewColourKey(viewName)) return key;
@@ -122,7 +123,8 @@ const std::vector<Family>& allFamilies() {
   static const std::vector<Family> list = [] {
     std::vector<Family> v;
     for (Family (*make)() : {depthFamily, accumulationFamily, layoutsFamily, adaptiveFamily, prefilteredFamily,
-                             irregularFamily, reconstructionFamily, softFamily, deepFamily, optimizedPcfFamily})
+                             irregularFamily, reconstructionFamily, softFamily, deepFamily, optimizedPcfFamily,
+                             pointFamily})
       v.push_back(make());
     return v;
   }();

@@ -116,7 +116,7 @@ std::string ReferenceCache::keyText(const FrameInput& in) const {
     << fmt(c.position) << ":" << fmt(c.target) << ":" << fmt(c.up) << ":" << fmt(c.fovDeg) << ":" << fmt(c.nearPlane)
     << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height
     << ";samples=" << (l.radius > 0 ? settings_.samples : 1) << ";light=" << static_cast<int>(l.type) << ":"
-    << fmt(l.direction) << ":" << fmt(l.position) << ":" << fmt(l.fovDeg) << ":" << fmt(l.radius)
+    << fmt(l.direction) << ":" << fmt(l.position) << ":" << fmt(l.fovDeg) << ":" << fmt(l.radius) << ":" << fmt(l.range)
     << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))
     << ";gl=" << glRendererName();  // the G-buffer is rasterized: a different driver may differ
   return k.str();

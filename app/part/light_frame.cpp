@@ -10,7 +10,7 @@ namespace sl {
 glm::mat4 lightViewMatrix(const Light& light, float roll) {
   glm::vec3 forward = glm::normalize(light.direction);
   glm::vec3 up = std::abs(forward.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  glm::vec3 eye = light.type == Light::Type::Spot ? light.position : glm::vec3(0.0f);
+  glm::vec3 eye = light.positional() ? light.position : glm::vec3(0.0f);
   glm::mat4 view = glm::lookAt(eye, eye + forward, up);
   if (roll != 0.0f) view = glm::rotate(glm::mat4(1.0f), roll, glm::vec3(0, 0, 1)) * view;
   return view;
@@ -23,14 +23,38 @@ Light sampledLight(const Light& light, glm::vec2 diskPoint) {
   const glm::vec3 t2 = glm::cross(d, t1);
   const glm::vec3 offset = light.radius * (diskPoint.x * t1 + diskPoint.y * t2);
   Light out = light;
-  if (light.type == Light::Type::Spot)
+  if (light.positional())
     out.position = light.position + offset;
   else
     out.direction = glm::normalize(d + offset);
   return out;
 }
 
-Light layoutLight(const LayoutInput& in) { return sampledLight(in.scene->light, in.jitter.lightSample); }
+Light pointAsSpot(const Light& point, const std::vector<glm::vec3>& receivers) {
+  Light spot = point;
+  spot.type = Light::Type::Spot;
+  glm::vec3 centre(0.0f);
+  int n = 0;
+  for (const glm::vec3& p : receivers)
+    if (glm::length(p - point.position) > 1e-6f) centre += glm::normalize(p - point.position), ++n;
+  spot.direction = n > 0 && glm::length(centre) > 1e-3f ? glm::normalize(centre) : glm::vec3(0, -1, 0);
+  float cosHalf = 1.0f;
+  for (const glm::vec3& p : receivers)
+    if (glm::length(p - point.position) > 1e-6f)
+      cosHalf = std::min(cosHalf, glm::dot(glm::normalize(p - point.position), spot.direction));
+  const float half = glm::degrees(std::acos(std::clamp(cosHalf, -1.0f, 1.0f))) + 2.0f;
+  spot.fovDeg = 2.0f * std::clamp(half, 1.0f, kPointAsSpotMaxHalfDeg);
+  return spot;
+}
+
+Light layoutLight(const LayoutInput& in) {
+  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
+  if (light.type != Light::Type::Point) return light;
+  const Bounds bounds = in.scene->boundsAt(in.time);
+  std::vector<glm::vec3> receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);
+  if (receivers.empty()) receivers = boxCorners(bounds);
+  return pointAsSpot(light, receivers);
+}
 
 std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj) {
   glm::mat4 inv = glm::inverse(proj * view);
@@ -89,20 +113,40 @@ std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& 
   return clipCornersToBox(frustumCorners(view, proj), box);
 }
 
+std::vector<glm::vec4> boxPlanes(const Bounds& box) {
+  return {{1, 0, 0, -box.min.x}, {-1, 0, 0, box.max.x}, {0, 1, 0, -box.min.y},
+          {0, -1, 0, box.max.y}, {0, 0, 1, -box.min.z}, {0, 0, -1, box.max.z}};
+}
+
+std::vector<glm::vec4> frustumPlanes(const glm::mat4& viewProj) {
+  const glm::mat4 m = glm::transpose(viewProj);  // rows of viewProj as columns
+  std::vector<glm::vec4> planes;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float sign : {1.0f, -1.0f}) {
+      glm::vec4 p = m[3] + sign * m[axis];  // w + x >= 0, w - x >= 0, ...
+      const float n = glm::length(glm::vec3(p));
+      planes.push_back(n > 0.0f ? p / n : p);
+    }
+  return planes;
+}
+
 std::vector<glm::vec3> clipCornersToBox(const std::vector<glm::vec3>& c, const Bounds& box) {
+  return clipCornersToPlanes(c, boxPlanes(box));
+}
+
+std::vector<glm::vec3> clipCornersToPlanes(const std::vector<glm::vec3>& c, const std::vector<glm::vec4>& planes) {
   static const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   std::vector<Polygon> body;
   for (auto& f : faces) body.push_back({c[f[0]], c[f[1]], c[f[2]], c[f[3]]});
-  const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  const float offsets[6] = {-box.min.x, box.max.x, -box.min.y, box.max.y, -box.min.z, box.max.z};
-  for (int k = 0; k < 6; ++k) {
+  for (const glm::vec4& plane : planes) {
+    const glm::vec3 normal(plane);
     std::vector<Polygon> next;
     std::vector<glm::vec3> cap;
     for (auto& poly : body) {
-      Polygon clipped = clipPolygon(poly, normals[k], offsets[k], cap);
+      Polygon clipped = clipPolygon(poly, normal, plane.w, cap);
       if (clipped.size() >= 3) next.push_back(std::move(clipped));
     }
-    Polygon capPoly = orderCap(cap, normals[k]);
+    Polygon capPoly = orderCap(cap, normal);
     if (!capPoly.empty()) next.push_back(std::move(capPoly));
     body = std::move(next);
     if (body.empty()) return {};

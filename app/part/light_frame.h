@@ -16,8 +16,14 @@ glm::mat4 lightViewMatrix(const Light& light, float roll);
 // The light moved to `diskPoint` (unit disk) of its area: spot, the apex moved by radius in the
 // disk's plane; directional, the direction tilted by radius (tan of the angular radius).
 Light sampledLight(const Light& light, glm::vec2 diskPoint);
-// The light a layout builds its views from: the scene's, at the jitter's light sample.
+// The light a layout builds its views from: the scene's, at the jitter's light sample. A point
+// light becomes a spot at its position aimed at the visible receivers (the survey's fitting for
+// a point light: one frustum around what the camera sees), its cone as wide as they need up to
+// 2 * kPointAsSpotMaxHalfDeg; beyond that the single-frustum layouts miss receivers, which is
+// what the cube layout (techniques/layouts/cube.h) is for.
 Light layoutLight(const LayoutInput& in);
+inline constexpr float kPointAsSpotMaxHalfDeg = 80.0f;
+Light pointAsSpot(const Light& point, const std::vector<glm::vec3>& receivers);
 
 // The 8 world-space corners of the camera frustum.
 std::vector<glm::vec3> frustumCorners(const glm::mat4& view, const glm::mat4& proj);
@@ -27,6 +33,11 @@ std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& view, const glm::mat4& 
 // The same for any convex body given as 8 corners indexed x + 2y + 4z (bits) like a frustum's;
 // corners may coincide (a pyramid: the faces that collapse clip nothing away).
 std::vector<glm::vec3> clipCornersToBox(const std::vector<glm::vec3>& corners, const Bounds& box);
+// The same clipped by half-spaces dot(xyz, p) + w >= 0.
+std::vector<glm::vec3> clipCornersToPlanes(const std::vector<glm::vec3>& corners, const std::vector<glm::vec4>& planes);
+// The half-spaces of a box, and of a view-projection's clip volume (-w <= x, y, z <= w).
+std::vector<glm::vec4> boxPlanes(const Bounds& box);
+std::vector<glm::vec4> frustumPlanes(const glm::mat4& viewProj);
 
 std::vector<glm::vec3> boxCorners(const Bounds& b);
 

@@ -17,8 +17,17 @@ void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace
 void setLightUniforms(const Program& p, const Light& light) {
   p.set("u_lightDirection", glm::normalize(light.direction));
   p.set("u_lightPosition", light.position);
-  p.set("u_spotCosHalfAngle", std::cos(glm::radians(light.fovDeg) * 0.5f));
+  // A point light has no cone: every direction passes the test (common/light.glsl).
+  p.set("u_spotCosHalfAngle", light.type == Light::Type::Point ? -2.0f : std::cos(glm::radians(light.fovDeg) * 0.5f));
   p.set("u_lightRadius", light.radius);
+  p.set("u_lightRange", light.range > 0.0f ? light.range : 1e30f);
+}
+
+std::string lightDefines(const Light& light) {
+  std::string d;
+  if (light.positional()) d += "#define SL_SPOT_LIGHT\n";  // the light sits at u_lightPosition
+  if (light.type == Light::Type::Point) d += "#define SL_POINT_LIGHT\n";
+  return d;
 }
 
 }  // namespace sl

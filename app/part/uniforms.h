@@ -3,6 +3,8 @@
 
 #include "part/part.h"
 
+#include <string>
+
 namespace sl {
 
 class Program;
@@ -12,5 +14,8 @@ class Program;
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light);
 // The light's uniforms alone (common/light.glsl), for passes that shade without a technique.
 void setLightUniforms(const Program& p, const Light& light);
+// The light's compile-time specialisation of common/light.glsl: SL_SPOT_LIGHT for every light
+// with a position (spot and point), SL_POINT_LIGHT for a point light (no cone, a range).
+std::string lightDefines(const Light& light);
 
 }  // namespace sl

@@ -223,7 +223,8 @@ struct ReferenceTracer::Impl {
     return std::clamp(t, 0.0f, 1.0f);
   }
 
-  // Direction from p to the centre of the light; false when p is outside a spot cone.
+  // Direction from p to the centre of the light; false when p is outside a spot cone or beyond
+  // a point light's range.
   bool centreToLight(const glm::vec3& p, glm::vec3& toLight, float& distance) const {
     if (light.type == Light::Type::Directional) {
       toLight = -light.direction;
@@ -234,6 +235,7 @@ struct ReferenceTracer::Impl {
     distance = glm::length(d);
     if (!(distance > 0.0f)) return false;
     toLight = d / distance;
+    if (light.type == Light::Type::Point) return !(light.range > 0.0f) || distance <= light.range;
     const float cosHalf = std::cos(glm::radians(light.fovDeg * 0.5f));
     return glm::dot(-toLight, light.direction) >= cosHalf;
   }
@@ -289,8 +291,9 @@ struct ReferenceTracer::Impl {
       return transmittance(start, toLight, tfar);
     }
 
+    // A spot's disk faces its direction; a point light's sphere shows p the disk facing it.
     glm::vec3 tangent, bitangent;
-    orthonormalBasis(glm::normalize(light.direction), tangent, bitangent);
+    orthonormalBasis(light.type == Light::Type::Point ? -toLight : glm::normalize(light.direction), tangent, bitangent);
     float visible = 0.0f;
     const int total = gridSize * gridSize;
     for (int s = 0; s < total; ++s) {

@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include "part/uniforms.h"
 #include "render/gpu_scene.h"
 #include "scene/scene_effects.h"
 
@@ -175,7 +176,7 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // fragment; vertex stages only need the layout.
   const Technique& t = vp.technique;
   std::string defines = enumDefines(t.params);  // SL_BIAS_MODE_IS_SLOPE, ...
-  if (scene_->light.type == Light::Type::Spot) defines += "#define SL_SPOT_LIGHT\n";
+  defines += lightDefines(scene_->light);
   // Soft techniques compile their area-light path only where the scene calls for it.
   if (sceneEffects(*scene_).areaLight) defines += "#define SL_AREA_LIGHT\n";
   if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";

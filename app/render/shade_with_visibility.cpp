@@ -1,6 +1,7 @@
 // Renderer::shadeWithVisibility: the deferred shade pass over a frame's G-buffer with a
 // visibility given from outside (the ray-traced reference's), so the image metric compares a
 // technique's colour with the very same shading formula, never a CPU copy of it.
+#include "part/uniforms.h"
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 
@@ -12,7 +13,7 @@ namespace sl {
 
 std::string Renderer::shadePrelude() const {
   // common/light.glsl specialises on the light type at compile time, as the techniques' passes do.
-  return scene_ && scene_->light.type == Light::Type::Spot ? "#define SL_SPOT_LIGHT\n" : "";
+  return scene_ ? lightDefines(scene_->light) : "";
 }
 
 std::vector<unsigned char> Renderer::shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility) {

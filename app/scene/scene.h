@@ -65,14 +65,20 @@ struct Instance {
 };
 
 struct Light {
-  enum class Type { Directional, Spot };
+  enum class Type { Directional, Spot, Point };
   Type type = Type::Directional;
+  // Spot and point lights sit at `position`; a directional light has none.
+  bool positional() const { return type != Type::Directional; }
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // direction light travels (from light into scene), normalized
   glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot: apex; directional: unused except for radius sampling
   float fovDeg = 60.0f;                    // spot only: full cone angle
   // Area light size (0 = point/hard). Spot: disk radius in world units at `position`, facing
   // `direction`. Directional: tangent of the angular radius (disk radius at unit distance).
+  // Point: a sphere of this radius, sampled as the disk facing the receiver.
   float radius = 0.0f;
+  // Point: the distance it reaches (points farther away are unlit, in the shading and the
+  // reference alike); 0 = no limit.
+  float range = 0.0f;
   glm::vec3 color{1.0f};
 };
 

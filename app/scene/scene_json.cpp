@@ -180,18 +180,22 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   scene.instances.push_back(inst);
 }
 
-Light parseLight(const JsonReader& r, const json& j) {
-  const std::string where = "light";
-  r.checkKeys(j, where, {"type", "direction", "position", "fov_deg", "radius", "color"});
+Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
+  if (!j.is_object()) r.expected(where, "a light object", j);
+  r.checkKeys(j, where, {"type", "direction", "position", "fov_deg", "radius", "range", "color"});
   Light l;
   l.direction = kAutoLightDirection;
   if (const json* t = JsonReader::find(j, "type")) {
     const std::string type = r.string(*t, where + ".type");
     if (type == "spot")
       l.type = Light::Type::Spot;
+    else if (type == "point")
+      l.type = Light::Type::Point;
     else if (type != "directional")
-      r.fail(where + ".type", "unknown light type '" + type + "' (expected directional or spot)");
+      r.fail(where + ".type", "unknown light type '" + type + "' (expected directional, spot or point)");
   }
+  if (l.type == Light::Type::Point && !JsonReader::find(j, "position"))
+    r.fail(where + ".position", "a point light needs a position");
   if (const json* d = JsonReader::find(j, "direction")) {
     const glm::vec3 v = r.vec3(*d, where + ".direction");
     if (!(glm::length(v) > 1e-12f)) r.fail(where + ".direction", "zero-length light direction");
@@ -208,11 +212,31 @@ Light parseLight(const JsonReader& r, const json& j) {
     // A double beyond float range becomes Inf here: the soft-shadow filters would turn it into NaN.
     if (!(l.radius >= 0.0f) || !std::isfinite(l.radius)) r.expected(where + ".radius", "a finite radius >= 0", *rad);
   }
+  if (const json* range = JsonReader::find(j, "range")) {
+    if (l.type != Light::Type::Point) r.fail(where + ".range", "only a point light has a range");
+    l.range = float(r.number(*range, where + ".range"));
+    if (!(l.range > 0.0f) || !std::isfinite(l.range)) r.expected(where + ".range", "a finite range > 0", *range);
+  }
   if (const json* c = JsonReader::find(j, "color")) {
     l.color = r.vec3(*c, where + ".color");
     if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) r.expected(where + ".color", "3 non-negative numbers", *c);
   }
   return l;
+}
+
+// "lights": [...], every entry checked. The renderer and the reference draw one light per scene
+// so far: a list of one is that light; a longer one is refused by name, not half drawn.
+void parseLightList(const JsonReader& r, const json& j, bool haveSingle, Scene& scene) {
+  if (!j.is_array()) r.expected("lights", "an array of light objects", j);
+  if (haveSingle) r.fail("lights", "give either 'light' or 'lights', not both");
+  if (j.empty()) r.fail("lights", "an empty light list (leave it out for the automatic sun)");
+  std::vector<Light> parsed;
+  for (size_t i = 0; i < j.size(); ++i) parsed.push_back(parseLight(r, j[i], "lights[" + std::to_string(i) + "]"));
+  if (parsed.size() > 1)
+    r.fail("lights", std::to_string(parsed.size()) +
+                         " lights: this version shadows one light per scene (several shadowed lights are issue #25's "
+                         "remaining part)");
+  scene.light = parsed.front();
 }
 
 void checkCamera(const JsonReader& r, const Camera& c, const std::string& where) {
@@ -318,7 +342,8 @@ Scene loadJsonScene(const std::string& path) {
     // nlohmann reports literals like 1e999 this way (out_of_range 406) instead of storing inf.
     r.fail("", "malformed JSON (numbers must be finite): " + std::string(e.what()));
   }
-  r.checkKeys(root, "", {"name", "description", "models", "objects", "hair", "volumes", "light", "cameras", "paths"});
+  r.checkKeys(root, "",
+              {"name", "description", "models", "objects", "hair", "volumes", "light", "lights", "cameras", "paths"});
   Scene scene;
   scene.sourcePath = path;
   const json* name = JsonReader::find(root, "name");
@@ -367,7 +392,9 @@ Scene loadJsonScene(const std::string& path) {
       parseVolume(r, (*volumes)[i], "volumes[" + std::to_string(i) + "]", scene);
   }
   const json* light = JsonReader::find(root, "light");
-  if (light) scene.light = parseLight(r, *light);
+  if (light) scene.light = parseLight(r, *light, "light");
+  const json* lights = JsonReader::find(root, "lights");
+  if (lights) parseLightList(r, *lights, light != nullptr, scene);
   std::set<std::string> names;
   if (const json* cams = array("cameras")) {
     for (size_t i = 0; i < cams->size(); ++i) {
@@ -386,7 +413,7 @@ Scene loadJsonScene(const std::string& path) {
         r.fail(where + ".name", "duplicate path name '" + scene.paths.back().name + "'");
     }
   }
-  finish(scene, light != nullptr);
+  finish(scene, light != nullptr || lights != nullptr);
   return scene;
 }
 

@@ -2,7 +2,8 @@
 // software rasterizer runs both sides of every branch, so per-scene constants are defines.
 uniform vec3 u_lightDirection;  // direction light travels, normalized
 uniform vec3 u_lightPosition;
-uniform float u_spotCosHalfAngle;
+uniform float u_spotCosHalfAngle;  // -2 for a point light: no cone
+uniform float u_lightRange;        // point light: distance it reaches (1e30: no limit)
 
 vec3 directionToLight(vec3 p) {
 #ifdef SL_SPOT_LIGHT
@@ -12,9 +13,12 @@ vec3 directionToLight(vec3 p) {
 #endif
 }
 
-// 0 outside a spot light's cone (the reference treats those points as unlit too).
+// 0 outside a spot light's cone and beyond a point light's range (the reference treats those
+// points as unlit too).
 float spotFactor(vec3 p) {
-#ifdef SL_SPOT_LIGHT
+#ifdef SL_POINT_LIGHT
+  return length(p - u_lightPosition) <= u_lightRange ? 1.0 : 0.0;
+#elif defined(SL_SPOT_LIGHT)
   return dot(normalize(p - u_lightPosition), u_lightDirection) >= u_spotCosHalfAngle ? 1.0 : 0.0;
 #else
   return 1.0;

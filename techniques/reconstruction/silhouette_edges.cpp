@@ -76,7 +76,7 @@ void appendSilhouettes(const MeshEdges& m, const glm::mat4& model, const Light& 
   for (size_t f = 0; f < m.faces.size(); ++f) {
     const glm::vec3 &p0 = world[m.faces[f].x], &p1 = world[m.faces[f].y], &p2 = world[m.faces[f].z];
     const glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
-    const glm::vec3 toLight = light.type == Light::Type::Spot ? light.position - p0 : -light.direction;
+    const glm::vec3 toLight = light.positional() ? light.position - p0 : -light.direction;
     front[f] = glm::dot(n, toLight) > 0.0f ? 1 : 0;
   }
   for (const MeshEdges::Edge& e : m.edges) {
