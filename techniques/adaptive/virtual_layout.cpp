@@ -373,8 +373,8 @@ class VirtualLayout : public Layout {
     // Over the scene's whole motion, so that the view (and the pages of static parts) stay put;
     // a point light as a spot aimed at all of it.
     const auto corners = boxCorners(in.scene->motionEnvelope());
-    const Light light = in.scene->light.type == Light::Type::Point ? pointAsSpot(in.scene->light, corners)
-                                                                    : in.scene->light;
+    const Light light =
+        in.scene->light.type == Light::Type::Point ? pointAsSpot(in.scene->light, corners) : in.scene->light;
     const glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
     const int size = virtualSizes(*in.params).virtualSize;
     const bool snap = in.params->b("layout.snap");

@@ -1,0 +1,99 @@
+// The cube layout on the GPU, in the issue's numerically hard cases for a point light: the light
+// inside a caster, on a receiver's plane, touching a caster, at the camera, a view toward a cube
+// corner, a range shorter than the distance to the nearest caster. Every case is finite, in
+// [0, 1], and close to the ray-traced reference.
+#include "point/cube_layout.h"
+#include "tests/assets_dir.h"
+#include "tests/gl_test_util.h"
+#include "technique.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include <unistd.h>
+
+namespace sl {
+namespace {
+
+const char* kPointScene = R"({"objects":[
+  {"name":"ground","shape":"plane","size":[12,12],"subdivisions":12},
+  {"name":"box","shape":"box","size":[1,1,1],"transform":{"translate":[0,0.5,0]}},
+  {"name":"ball","shape":"sphere","radius":0.4,"transform":{"translate":[2,0.4,1]}},
+  {"name":"post","shape":"cylinder","radius":0.1,"height":2,"transform":{"translate":[-2,1,-1]}}],
+  "light":{"type":"point","position":[0.5,2.5,0.5]},
+  "cameras":[{"position":[5,4,6],"target":[0,0.3,0],"fov_deg":60}]})";
+
+struct PointCase {
+  std::string name;
+  std::function<void(Scene&, Camera&)> setup;
+};
+
+std::vector<PointCase> pointCases() {
+  return {
+      {"light inside a caster",
+       [](Scene& s, Camera&) {
+         s.light.position = {0.1f, 0.5f, -0.1f};
+       }},
+      {"light on the ground's plane",
+       [](Scene& s, Camera&) {
+         s.light.position = {3.0f, 0.0f, -2.0f};
+       }},
+      {"light touching the box's top",
+       [](Scene& s, Camera&) {
+         s.light.position = {0.2f, 1.0f, 0.1f};
+       }},
+      {"light at the camera", [](Scene& s, Camera& c) { s.light.position = c.position; }},
+      {"view toward a cube corner",
+       [](Scene& s, Camera& c) {
+         s.light.position = {0.0f, 3.0f, 0.0f};
+         c.position = s.light.position + glm::vec3(-0.5f, 0.5f, -0.5f);
+         c.target = c.position + glm::vec3(1.0f, -1.0f, 1.0f);
+       }},
+      {"range shorter than the nearest caster",
+       [](Scene& s, Camera&) {
+         s.light.position = {0.0f, 3.5f, 0.0f};
+         s.light.range = 1.5f;
+       }},
+  };
+}
+
+TEST(CubeGl, HardPointLightCasesStayFiniteAndNearTheReference) {
+  test::GlHarness h;
+  for (const PointCase& c : pointCases()) {
+    Scene scene =
+        loadScene(test::writeTempFile("cube_gl_" + std::to_string(::getpid()) + ".json", kPointScene), test::kAssets);
+    c.setup(scene, scene.cameras.front());
+    for (const char* preset : {"cube", "cube-pcf"}) {
+      const test::Frame f = test::renderOnce(h, scene, preset, {"shadowmap.size=256"}, 96, 54);
+      for (size_t i = 0; i < f.visibility.size(); i += 2) {
+        ASSERT_TRUE(std::isfinite(f.visibility[i])) << c.name << " " << preset;
+        ASSERT_GE(f.visibility[i], 0.0f) << c.name << " " << preset;
+        ASSERT_LE(f.visibility[i], 1.0f) << c.name << " " << preset;
+      }
+      const double wrong = test::wrongPct(scene, f);
+      EXPECT_LE(wrong, 3.0) << c.name << " " << preset;
+    }
+  }
+}
+
+// Looking away from the lamp the layout draws 3 faces, and the picture is still right.
+TEST(CubeGl, UndrawnFacesCostNoDrawAndChangeNothingSeen) {
+  test::GlHarness h;
+  const Scene scene = loadScene("street", test::kAssets);
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique("cube", {"shadowmap.size=256"}));
+  FrameInput in;
+  in.camera =
+      *std::find_if(scene.cameras.begin(), scene.cameras.end(), [](const Camera& c) { return c.name == "away"; });
+  in.width = 96;
+  in.height = 54;
+  h.renderer.render(in, {&vp});
+  EXPECT_EQ(vp.layout->status(), "cube: 3 of 6 faces drawn");
+  const test::Frame f = test::readFrame(h.renderer, vp, 96, 54);
+  EXPECT_LE(test::wrongPct(scene, f), 1.0);
+}
+
+}  // namespace
+}  // namespace sl
