@@ -310,7 +310,8 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
                                                     "vssm",
                                                     "pcss",
                                                     "optimized-pcf",
-                                                    "pixel-correct-optimized-pcf"};
+                                                    "pixel-correct-optimized-pcf",
+                                                    "cube-pcf"};
   if (scene == "terrain") return preset == "pcss";
   return scene == "dueling-sunset" && std::find(filtered.begin(), filtered.end(), preset) != filtered.end();
 }
