@@ -322,6 +322,31 @@ struct ReferenceTracer::Impl {
   }
 };
 
+// Alpha-masked and blended materials: the geometry gets an occlusion filter that reads its
+// alpha (masks cut holes; blended surfaces attenuate the light fraction reaching the receiver),
+// with the data the filter needs kept in `owned`.
+static void attachAlphaFilter(RTCGeometry geom, const Scene& scene, const Mesh& mesh, size_t triCount,
+                              std::vector<std::unique_ptr<AlphaGeometry>>& owned) {
+  const bool validMaterial = mesh.material >= 0 && static_cast<size_t>(mesh.material) < scene.materials.size();
+  if (!validMaterial || !(scene.materials[mesh.material].alphaMask || scene.materials[mesh.material].alphaBlend))
+    return;
+  const Material& material = scene.materials[mesh.material];
+  auto alpha = std::make_unique<AlphaGeometry>();
+  alpha->uvs = mesh.uvs;
+  alpha->uvs.resize(mesh.positions.size(), glm::vec2(0.0f));  // tolerate missing uvs
+  alpha->indices.assign(mesh.indices.begin(), mesh.indices.begin() + 3 * triCount);
+  alpha->baseAlpha = material.baseColor.a;
+  alpha->cutoff = material.alphaCutoff;
+  const int t = material.baseColorTexture;
+  if (t >= 0 && static_cast<size_t>(t) < scene.textures.size()) {
+    const Texture& texture = scene.textures[t];
+    if (texture.rgba.size() >= static_cast<size_t>(texture.width) * texture.height * 4) alpha->texture = texture;
+  }
+  rtcSetGeometryUserData(geom, alpha.get());
+  rtcSetGeometryOccludedFilterFunction(geom, material.alphaBlend ? &blendOcclusionFilter : &alphaOcclusionFilter);
+  owned.push_back(std::move(alpha));
+}
+
 ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Impl) {
   std::unique_ptr<Impl> impl(impl_);  // released only if construction succeeds
   impl->light = scene.light;
@@ -376,25 +401,7 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, double time) : impl_(new Im
     std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * triCount, indices);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
 
-    const bool validMaterial = mesh.material >= 0 && static_cast<size_t>(mesh.material) < scene.materials.size();
-    if (validMaterial && (scene.materials[mesh.material].alphaMask || scene.materials[mesh.material].alphaBlend)) {
-      const Material& material = scene.materials[mesh.material];
-      auto alpha = std::make_unique<AlphaGeometry>();
-      alpha->uvs = mesh.uvs;
-      alpha->uvs.resize(mesh.positions.size(), glm::vec2(0.0f));  // tolerate missing uvs
-      alpha->indices.assign(mesh.indices.begin(), mesh.indices.begin() + 3 * triCount);
-      alpha->baseAlpha = material.baseColor.a;
-      alpha->cutoff = material.alphaCutoff;
-      const int t = material.baseColorTexture;
-      if (t >= 0 && static_cast<size_t>(t) < scene.textures.size()) {
-        const Texture& texture = scene.textures[t];
-        if (texture.rgba.size() >= static_cast<size_t>(texture.width) * texture.height * 4) alpha->texture = texture;
-      }
-      rtcSetGeometryUserData(geom, alpha.get());
-      // Blended surfaces attenuate (the light fraction reaching the receiver); masks cut holes.
-      rtcSetGeometryOccludedFilterFunction(geom, material.alphaBlend ? &blendOcclusionFilter : &alphaOcclusionFilter);
-      impl->alphaGeometries.push_back(std::move(alpha));
-    }
+    attachAlphaFilter(geom, scene, mesh, triCount, impl->alphaGeometries);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl->scene, geom, static_cast<unsigned>(i));  // geomID = instance index
     rtcReleaseGeometry(geom);                                            // the scene keeps its own reference

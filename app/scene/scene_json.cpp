@@ -92,11 +92,8 @@ void transformMesh(Mesh& mesh, const glm::mat4& m) {
   for (auto& n : mesh.normals) n = glm::normalize(normalMatrix * n);
 }
 
-void parseObject(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
-  r.checkObject(j, where);
-  const json* shapeJ = JsonReader::find(j, "shape");
-  if (!shapeJ) r.fail(where, "missing 'shape' (plane, box, sphere or cylinder)");
-  const std::string shape = r.string(*shapeJ, where + ".shape");
+// The mesh of an object's `shape`, its keys checked against that shape's.
+Mesh parseShapeMesh(const JsonReader& r, const json& j, const std::string& where, const std::string& shape) {
   std::vector<std::string> keys = {"name", "shape", "color", "opacity", "transform", "motion", "double_sided"};
   Mesh mesh;
   if (shape == "plane") {
@@ -132,7 +129,11 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
   } else {
     r.fail(where + ".shape", "unknown shape '" + shape + "' (expected plane, box, sphere or cylinder)");
   }
+  return mesh;
+}
 
+// An object's material: colour, double-sidedness, and opacity (a semi-transparent caster).
+Material parseObjectMaterial(const JsonReader& r, const json& j, const std::string& where) {
   Material mat;
   if (const json* c = JsonReader::find(j, "color")) {
     const size_t n = c->is_array() ? c->size() : 0;
@@ -152,6 +153,16 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
     mat.baseColor.a = float(a);
     mat.alphaBlend = true;
   }
+  return mat;
+}
+
+void parseObject(const JsonReader& r, const json& j, const std::string& where, Scene& scene) {
+  r.checkObject(j, where);
+  const json* shapeJ = JsonReader::find(j, "shape");
+  if (!shapeJ) r.fail(where, "missing 'shape' (plane, box, sphere or cylinder)");
+  const std::string shape = r.string(*shapeJ, where + ".shape");
+  Mesh mesh = parseShapeMesh(r, j, where, shape);
+  const Material mat = parseObjectMaterial(r, j, where);
 
   Instance inst;
   const json* nameJ = JsonReader::find(j, "name");
@@ -224,19 +235,27 @@ Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
   return l;
 }
 
-// "lights": [...], every entry checked. The renderer and the reference draw one light per scene
-// so far: a list of one is that light; a longer one is refused by name, not half drawn.
-void parseLightList(const JsonReader& r, const json& j, bool haveSingle, Scene& scene) {
-  if (!j.is_array()) r.expected("lights", "an array of light objects", j);
-  if (haveSingle) r.fail("lights", "give either 'light' or 'lights', not both");
-  if (j.empty()) r.fail("lights", "an empty light list (leave it out for the automatic sun)");
+// The scene's light from "light": {...} or "lights": [...] (every entry checked); false when the
+// file gives neither (finish() then places the automatic sun). The renderer and the reference
+// draw one light per scene so far: a list of one is that light; a longer one is refused by name,
+// not half drawn.
+bool parseLights(const JsonReader& r, const json& root, Scene& scene) {
+  const json* single = JsonReader::find(root, "light");
+  const json* list = JsonReader::find(root, "lights");
+  if (single && list) r.fail("lights", "give either 'light' or 'lights', not both");
+  if (single) scene.light = parseLight(r, *single, "light");
+  if (!list) return single != nullptr;
+  if (!list->is_array()) r.expected("lights", "an array of light objects", *list);
+  if (list->empty()) r.fail("lights", "an empty light list (leave it out for the automatic sun)");
   std::vector<Light> parsed;
-  for (size_t i = 0; i < j.size(); ++i) parsed.push_back(parseLight(r, j[i], "lights[" + std::to_string(i) + "]"));
+  for (size_t i = 0; i < list->size(); ++i)
+    parsed.push_back(parseLight(r, (*list)[i], "lights[" + std::to_string(i) + "]"));
   if (parsed.size() > 1)
     r.fail("lights", std::to_string(parsed.size()) +
                          " lights: this version shadows one light per scene (several shadowed lights are issue #25's "
                          "remaining part)");
   scene.light = parsed.front();
+  return true;
 }
 
 void checkCamera(const JsonReader& r, const Camera& c, const std::string& where) {
@@ -330,6 +349,31 @@ void finish(Scene& scene, bool haveLight) {
   if (scene.materials.empty()) scene.materials.push_back(Material{});
 }
 
+// "models": glTF files placed by their transform; a file's own error is reported under the
+// entry's field (with how $SHARED/ resolves where the path uses it).
+void appendModels(const JsonReader& r, const json& models, const fs::path& dir, Scene& scene) {
+  for (size_t i = 0; i < models.size(); ++i) {
+    const std::string where = "models[" + std::to_string(i) + "]";
+    const json& m = models[i];
+    r.checkKeys(m, where, {"file", "transform"});
+    const json* f = JsonReader::find(m, "file");
+    if (!f) r.fail(where, "missing 'file'");
+    const std::string given = r.string(*f, where + ".file");
+    const std::string file = resolveModelPath(given, dir);
+    const json* t = JsonReader::find(m, "transform");
+    const glm::mat4 xf = t ? r.transform(*t, where + ".transform") : glm::mat4(1.0f);
+    try {
+      appendGltf(scene, file, xf);
+    } catch (const SceneError& e) {
+      const bool shared = given.compare(0, 8, "$SHARED/") == 0;
+      r.fail(where + ".file", e.what() + std::string(shared ? " ($SHARED/ is resolved through the "
+                                                              "SHADOWLAB_SHARED environment variable, "
+                                                              "else <source dir>/../shared)"
+                                                            : ""));
+    }
+  }
+}
+
 Scene loadJsonScene(const std::string& path) {
   const std::string text = readFile(path);
   JsonReader r(path);
@@ -355,29 +399,7 @@ Scene loadJsonScene(const std::string& path) {
     if (a && !a->is_array()) r.expected(key, "an array", *a);
     return a;
   };
-  if (const json* models = array("models")) {
-    const fs::path dir = fs::path(path).parent_path();
-    for (size_t i = 0; i < models->size(); ++i) {
-      const std::string where = "models[" + std::to_string(i) + "]";
-      const json& m = (*models)[i];
-      r.checkKeys(m, where, {"file", "transform"});
-      const json* f = JsonReader::find(m, "file");
-      if (!f) r.fail(where, "missing 'file'");
-      const std::string given = r.string(*f, where + ".file");
-      const std::string file = resolveModelPath(given, dir);
-      const json* t = JsonReader::find(m, "transform");
-      const glm::mat4 xf = t ? r.transform(*t, where + ".transform") : glm::mat4(1.0f);
-      try {
-        appendGltf(scene, file, xf);
-      } catch (const SceneError& e) {
-        const bool shared = given.compare(0, 8, "$SHARED/") == 0;
-        r.fail(where + ".file", e.what() + std::string(shared ? " ($SHARED/ is resolved through the "
-                                                                "SHADOWLAB_SHARED environment variable, "
-                                                                "else <source dir>/../shared)"
-                                                              : ""));
-      }
-    }
-  }
+  if (const json* models = array("models")) appendModels(r, *models, fs::path(path).parent_path(), scene);
   if (const json* objects = array("objects")) {
     for (size_t i = 0; i < objects->size(); ++i) {
       parseObject(r, (*objects)[i], "objects[" + std::to_string(i) + "]", scene);
@@ -391,10 +413,7 @@ Scene loadJsonScene(const std::string& path) {
     for (size_t i = 0; i < volumes->size(); ++i)
       parseVolume(r, (*volumes)[i], "volumes[" + std::to_string(i) + "]", scene);
   }
-  const json* light = JsonReader::find(root, "light");
-  if (light) scene.light = parseLight(r, *light, "light");
-  const json* lights = JsonReader::find(root, "lights");
-  if (lights) parseLightList(r, *lights, light != nullptr, scene);
+  const bool haveLight = parseLights(r, root, scene);
   std::set<std::string> names;
   if (const json* cams = array("cameras")) {
     for (size_t i = 0; i < cams->size(); ++i) {
@@ -413,7 +432,7 @@ Scene loadJsonScene(const std::string& path) {
         r.fail(where + ".name", "duplicate path name '" + scene.paths.back().name + "'");
     }
   }
-  finish(scene, light != nullptr || lights != nullptr);
+  finish(scene, haveLight);
   return scene;
 }
 

@@ -70,7 +70,16 @@ CubeViews cubeViews(const Light& light, const LayoutInput& in) {
 
 namespace {
 
-class CubeLayout;
+// The cube under a point light; under any other light one focused map (every "face" needed).
+CubeViews cubeOrFocused(const LayoutInput& in, bool& pointLight) {
+  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
+  pointLight = light.type == Light::Type::Point;
+  if (pointLight) return cubeViews(light, in);
+  CubeViews focused;
+  focused.space = focusedMap(in, focusBody(in));
+  focused.needed.fill(true);
+  return focused;
+}
 
 // Remembers which faces this frame needs: the shadow pass draws only those.
 class CubeState : public LayoutState {
@@ -97,23 +106,18 @@ class CubeLayout : public Layout {
   }
   std::string glslModule() const override { return "layouts/cube.glsl"; }
   LightSpace compute(const LayoutInput& in) const override {
-    const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
-    if (light.type != Light::Type::Point) return focusedMap(in, focusBody(in));
-    return cubeViews(light, in).space;
+    bool pointLight = false;
+    return cubeOrFocused(in, pointLight).space;
   }
   std::unique_ptr<LayoutState> createState() const override { return std::make_unique<CubeState>(*this); }
 };
 
 LightSpace CubeState::compute(const LayoutInput& in) {
-  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
-  if (light.type != Light::Type::Point) {
-    needed_.fill(true);
-    status_ = "cube: the scene's light is not a point light; one focused map";
-    return focusedMap(in, focusBody(in));
-  }
-  CubeViews v = cubeViews(light, in);
+  bool pointLight = false;
+  CubeViews v = cubeOrFocused(in, pointLight);
   needed_ = v.needed;
-  status_ = "cube: " + std::to_string(v.neededCount()) + " of 6 faces drawn";
+  status_ = pointLight ? "cube: " + std::to_string(v.neededCount()) + " of 6 faces drawn"
+                       : "cube: the scene's light is not a point light; one focused map";
   return v.space;
 }
 
