@@ -70,10 +70,11 @@ void buildFunction(uint texel, vec2 uv, int view) {
   int steps = d1 > d0 ? SL_DEEP_STEPS : 0;
   float dz = steps > 0 ? (d1 - d0) / float(steps) : 0.0;
   float worldStep = dz * length(dir);
-  // T = volume * mean over samples of opacity[s]: a fragment of sample s takes
-  // volume * opacity[s] * alpha / samples from T.
-  float opacityProduct[16];
-  for (int s = 0; s < 16; ++s) opacityProduct[s] = 1.0;
+  // T = volume * mean over samples of sampleTransmittance[s] (each sample's product of
+  // 1 - alpha so far): a fragment of sample s takes volume * sampleTransmittance[s] * alpha /
+  // samples from T.
+  float sampleTransmittance[16];
+  for (int s = 0; s < 16; ++s) sampleTransmittance[s] = 1.0;
   float samples = float(clamp(int(deepOverflow[2]), 1, 16));  // as rasterized (deep_fragments.frag)
   float volume = 1.0, T = 1.0;
   int i = 0, k = 0;
@@ -84,8 +85,8 @@ void buildFunction(uint texel, vec2 uv, int view) {
       pushRaw(zf, T);
       int s = clamp(int(ceil(fa[i])) - 1, 0, 15);
       float alpha = fa[i] - float(s);
-      T -= volume * opacityProduct[s] * alpha / samples;
-      opacityProduct[s] *= 1.0 - alpha;
+      T -= volume * sampleTransmittance[s] * alpha / samples;
+      sampleTransmittance[s] *= 1.0 - alpha;
       pushRaw(zf + kStep, T);
       ++i;
     } else {
