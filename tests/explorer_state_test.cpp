@@ -46,6 +46,24 @@ TEST(ExplorerLight, ChangingTheLightIsACut) {
   EXPECT_TRUE(state.cutPending);                              // accumulated history belongs to the old light
 }
 
+TEST(ExplorerLight, MovingAPointLightIsACutAndASunHasNoPosition) {
+  ExplorerState state;
+  state.scene = std::make_unique<Scene>(loadScene("basic", defaultAssetsDir()));
+  state.cutPending = false;
+  EXPECT_FALSE(setLightPosition(state, glm::vec3(1.0f, 2.0f, 3.0f))) << "basic's sun has no position to move";
+  EXPECT_FALSE(state.cutPending);
+  state.scene = std::make_unique<Scene>(loadScene("street", defaultAssetsDir()));
+  const glm::vec3 before = state.scene->light.position;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(setLightPosition(state, glm::vec3(nan, 1.0f, 0.0f)));
+  EXPECT_FALSE(setLightPosition(state, before));  // the same place
+  EXPECT_EQ(state.scene->light.position, before);
+  EXPECT_FALSE(state.cutPending);
+  EXPECT_TRUE(setLightPosition(state, before + glm::vec3(0.5f, 0.0f, 0.0f)));
+  EXPECT_EQ(state.scene->light.position, before + glm::vec3(0.5f, 0.0f, 0.0f));
+  EXPECT_TRUE(state.cutPending);
+}
+
 }  // namespace
 // A tour step's caption reads "left, middle, right" for three viewports: they sit in one row of
 // equal tiles, and only four make a 2x2 grid.

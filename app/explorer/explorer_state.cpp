@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace sl {
 
@@ -91,16 +92,29 @@ glm::vec3 directionFromLightAngles(float azimuthDeg, float elevationDeg) {
   return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
 }
 
+// Both setters end here: the accuracy panel's worker may be tracing under the old light (stop it
+// first), and every accumulation's history belongs to the old light (a cut).
+static void changeLight(ExplorerState& state, const std::function<void(Light&)>& change) {
+  if (state.errorPanel) state.errorPanel->beforeSceneChange();
+  change(state.scene->light);
+  state.cutPending = true;
+}
+
+bool setLightPosition(ExplorerState& state, glm::vec3 position) {
+  if (!state.scene || !state.scene->light.positional() || !std::isfinite(position.x) || !std::isfinite(position.y) ||
+      !std::isfinite(position.z) || position == state.scene->light.position)
+    return false;
+  changeLight(state, [position](Light& l) { l.position = position; });
+  return true;
+}
+
 bool setLightDirection(ExplorerState& state, glm::vec3 direction) {
   if (!state.scene || !std::isfinite(direction.x) || !std::isfinite(direction.y) || !std::isfinite(direction.z) ||
       !(glm::length(direction) > 1e-6f))
     return false;
   direction = glm::normalize(direction);
   if (glm::length(direction - state.scene->light.direction) < 1e-6f) return false;
-  // The accuracy panel's worker may be tracing under the old light: stop it first.
-  if (state.errorPanel) state.errorPanel->beforeSceneChange();
-  state.scene->light.direction = direction;
-  state.cutPending = true;
+  changeLight(state, [direction](Light& l) { l.direction = direction; });
   return true;
 }
 

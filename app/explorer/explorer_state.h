@@ -117,6 +117,9 @@ glm::vec3 directionFromLightAngles(float azimuthDeg, float elevationDeg);  // th
 // accumulation forgets its history (a cut: it was gathered under the old light) and the accuracy
 // panel drops its references (traced under the old light). Returns true when the light changed.
 bool setLightDirection(ExplorerState& state, glm::vec3 direction);
+// Moves a spot or point light to `position` (ignored if not finite, or for a directional light),
+// a cut as above. Returns true when the light moved.
+bool setLightPosition(ExplorerState& state, glm::vec3 position);
 // Replaces a viewport's technique by a preset with its default overrides.
 void setViewportPreset(ExplorerState& state, int slot, const std::string& presetId);
 // Makes sure the first viewportCount slots exist; new ones get presets not shown yet, so

@@ -97,7 +97,24 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
     ImGui::Text("%zu triangles, %zu instances", state.scene->triangleCount(), state.scene->instances.size());
     ImGui::PopStyleColor();
   }
-  if (state.scene) {
+  if (state.scene && state.scene->light.type == Light::Type::Point) {
+    // A point light has a position and no direction: drag where it is.
+    glm::vec3 position = state.scene->light.position;
+    const float speed = 0.002f * sceneDiagonal(*state.scene);
+    const float third = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+    static const char* const kAxes[3] = {"light x %.2f", "y %.2f", "z %.2f"};
+    bool moved = false;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis > 0) ImGui::SameLine();
+      ImGui::PushID(axis);
+      ImGui::SetNextItemWidth(third);
+      moved |= ImGui::DragFloat("##lightPosition", &position[axis], speed, 0.0f, 0.0f, kAxes[axis]);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("point light position; moving it resets accumulated history and references");
+      ImGui::PopID();
+    }
+    if (moved) setLightPosition(state, position);
+  } else if (state.scene) {
     // Dragging the light is a cut for accumulations (their history was gathered under the old
     // light) and drops the accuracy panel's references.
     glm::vec2 angles = lightAngles(state.scene->light);
