@@ -41,7 +41,7 @@ for target in $TARGETS; do
   [ -d "$regressions" ] && seeds+=("$regressions")
   echo "== $target: ${seconds}s =="
   # -timeout: one input slower than 10 s is a hang; -rss_limit_mb: a 2 GiB input is a bug too.
-  if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1 \
     "build-asan/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=262144 \
     -print_final_stats=1 -artifact_prefix="build-asan/fuzz-artifacts/$target-" "$corpus" "${seeds[@]}" \
     2>"build-asan/fuzz-$target.log"; then
