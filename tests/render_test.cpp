@@ -311,7 +311,8 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
                                                     "pcss",
                                                     "optimized-pcf",
                                                     "pixel-correct-optimized-pcf",
-                                                    "cube-pcf"};
+                                                    "cube-pcf",
+                                                    "tetrahedron-pcf"};
   if (scene == "terrain") return preset == "pcss";
   return scene == "dueling-sunset" && std::find(filtered.begin(), filtered.end(), preset) != filtered.end();
 }
@@ -323,7 +324,7 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
 constexpr double kPointAsSpotBar = 12.0;
 bool pointLightThroughOneFrustum(const Scene& scene, const std::string& preset) {
   const Preset* p = findPreset(preset);
-  return scene.light.type == Light::Type::Point && p && p->layout != "cube";
+  return scene.light.type == Light::Type::Point && p && p->layout != "cube" && p->layout != "tetrahedron";
 }
 bool methodHoles(const std::string& scene, const std::string& preset) {
   return preset == "forward" && (scene == "grazing" || scene == "terrain");

@@ -20,7 +20,7 @@ Light sampledLight(const Light& light, glm::vec2 diskPoint);
 // light becomes a spot at its position aimed at the visible receivers (the survey's fitting for
 // a point light: one frustum around what the camera sees), its cone as wide as they need up to
 // 2 * kPointAsSpotMaxHalfDeg; beyond that the single-frustum layouts miss receivers, which is
-// what the cube layout (techniques/layouts/cube.h) is for.
+// what the cube layout (techniques/point/light_faces.h) is for.
 Light layoutLight(const LayoutInput& in);
 inline constexpr float kPointAsSpotMaxHalfDeg = 80.0f;
 Light pointAsSpot(const Light& point, const std::vector<glm::vec3>& receivers);

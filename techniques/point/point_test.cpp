@@ -2,7 +2,7 @@
 // and the cube layout's faces (every visible receiver inside its face's fitted window; faces the
 // view does not need are not drawn).
 #include "part/light_frame.h"
-#include "point/cube_layout.h"
+#include "point/light_faces.h"
 #include "reference/reference.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
@@ -154,42 +154,88 @@ std::vector<glm::vec3> visibleSamples(const LayoutInput& in, const Bounds& b) {
   return out;
 }
 
-int dominantFace(const glm::vec3& d) {
-  int best = 0;
-  for (int f = 1; f < 6; ++f)
-    if (glm::dot(d, cubeFaces()[f].axis) > glm::dot(d, cubeFaces()[best].axis)) best = f;
-  return best;
+// Every direction from the light falls in exactly one face's region, inside that face's whole
+// (unfitted) window: the faces cover the sphere and the pick in the shader is the face that
+// holds the point. Checked for both face sets, also with a rolled view (the jitter's rotation).
+TEST(LightFaces, EveryDirectionIsInsideTheWindowOfItsNearestFace) {
+  // A light amid a large box, a camera 15 units off that sees the whole ball of radius 0.5
+  // around it: every sample below is a visible receiver inside the scene's bounds.
+  const Scene scene = loadScene(test::writeTempFile("light_faces_" + std::to_string(::getpid()) + ".json", R"({
+    "objects":[{"name":"room","shape":"box","size":[40,40,40]}],
+    "light":{"type":"point","position":[0.3,0.2,0.1]},
+    "cameras":[{"position":[0.3,0.2,15.1],"target":[0.3,0.2,0.1],"fov_deg":10}]})"),
+                                test::kAssets);
+  ParamSet params = makeTechnique("cube", {}).params;
+  params.set("shadowmap.size", 64);
+  for (const FaceSet* set : {&cubeFaceSet(), &tetrahedronFaceSet()}) {
+    for (float roll : {0.0f, 0.3f}) {
+      LayoutInput in = inputFor(scene, scene.cameras.front(), params, 1.0f);
+      in.jitter.rotationRad = roll;
+      const FaceViews v = faceViews(*set, scene.light, in);
+      ASSERT_EQ(v.space.views.size(), set->faces.size());
+      for (int i = 0; i < 2000; ++i) {
+        // Fibonacci sphere: directions spread evenly, corners and edges of the faces included.
+        const float z = 1.0f - 2.0f * (i + 0.5f) / 2000.0f, r = std::sqrt(1.0f - z * z), a = 2.39996323f * i;
+        const glm::vec3 d(r * std::cos(a), z, r * std::sin(a));
+        const int f = nearestFace(*set, d);
+        glm::vec3 uv;
+        float depth = 0.0f;
+        const glm::vec3 p = scene.light.position + d * 0.5f;
+        ASSERT_TRUE(mapPointOf(p, v.space.views[f], uv, depth)) << set->name << " direction " << i;
+        EXPECT_GE(uv.x, -1e-3f) << set->name << " roll " << roll << " face " << f;
+        EXPECT_LE(uv.x, 1.001f) << set->name << " roll " << roll << " face " << f;
+        EXPECT_GE(uv.y, -1e-3f) << set->name << " roll " << roll << " face " << f;
+        EXPECT_LE(uv.y, 1.001f) << set->name << " roll " << roll << " face " << f;
+      }
+    }
+  }
+}
+
+// A tetrahedron's faces are a regular tetrahedron's: axes at dot -1/3, each region's corners at
+// dot 1/3 with its axis (70.53 degrees off it).
+TEST(LightFaces, TetrahedronFacesAreRegular) {
+  const FaceSet& t = tetrahedronFaceSet();
+  ASSERT_EQ(t.faces.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(glm::length(t.faces[i].axis), 1.0f, 1e-5f);
+    ASSERT_EQ(t.faces[i].corners.size(), 3u);
+    for (const glm::vec3& c : t.faces[i].corners) EXPECT_NEAR(glm::dot(c, t.faces[i].axis), 1.0f / 3.0f, 1e-5f);
+    for (size_t j = i + 1; j < 4; ++j) EXPECT_NEAR(glm::dot(t.faces[i].axis, t.faces[j].axis), -1.0f / 3.0f, 1e-5f);
+  }
+  EXPECT_EQ(nearestFace(t, {0, -1, 0}), 0);
 }
 
 // Every visible receiver falls inside the fitted window of the face it reads, and no face the
-// layout leaves undrawn holds one; looking away from the lamp needs fewer faces than six.
-TEST(CubeLayout, EveryVisibleReceiverIsInItsFacesWindowAndUndrawnFacesHoldNone) {
+// layout leaves undrawn holds one; looking away from the lamp needs fewer faces than all.
+TEST(LightFaces, EveryVisibleReceiverIsInItsFacesWindowAndUndrawnFacesHoldNone) {
   const Scene scene = loadScene("street", test::kAssets);
   ParamSet params = makeTechnique("cube", {}).params;
   const Bounds bounds = scene.boundsAt(0.0);
-  int fewest = 6;
-  for (const Camera& cam : scene.cameras) {
-    const LayoutInput in = inputFor(scene, cam, params, 16.0f / 9.0f);
-    const CubeViews v = cubeViews(scene.light, in);
-    ASSERT_EQ(v.space.views.size(), 6u);
-    fewest = std::min(fewest, v.neededCount());
-    const std::vector<glm::vec3> samples = visibleSamples(in, bounds);
-    ASSERT_GT(samples.size(), 100u) << cam.name;
-    for (const glm::vec3& p : samples) {
-      const int f = dominantFace(p - scene.light.position);
-      ASSERT_TRUE(v.needed[f]) << cam.name << ": a visible point in undrawn face " << f;
-      glm::vec3 uv;
-      float depth = 0.0f;
-      ASSERT_TRUE(mapPointOf(p, v.space.views[f], uv, depth)) << cam.name;
-      EXPECT_GE(uv.x, -1e-3f) << cam.name << " face " << f;
-      EXPECT_LE(uv.x, 1.001f) << cam.name << " face " << f;
-      EXPECT_GE(uv.y, -1e-3f) << cam.name << " face " << f;
-      EXPECT_LE(uv.y, 1.001f) << cam.name << " face " << f;
-      EXPECT_GE(depth, -1e-3f);
-      EXPECT_LE(depth, 1.001f);
+  for (const FaceSet* set : {&cubeFaceSet(), &tetrahedronFaceSet()}) {
+    int fewest = static_cast<int>(set->faces.size());
+    for (const Camera& cam : scene.cameras) {
+      const LayoutInput in = inputFor(scene, cam, params, 16.0f / 9.0f);
+      const FaceViews v = faceViews(*set, scene.light, in);
+      ASSERT_EQ(v.space.views.size(), set->faces.size());
+      fewest = std::min(fewest, v.neededCount());
+      const std::vector<glm::vec3> samples = visibleSamples(in, bounds);
+      ASSERT_GT(samples.size(), 100u) << cam.name;
+      for (const glm::vec3& p : samples) {
+        const int f = nearestFace(*set, p - scene.light.position);
+        ASSERT_TRUE(v.needed[f]) << set->name << " " << cam.name << ": a visible point in undrawn face " << f;
+        glm::vec3 uv;
+        float depth = 0.0f;
+        ASSERT_TRUE(mapPointOf(p, v.space.views[f], uv, depth)) << cam.name;
+        EXPECT_GE(uv.x, -1e-3f) << set->name << " " << cam.name << " face " << f;
+        EXPECT_LE(uv.x, 1.001f) << set->name << " " << cam.name << " face " << f;
+        EXPECT_GE(uv.y, -1e-3f) << set->name << " " << cam.name << " face " << f;
+        EXPECT_LE(uv.y, 1.001f) << set->name << " " << cam.name << " face " << f;
+        EXPECT_GE(depth, -1e-3f);
+        EXPECT_LE(depth, 1.001f);
+      }
     }
+    EXPECT_LT(fewest, static_cast<int>(set->faces.size())) << set->name << ": street's 'away' camera looks away";
   }
-  EXPECT_LT(fewest, 6) << "street's 'away' camera looks away from the lamp";
 }
 
 }  // namespace

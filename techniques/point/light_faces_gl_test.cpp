@@ -1,8 +1,8 @@
-// The cube layout on the GPU, in the numerically hard cases for a point light: the light
-// inside a caster, on a receiver's plane, touching a caster, at the camera, a view toward a cube
-// corner, a range shorter than the distance to the nearest caster. Every case is finite, in
-// [0, 1], and close to the ray-traced reference.
-#include "point/cube_layout.h"
+// The cube and tetrahedron layouts on the GPU, in the numerically hard cases for a point
+// light: the light inside a caster, on a receiver's plane, touching a caster, at the camera, a
+// view toward a cube corner or a tetrahedron vertex, a range shorter than the distance to the nearest caster. Every
+// case is finite, in [0, 1], and close to the ray-traced reference.
+#include "point/light_faces.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"
@@ -51,6 +51,12 @@ std::vector<PointCase> pointCases() {
          c.position = s.light.position + glm::vec3(-0.5f, 0.5f, -0.5f);
          c.target = c.position + glm::vec3(1.0f, -1.0f, 1.0f);
        }},
+      {"view toward a tetrahedron vertex (three faces meet)",
+       [](Scene& s, Camera& c) {
+         s.light.position = {0.0f, 3.0f, 0.0f};
+         c.position = s.light.position + glm::vec3(0.0f, 0.3f, 0.0f);
+         c.target = c.position - tetrahedronFaceSet().faces[1].axis;
+       }},
       {"range shorter than the nearest caster",
        [](Scene& s, Camera&) {
          s.light.position = {0.0f, 3.5f, 0.0f};
@@ -59,13 +65,13 @@ std::vector<PointCase> pointCases() {
   };
 }
 
-TEST(CubeGl, HardPointLightCasesStayFiniteAndNearTheReference) {
+TEST(LightFacesGl, HardPointLightCasesStayFiniteAndNearTheReference) {
   test::GlHarness h;
   for (const PointCase& c : pointCases()) {
     Scene scene =
         loadScene(test::writeTempFile("cube_gl_" + std::to_string(::getpid()) + ".json", kPointScene), test::kAssets);
     c.setup(scene, scene.cameras.front());
-    for (const char* preset : {"cube", "cube-pcf"}) {
+    for (const char* preset : {"cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf"}) {
       const test::Frame f = test::renderOnce(h, scene, preset, {"shadowmap.size=256"}, 96, 54);
       for (size_t i = 0; i < f.visibility.size(); i += 2) {
         ASSERT_TRUE(std::isfinite(f.visibility[i])) << c.name << " " << preset;
@@ -78,21 +84,25 @@ TEST(CubeGl, HardPointLightCasesStayFiniteAndNearTheReference) {
   }
 }
 
-// Looking away from the lamp the layout draws 3 faces, and the picture is still right.
-TEST(CubeGl, UndrawnFacesCostNoDrawAndChangeNothingSeen) {
+// Looking away from the lamp the cube draws 3 of its 6 faces and the tetrahedron 3 of 4 (each of its faces covers
+// more), and the picture is still right.
+TEST(LightFacesGl, UndrawnFacesCostNoDrawAndChangeNothingSeen) {
   test::GlHarness h;
   const Scene scene = loadScene("street", test::kAssets);
   h.renderer.setScene(scene);
-  Viewport vp(makeTechnique("cube", {"shadowmap.size=256"}));
-  FrameInput in;
-  in.camera =
-      *std::find_if(scene.cameras.begin(), scene.cameras.end(), [](const Camera& c) { return c.name == "away"; });
-  in.width = 96;
-  in.height = 54;
-  h.renderer.render(in, {&vp});
-  EXPECT_EQ(vp.layout->status(), "cube: 3 of 6 faces drawn");
-  const test::Frame f = test::readFrame(h.renderer, vp, 96, 54);
-  EXPECT_LE(test::wrongPct(scene, f), 1.0);
+  for (const auto& [preset, status] : {std::pair<std::string, std::string>{"cube", "cube: 3 of 6 faces drawn"},
+                                       {"tetrahedron", "tetrahedron: 3 of 4 faces drawn"}}) {
+    Viewport vp(makeTechnique(preset, {"shadowmap.size=256"}));
+    FrameInput in;
+    in.camera =
+        *std::find_if(scene.cameras.begin(), scene.cameras.end(), [](const Camera& c) { return c.name == "away"; });
+    in.width = 96;
+    in.height = 54;
+    h.renderer.render(in, {&vp});
+    EXPECT_EQ(vp.layout->status(), status);
+    const test::Frame f = test::readFrame(h.renderer, vp, 96, 54);
+    EXPECT_LE(test::wrongPct(scene, f), 1.0) << preset;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+// Shadow maps of a point light as several perspective faces: the cube's six 90-degree faces and
+// the tetrahedron's four (Liao 2010). Each face is fitted to what the camera sees through it (the
+// survey's "focus the shadow map" per face), and a face that holds no visible receiver is not
+// drawn.
+#pragma once
+
+#include "part/part.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// One face: a perspective view from the light along `axis`, and the directions of the corners of
+// the region of the sphere it owns (the directions whose nearest face axis is this one): four
+// for a cube face, three for a tetrahedron's.
+struct LightFace {
+  glm::vec3 axis, up;
+  std::vector<glm::vec3> corners;
+};
+struct FaceSet {
+  std::string name;
+  std::vector<LightFace> faces;
+};
+const FaceSet& cubeFaceSet();         // +X, -X, +Y, -Y, +Z, -Z
+const FaceSet& tetrahedronFaceSet();  // one face straight down, three tilted 19.47 degrees above the horizon
+
+// The index of the face whose axis is nearest the direction `d` (the largest dot product): the
+// face a point reads, as the GLSL module picks it.
+int nearestFace(const FaceSet& set, const glm::vec3& d);
+
+// The faces' views for the light (a point light at `light.position`) and which faces hold a
+// visible receiver (view frustum ∩ scene bounds ∩ the face's region). Every face has a view;
+// an undrawn face's is its whole region.
+struct FaceViews {
+  LightSpace space;
+  std::vector<bool> needed;
+  int neededCount() const;
+};
+FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in);
+
+void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out);
+
+}  // namespace sl
