@@ -27,6 +27,64 @@ static Camera pickCamera(const Scene& scene, const std::string& name) {
   throw ArgError("scene '" + scene.name + "' has no camera '" + name + "' (cameras: " + names + ")");
 }
 
+// Shows `view` instead of the colour image (none: the colour image); an unknown name is an
+// argument error listing the views the technique offers.
+void showView(Viewport& viewport, const std::string& view) {
+  if (view.empty()) return;
+  auto avail = viewport.availableViews();
+  if (std::find(avail.begin(), avail.end(), view) == avail.end()) {
+    std::string names;
+    for (const auto& v : avail) names += (names.empty() ? "" : ", ") + v;
+    throw ArgError("unknown view '" + view + "' (views: " + names + ")");
+  }
+  viewport.shownViews = {view};
+}
+
+// What one render run was, for its --stats file.
+struct RenderRun {
+  const Technique* technique;
+  const Scene* scene;
+  const Viewport* viewport;
+  const Renderer* renderer;
+  int width, height, frames;
+  long long nonfinite;
+};
+
+void writeRenderStats(const std::string& path, const RenderRun& run, const std::vector<double>& frameMs,
+                      const std::vector<std::string>& errors) {
+  nlohmann::json j;
+  j["technique"] = run.technique->presetId;
+  j["composition"] = {{"layout", run.technique->layout->id()},
+                      {"representation", run.technique->representation->id()},
+                      {"accumulation", run.technique->accumulation->id()}};
+  for (const auto& d : run.technique->params.decls())
+    j["params"][d.key] = formatValue(d, run.technique->params.get(d.key));
+  j["scene"] = run.scene->name;
+  j["size"] = {run.width, run.height};
+  j["frames"] = run.frames;
+  j["passes"] = nlohmann::json::array();
+  for (const auto& p : run.renderer->stats().passes) j["passes"].push_back(p.name);
+  j["pass_ms"] = nlohmann::json::object();
+  for (const auto& p : run.renderer->stats().passes) j["pass_ms"][p.name] = p.ms;
+  std::vector<double> sorted = frameMs;
+  std::sort(sorted.begin(), sorted.end());
+  j["ms_per_frame"] = sorted[sorted.size() / 2];
+  j["timer"] = run.renderer->stats().timer;
+  j["renderer"] = glRendererName();
+  j["nonfinite_pixels"] = run.nonfinite;
+  // What each part says about the last frame (the irregular z-buffer's list overflow, the deep map's fragment-list
+  // overflow, a hard test in an area-light scene ignoring the radius).
+  j["status"] = {{"layout", run.viewport->layout->status()},
+                 {"representation", run.viewport->representation->status()},
+                 {"accumulation", run.viewport->accumulation->status()}};
+  j["shadow_texels"] = run.viewport->shadowTexels();
+  j["shader_errors"] = errors;
+  j["gl_errors"] = glDebugErrorCount();
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error(path + ": cannot write stats");
+  f << j.dump(2) << "\n";
+}
+
 int runRenderCommand(int argc, char** argv) {
   for (int i = 2; i < argc; ++i)
     if (std::string(argv[i]) == "--help") {
@@ -56,16 +114,8 @@ int runRenderCommand(int argc, char** argv) {
     Renderer renderer(shaders);
     renderer.setScene(scene);
     Viewport viewport(technique);
-    std::string view = args.get("--view");
-    if (!view.empty()) {
-      auto avail = viewport.availableViews();
-      if (std::find(avail.begin(), avail.end(), view) == avail.end()) {
-        std::string names;
-        for (const auto& v : avail) names += (names.empty() ? "" : ", ") + v;
-        throw ArgError("unknown view '" + view + "' (views: " + names + ")");
-      }
-      viewport.shownViews = {view};
-    }
+    const std::string view = args.get("--view");
+    showView(viewport, view);
 
     std::vector<double> frameMs;
     double startTime = std::stod(args.get("--time", "0"));
@@ -88,36 +138,8 @@ int runRenderCommand(int argc, char** argv) {
     for (size_t i = 0; i < vis.size(); i += 2) nonfinite += std::isfinite(vis[i]) ? 0 : 1;
 
     if (args.has("--stats")) {
-      nlohmann::json j;
-      j["technique"] = technique.presetId;
-      j["composition"] = {{"layout", technique.layout->id()},
-                          {"representation", technique.representation->id()},
-                          {"accumulation", technique.accumulation->id()}};
-      for (const auto& d : technique.params.decls()) j["params"][d.key] = formatValue(d, technique.params.get(d.key));
-      j["scene"] = scene.name;
-      j["size"] = {width, height};
-      j["frames"] = frames;
-      j["passes"] = nlohmann::json::array();
-      for (const auto& p : renderer.stats().passes) j["passes"].push_back(p.name);
-      j["pass_ms"] = nlohmann::json::object();
-      for (const auto& p : renderer.stats().passes) j["pass_ms"][p.name] = p.ms;
-      std::vector<double> sorted = frameMs;
-      std::sort(sorted.begin(), sorted.end());
-      j["ms_per_frame"] = sorted[sorted.size() / 2];
-      j["timer"] = renderer.stats().timer;
-      j["renderer"] = glRendererName();
-      j["nonfinite_pixels"] = nonfinite;
-      // What each part says about the last frame (the irregular z-buffer's list overflow, the deep map's fragment-list
-      // overflow, a hard test in an area-light scene ignoring the radius).
-      j["status"] = {{"layout", viewport.layout->status()},
-                     {"representation", viewport.representation->status()},
-                     {"accumulation", viewport.accumulation->status()}};
-      j["shadow_texels"] = viewport.shadowTexels();
-      j["shader_errors"] = errors;
-      j["gl_errors"] = glDebugErrorCount();
-      std::ofstream f(args.get("--stats"));
-      if (!f) throw std::runtime_error(args.get("--stats") + ": cannot write stats");
-      f << j.dump(2) << "\n";
+      const RenderRun run{&technique, &scene, &viewport, &renderer, width, height, frames, nonfinite};
+      writeRenderStats(args.get("--stats"), run, frameMs, errors);
     }
     if (!errors.empty()) return 3;
     if (nonfinite > 0) {
