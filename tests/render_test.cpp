@@ -312,7 +312,8 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
                                                     "optimized-pcf",
                                                     "pixel-correct-optimized-pcf",
                                                     "cube-pcf",
-                                                    "tetrahedron-pcf"};
+                                                    "tetrahedron-pcf",
+                                                    "dual-paraboloid-pcf"};
   if (scene == "terrain") return preset == "pcss";
   return scene == "dueling-sunset" && std::find(filtered.begin(), filtered.end(), preset) != filtered.end();
 }
@@ -324,7 +325,9 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
 constexpr double kPointAsSpotBar = 12.0;
 bool pointLightThroughOneFrustum(const Scene& scene, const std::string& preset) {
   const Preset* p = findPreset(preset);
-  return scene.light.type == Light::Type::Point && p && p->layout != "cube" && p->layout != "tetrahedron";
+  static const std::vector<std::string> pointLayouts = {"cube", "tetrahedron", "dual-paraboloid"};
+  return scene.light.type == Light::Type::Point && p &&
+         std::find(pointLayouts.begin(), pointLayouts.end(), p->layout) == pointLayouts.end();
 }
 bool methodHoles(const std::string& scene, const std::string& preset) {
   return preset == "forward" && (scene == "grazing" || scene == "terrain");

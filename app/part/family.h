@@ -1,6 +1,7 @@
 // What a technique family declares about itself, in one place: the family.cpp of its folder under
-// techniques/ returns one Family (its parts, its presets, and the colour keys of its parts' views). techniques/registry.cpp is the list
-// of families, in the order `shadowlab list` shows them; nothing else names a family.
+// techniques/ returns one Family (its parts, its presets, and the colour keys of its parts' views).
+// techniques/registry.cpp is the list of families, in the order `shadowlab list` shows them; nothing else names a
+// family.
 #pragma once
 
 #include "part/colour_key.h"

@@ -18,6 +18,15 @@ float logWarp(float t, float delta) {
 }
 
 glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
+  if (view.projection == LightView::Projection::Paraboloid) {
+    const glm::vec3 v(view.view * glm::vec4(world, 1.0f));
+    const float r = glm::length(v);
+    if (!(r > 1e-20f)) return glm::vec4(0.0f);  // the light itself (or NaN): w = 0, not in the map
+    const glm::vec3 d = v / r;
+    const glm::vec2 uv = glm::vec2(d) / std::max(1.0f - d.z, 1e-4f) / kParaboloidWindow;
+    const float depth = (r - view.nearPlane) / (view.farPlane - view.nearPlane);
+    return {uv, depth * 2.0f - 1.0f, 1.0f};
+  }
   glm::vec4 c = view.viewProj * glm::vec4(world, 1.0f);
   if (view.logDelta > 0.0f) {
     c.w = std::max(c.w, 1e-3f);  // as layouts/single_matrix.glsl: behind the pole is off the map

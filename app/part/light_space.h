@@ -42,11 +42,18 @@ struct LightView {
   // > 0: a logarithmic warp of the map's y after the projection (LogPSM, layouts/logpsm.h):
   // y in [-1, 1] -> 2 ln(1 + t/logDelta) / ln(1 + 1/logDelta) - 1 with t = (y + 1) / 2.
   float logDelta = 0.0f;
-  // How casters reach the view: through viewProj alone, or bent by the log warp after it (the
-  // shadow pass then tessellates casters so their edges follow the bend; shadow_draw_plan.h).
-  enum class Projection { Matrix, LogWarp };
+  // How casters reach the view: through viewProj alone, bent by the log warp after it, or by a
+  // paraboloid of one hemisphere around the light (the shadow pass then tessellates casters so
+  // their edges follow the bend; shadow_draw_plan.h).
+  enum class Projection { Matrix, LogWarp, Paraboloid };
   Projection projection = Projection::Matrix;
 };
+
+// A paraboloid view (Brabec, Annen & Seidel 2002) maps the direction d from the light, in its
+// view frame (the hemisphere's axis is -z), to d.xy / (1 - d.z): the hemisphere fills the unit
+// disk, scaled by 1 / kParaboloidWindow so filter taps just past the rim read drawn texels. Its
+// depth is the radial distance over [nearPlane, farPlane] (layouts/dual_paraboloid.glsl).
+inline constexpr float kParaboloidWindow = 1.05f;
 
 // δ above this: the log warp is the identity to float precision (LightView::logDelta).
 inline constexpr float kNoWarpDelta = 1e6f;

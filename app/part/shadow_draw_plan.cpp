@@ -11,11 +11,18 @@ glm::mat4 ShadowTile::clip(const glm::mat4& layerViewProj) const {
 }
 
 std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment) {
-  const bool warped = std::any_of(lightSpace.views.begin(), lightSpace.views.end(),
-                                  [](const LightView& v) { return v.projection == LightView::Projection::LogWarp; });
-  if (!warped) return {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, fragment}};
+  const auto uses = [&](LightView::Projection kind) {
+    return std::any_of(lightSpace.views.begin(), lightSpace.views.end(),
+                       [&](const LightView& v) { return v.projection == kind; });
+  };
+  // Each bent projection has its own error bound for the chords (the control stage); the
+  // evaluation stage places vertices through the layout's layoutClip for both.
+  const char* control = uses(LightView::Projection::LogWarp)      ? "passes/shadow_warp.tesc"
+                        : uses(LightView::Projection::Paraboloid) ? "passes/shadow_paraboloid.tesc"
+                                                                  : nullptr;
+  if (!control) return {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, fragment}};
   return {{GL_VERTEX_SHADER, "passes/shadow.vert"},
-          {GL_TESS_CONTROL_SHADER, "passes/shadow_warp.tesc"},
+          {GL_TESS_CONTROL_SHADER, control},
           {GL_TESS_EVALUATION_SHADER, "passes/shadow_warp.tese"},
           {GL_FRAGMENT_SHADER, fragment}};
 }

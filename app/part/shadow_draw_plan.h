@@ -48,8 +48,8 @@ struct ShadowDrawPlan {
 };
 
 // The stages that draw casters into the light views: passes/shadow.vert, the tessellation
-// stages when a view is not a projective map (LightView::Projection::LogWarp bends straight
-// edges), then `fragment`.
+// stages when a view is not a projective map (LightView::Projection::LogWarp and ::Paraboloid
+// bend straight edges), then `fragment`.
 std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment);
 
 }  // namespace sl

@@ -16,6 +16,9 @@ in vec2 v_uv;
 void main() {
   float alpha = clamp(materialColor(v_uv).a, 0.0, 1.0);
   if (!(alpha > 0.0)) return;  // fully clear (or NaN): no attenuation
+#ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
+  if (layoutCullsCasterFragment(v_world)) return;  // e.g. behind a paraboloid's hemisphere
+#endif
   atomicMax(deepOverflow[2], uint(gl_NumSamples));  // the divisor of the compress pass
   int size = int(u_deep_size + 0.5);
   ivec2 texel = ivec2(gl_FragCoord.xy);

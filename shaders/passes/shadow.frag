@@ -7,6 +7,9 @@ void main() {
 #ifdef SL_LOG_WARP
   if (layoutBehindPole(v_world)) discard;
 #endif
+#ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
+  if (layoutCullsCasterFragment(v_world)) discard;  // e.g. behind a paraboloid's hemisphere
+#endif
 #ifdef SL_PERSPECTIVE_MAP
   // Perspective maps store light-view linear depth like orthographic ones do, so biases mean
   // the same everywhere. (Orthographic depth is already linear: no per-fragment write, which

@@ -33,6 +33,9 @@ void main() {
 #ifdef SL_LOG_WARP
   if (layoutBehindPole(v_world)) discard;
 #endif
+#ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
+  if (layoutCullsCasterFragment(v_world)) discard;  // e.g. behind a paraboloid's hemisphere
+#endif
 #ifdef SL_PERSPECTIVE_MAP
   float z = layoutDepth(v_world);
   gl_FragDepth = clamp(z, 0.0, 1.0);

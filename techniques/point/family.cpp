@@ -2,17 +2,21 @@
 // presets; the depth representations and accumulations of the other families combine with them by
 // name.
 #include "part/family.h"
+#include "point/dual_paraboloid.h"
 #include "point/light_faces.h"
 
 namespace sl {
 
 Family pointFamily() {
-  Family f{.id = "point",
-           .summary =
-               "point lights: a cube of six or a tetrahedron of four fitted faces, drawn only where the view needs "
-               "them (survey: fitting for a point light; Gerasimov 2004, omnidirectional shadow mapping; Liao 2010, "
-               "tetrahedron shadow mapping)"};
+  Family f{
+      .id = "point",
+      .summary =
+          "point lights: a cube of six or a tetrahedron of four fitted faces, or two paraboloid hemispheres, drawn "
+          "only where the view needs them (survey: fitting for a point light; Gerasimov 2004, omnidirectional shadow "
+          "mapping; Liao 2010, "
+          "tetrahedron shadow mapping; Brabec, Annen & Seidel 2002, dual-paraboloid shadow maps)"};
   registerPointLayouts(f.layouts);
+  f.layouts.push_back(makeDualParaboloidLayout());
   f.presets = {
       // 6 x 1024² faces: 1.5 times the texels of one 2048² map (measured on street: README). Both
       // faces of every caster: a light inside a closed caster sees only its back faces.
@@ -43,6 +47,20 @@ Family pointFamily() {
        "depth-pcf",
        "none",
        {"pcf.kernel=3", "shadowmap.size=1254", "shadowmap.cull=both"}},
+      // 2 x 1773²: the cube's texels within 0.07 %.
+      {"dual-paraboloid",
+       "point light: dual-paraboloid shadow map of 2 x 1773² hemispheres (the cube's texels), casters "
+       "tessellated, nearest depth test",
+       "dual-paraboloid",
+       "depth-nearest",
+       "none",
+       {"shadowmap.size=1773", "shadowmap.cull=both"}},
+      {"dual-paraboloid-pcf",
+       "point light: dual-paraboloid shadow map (2 x 1773²) with 3x3 box PCF",
+       "dual-paraboloid",
+       "depth-pcf",
+       "none",
+       {"pcf.kernel=3", "shadowmap.size=1773", "shadowmap.cull=both"}},
   };
   return f;
 }

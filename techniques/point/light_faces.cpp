@@ -47,14 +47,6 @@ FaceSet makeTetrahedron() {
   return set;
 }
 
-// The far plane: the farthest corner of the scene's bounds, or the light's range if nearer.
-float faceFar(const Light& light, const Bounds& bounds) {
-  float far = 0.0f;
-  for (const glm::vec3& c : boxCorners(bounds)) far = std::max(far, glm::length(c - light.position));
-  if (light.range > 0.0f) far = std::min(far, light.range);
-  return std::max(far * 1.01f, 1e-3f);
-}
-
 // The body a face owns between two distances along its axis, as 8 corners indexed like a
 // frustum's (a triangle's third corner doubled: clipCornersToPlanes accepts collapsed faces).
 std::vector<glm::vec3> faceRegion(const LightFace& face, const glm::vec3& apex, float near, float far) {
@@ -77,6 +69,13 @@ float enclosingFovDeg(const LightFace& face, const glm::mat4& view) {
 }
 
 }  // namespace
+
+float pointLightFar(const Light& light, const Bounds& bounds) {
+  float far = 0.0f;
+  for (const glm::vec3& c : boxCorners(bounds)) far = std::max(far, glm::length(c - light.position));
+  if (light.range > 0.0f) far = std::min(far, light.range);
+  return std::max(far * 1.01f, 1e-3f);
+}
 
 const FaceSet& cubeFaceSet() {
   static const FaceSet set = makeCube();
@@ -101,7 +100,7 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
   const Bounds bounds = in.scene->boundsAt(in.time);
   const int size = in.params->i("shadowmap.size");
   const bool snap = in.params->b("layout.snap");
-  const float far = faceFar(light, bounds);
+  const float far = pointLightFar(light, bounds);
   // A near plane this close keeps casters touching the light in the map; stored depth is linear,
   // so it costs no precision.
   const float near = far * 1e-4f;

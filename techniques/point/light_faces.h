@@ -40,6 +40,10 @@ struct FaceViews {
 };
 FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in);
 
+// The far plane of a point light's views: the farthest corner of the scene's bounds, or the
+// light's range if nearer.
+float pointLightFar(const Light& light, const Bounds& bounds);
+
 void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out);
 
 }  // namespace sl

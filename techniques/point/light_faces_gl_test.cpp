@@ -71,7 +71,8 @@ TEST(LightFacesGl, HardPointLightCasesStayFiniteAndNearTheReference) {
     Scene scene =
         loadScene(test::writeTempFile("cube_gl_" + std::to_string(::getpid()) + ".json", kPointScene), test::kAssets);
     c.setup(scene, scene.cameras.front());
-    for (const char* preset : {"cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf"}) {
+    for (const char* preset :
+         {"cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf", "dual-paraboloid", "dual-paraboloid-pcf"}) {
       const test::Frame f = test::renderOnce(h, scene, preset, {"shadowmap.size=256"}, 96, 54);
       for (size_t i = 0; i < f.visibility.size(); i += 2) {
         ASSERT_TRUE(std::isfinite(f.visibility[i])) << c.name << " " << preset;
@@ -103,6 +104,27 @@ TEST(LightFacesGl, UndrawnFacesCostNoDrawAndChangeNothingSeen) {
     const test::Frame f = test::readFrame(h.renderer, vp, 96, 54);
     EXPECT_LE(test::wrongPct(scene, f), 1.0) << preset;
   }
+}
+
+// A bar passing just under the lamp spans most of the lower hemisphere: the paraboloid bends its
+// long edges into arcs, and only the tessellation keeps its shadow's outline. At 256² the coarse
+// budget (16 texels: 2-3 pieces an edge) must be clearly worse than the default (0.5 texels).
+TEST(DualParaboloidGl, TessellationKeepsBentEdgesOnTheirArcs) {
+  test::GlHarness h;
+  const Scene scene = loadScene(test::writeTempFile("paraboloid_bar_" + std::to_string(::getpid()) + ".json", R"({
+    "objects":[{"name":"ground","shape":"plane","size":[30,30],"subdivisions":4},
+      {"name":"bar","shape":"box","size":[20,0.1,0.1],"transform":{"translate":[0,2.5,0]}}],
+    "light":{"type":"point","position":[0,3,0.3]},
+    "cameras":[{"position":[0,14,9],"target":[0,0,0],"fov_deg":70}]})"),
+                                test::kAssets);
+  double wrong[2];
+  const char* budgets[2] = {"paraboloid.max_error=0.5", "paraboloid.max_error=16"};
+  for (int i = 0; i < 2; ++i) {
+    const test::Frame f = test::renderOnce(h, scene, "dual-paraboloid", {"shadowmap.size=256", budgets[i]}, 160, 90);
+    wrong[i] = test::wrongPct(scene, f);
+  }
+  EXPECT_LT(wrong[0], 1.0);
+  EXPECT_LT(wrong[0] * 3.0, wrong[1]) << "default " << wrong[0] << " %, coarse " << wrong[1] << " %";
 }
 
 }  // namespace
