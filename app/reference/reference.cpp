@@ -19,8 +19,8 @@
 
 namespace sl {
 
-namespace {
-
+// Outside the anonymous namespace: ReferenceTracer::Impl holds these (GCC warns of a member whose
+// type has internal linkage).
 // What the alpha filter needs for one alpha-masked geometry. Copied out of the Scene so the
 // tracer stays valid if the caller's Scene goes away or is edited after construction.
 struct AlphaGeometry {
@@ -50,6 +50,8 @@ struct AlphaGeometry {
     return alpha * (texture.rgba[texel + 3] / 255.0f);
   }
 };
+
+namespace {
 
 // Occlusion filter: rejects hits on alpha-masked texels so shadow rays pass through holes.
 void alphaOcclusionFilter(const RTCFilterFunctionNArguments* args) {
