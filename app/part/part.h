@@ -53,6 +53,9 @@ class LayoutState : public PartState {
   virtual LightSpace compute(const LayoutInput& in);
   // Adds passes before the shadow pass; returns the resources the shadow pass must read.
   virtual std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) { return {}; }
+  // Adds passes after the shadow pass, reading this frame's map (ctx.shadowMap): the layout's
+  // debug views of what was drawn.
+  virtual void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) {}
   // How the shadow pass draws each light view's layer (one entry per view, whole layers by
   // default). A layout that rasterizes layers piecewise (paged virtual maps) asks for tiles;
   // `keepsLayers`: the representation keeps a layer's content when bound for tiles

@@ -367,6 +367,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
 
   PartContext part = partContext(vp, tag, in, cameraMoved, prelude);
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
+  vp.layout->addPassesAfterShadow(g, part);
   // What the visibility tests read: the shadow map, or what the representation made of it.
   const std::string sm = vp.representation->addPasses(g, part);
   vp.shadowResource_ = sm;

@@ -1,6 +1,7 @@
 #include "point/dual_paraboloid.h"
 
 #include "part/light_frame.h"
+#include "point/directions_view.h"
 #include "point/light_faces.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -74,6 +75,8 @@ class ParaboloidState : public LayoutState {
       if (!needed_[h]) layers[h] = ShadowLayerDraw{.tiled = true, .tiles = {}};  // cleared, nothing drawn
   }
   std::string status() const override { return status_; }
+  std::vector<std::string> views() const override { return {"directions"}; }
+  void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) override { addDirectionsViewPass(graph, ctx); }
 
  private:
   std::array<bool, 2> needed_{true, true};

@@ -1,5 +1,6 @@
 // The point family's layouts: the cube and the tetrahedron, one class over their face sets.
 #include "part/light_frame.h"
+#include "point/directions_view.h"
 #include "point/light_faces.h"
 
 #include <string>
@@ -36,6 +37,8 @@ class FaceState : public LayoutState {
       if (!needed_[f]) layers[f] = ShadowLayerDraw{.tiled = true, .tiles = {}};  // cleared, nothing drawn
   }
   std::string status() const override { return status_; }
+  std::vector<std::string> views() const override { return {"directions"}; }
+  void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) override { addDirectionsViewPass(graph, ctx); }
 
  private:
   const FaceSet& set_;

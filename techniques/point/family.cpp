@@ -2,6 +2,7 @@
 // presets; the depth representations and accumulations of the other families combine with them by
 // name.
 #include "part/family.h"
+#include "point/directions_view.h"
 #include "point/dual_paraboloid.h"
 #include "point/light_faces.h"
 
@@ -62,6 +63,7 @@ Family pointFamily() {
        "none",
        {"pcf.kernel=3", "shadowmap.size=1773", "shadowmap.cull=both"}},
   };
+  addDirectionsViewKey(f.viewKeys);
   return f;
 }
 

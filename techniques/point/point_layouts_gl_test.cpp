@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sl {
@@ -58,6 +59,30 @@ TEST_P(PointLayoutGl, EveryRepresentationStaysNearTheReference) {
     if (std::string(c.preset) == "pcss" && GetParam() == "tetrahedron") continue;
     EXPECT_LE(viewportErrorMetrics(vp, reference).wrongPixelPct, c.visibilityBar) << c.preset << " on " << GetParam();
   }
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
+// The `directions` view: straight down from the lamp is the cube's -Y face (view 4, blue), the
+// tetrahedron's and the paraboloids' first view (red); the drawn map is read this frame (the
+// ground under the lamp is not cleared).
+TEST_P(PointLayoutGl, DirectionsViewShowsTheViewHoldingEachDirection) {
+  test::GlHarness h;
+  const Scene scene = loadScene("street", test::kAssets);
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique(GetParam(), {"shadowmap.size=256"}));
+  vp.shownViews = {"directions"};
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 144;
+  in.height = 72;
+  in.cut = true;
+  h.renderer.render(in, {&vp});  // one frame: what it shows must be this frame's map
+  const std::vector<unsigned char> img = vp.viewTexture("directions")->readRgba8();
+  const unsigned char* down = &img[(0 * 144 + 72) * 4];  // row 0 is the bottom (elevation -90)
+  const bool blue = down[2] > down[0] && down[2] > down[1], red = down[0] > down[1] && down[0] > down[2];
+  EXPECT_TRUE(GetParam() == "cube" ? blue : red)
+      << GetParam() << ": straight down reads " << int(down[0]) << "," << int(down[1]) << "," << int(down[2]);
+  EXPECT_GT(std::max({down[0], down[1], down[2]}), 40) << "the ground under the lamp is drawn, not cleared";
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
 
