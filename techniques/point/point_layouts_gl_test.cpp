@@ -3,7 +3,7 @@
 // pixel-correct accumulation, on street's lamp. One test per layout: finite, in [0, 1], and wrong
 // pixels under a bar per kind (measured at these settings in techniques/point/README.md; a face
 // read from the wrong view or a bias gone wild lights whole regions, tens of percent).
-#include "bench/reference_cache.h"
+#include "point/street_truth.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"
@@ -20,16 +20,8 @@ class PointLayoutGl : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointLayoutGl, EveryRepresentationStaysNearTheReference) {
   test::GlHarness h;
-  const Scene scene = loadScene("street", test::kAssets);
-  h.renderer.setScene(scene);
   // The bench's instrument: the reference's visibility and valid pixels (lit side, covered).
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
-  ReferenceSettings rs;
-  rs.samples = 16;
-  const ReferenceImage reference = ReferenceCache(scene, rs).forFrame(h.renderer, in);
+  const test::StreetTruth t = test::streetTruth(h, 160, 90);
   struct Case {
     const char* preset;
     double visibilityBar, imageBar;  // % wrong pixels
@@ -42,22 +34,20 @@ TEST_P(PointLayoutGl, EveryRepresentationStaysNearTheReference) {
        {Case{"standard", 3, 3}, Case{"pcf", 10, 3}, Case{"poisson", 10, 4}, Case{"bilinear", 6, 3}, Case{"pcss", 10, 3},
         Case{"pixel-correct", 3, 3}, Case{"vsm", 10, 8}, Case{"esm", 10, 8}, Case{"msm", 10, 8}}) {
     Viewport vp(makeTechnique(c.preset, {"technique.layout=" + GetParam(), "shadowmap.size=256"}));
-    for (int frame = 0; frame < 2; ++frame) {  // as the bench: a frame from a cut, then one more
-      in.cut = frame == 0;
-      h.renderer.render(in, {&vp});
-    }
+    test::renderFromCut(h, t.in, vp);
     const test::Frame f = test::readFrame(h.renderer, vp, 160, 90);
     for (size_t i = 0; i < f.visibility.size(); i += 2) {
       ASSERT_TRUE(std::isfinite(f.visibility[i])) << c.preset;
       ASSERT_GE(f.visibility[i], 0.0f) << c.preset;
       ASSERT_LE(f.visibility[i], 1.0f) << c.preset;
     }
-    const double image = viewportImageError(h.renderer, in, vp, reference.visibility, reference.valid).imageWrongPct;
+    const double image =
+        viewportImageError(h.renderer, t.in, vp, t.reference.visibility, t.reference.valid).imageWrongPct;
     EXPECT_LE(image, c.imageBar) << c.preset << " on " << GetParam();
     // PCSS over the tetrahedron's 141-degree faces: stripes of self-shadowing on the ground far
     // off the faces' axes (35 % of the visibility, 1.9 % of the image; README, failure cases).
     if (std::string(c.preset) == "pcss" && GetParam() == "tetrahedron") continue;
-    EXPECT_LE(viewportErrorMetrics(vp, reference).wrongPixelPct, c.visibilityBar) << c.preset << " on " << GetParam();
+    EXPECT_LE(viewportErrorMetrics(vp, t.reference).wrongPixelPct, c.visibilityBar) << c.preset << " on " << GetParam();
   }
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
@@ -87,12 +77,7 @@ TEST_P(PointLayoutGl, DirectionsViewShowsTheViewHoldingEachDirection) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PointLayouts, PointLayoutGl, ::testing::Values("cube", "tetrahedron", "dual-paraboloid"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           for (char& ch : name)
-                             if (ch == '-') ch = '_';
-                           return name;
-                         });
+                         test::presetTestName);
 
 }  // namespace
 }  // namespace sl

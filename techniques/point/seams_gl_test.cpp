@@ -2,8 +2,8 @@
 // whose receiver lies within 2 texels of the plane where two views meet (a cube or tetrahedron
 // face edge, the paraboloids' equator) against all other pixels, on street's lamp with each
 // preset's defaults. Also checks the instrument: seamDistanceTexels against a hand-computed case.
-#include "bench/reference_cache.h"
 #include "point/seams.h"
+#include "point/street_truth.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"
@@ -41,27 +41,17 @@ class PointSeamsGl : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointSeamsGl, SeamErrorIsMeasuredApartFromTheRest) {
   test::GlHarness h;
-  const Scene scene = loadScene("street", test::kAssets);
-  h.renderer.setScene(scene);
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 320;
-  in.height = 180;
-  ReferenceSettings rs;
-  rs.samples = 16;
-  const ReferenceImage reference = ReferenceCache(scene, rs).forFrame(h.renderer, in);
+  const test::StreetTruth t = test::streetTruth(h, 320, 180);
+  const ReferenceImage& reference = t.reference;
   Viewport vp(makeTechnique(GetParam()));
-  for (int frame = 0; frame < 2; ++frame) {
-    in.cut = frame == 0;
-    h.renderer.render(in, {&vp});
-  }
+  test::renderFromCut(h, t.in, vp);
   const test::Frame f = test::readFrame(h.renderer, vp, 320, 180);
   long seam = 0, seamWrong = 0, rest = 0, restWrong = 0;
   for (size_t i = 0; i < reference.valid.size(); ++i) {
     if (!reference.valid[i] || f.position[4 * i + 3] < 0.5f) continue;
     const glm::vec3 p(f.position[4 * i], f.position[4 * i + 1], f.position[4 * i + 2]);
     const bool wrong = std::abs(f.visibility[2 * i] - reference.visibility[i]) > 30.0f / 255.0f;
-    if (seamDistanceTexels(vp.lightSpace, scene.light.position, p) <= 2.0f) {
+    if (seamDistanceTexels(vp.lightSpace, t.scene.light.position, p) <= 2.0f) {
       ++seam;
       seamWrong += wrong;
     } else {
@@ -79,12 +69,7 @@ TEST_P(PointSeamsGl, SeamErrorIsMeasuredApartFromTheRest) {
 INSTANTIATE_TEST_SUITE_P(PointSeams, PointSeamsGl,
                          ::testing::Values("cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf", "dual-paraboloid",
                                            "dual-paraboloid-pcf"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           for (char& ch : name)
-                             if (ch == '-') ch = '_';
-                           return name;
-                         });
+                         test::presetTestName);
 
 }  // namespace
 }  // namespace sl
