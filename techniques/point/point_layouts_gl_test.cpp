@@ -3,7 +3,7 @@
 // pixel-correct accumulation, on street's lamp. One test per layout: finite, in [0, 1], and wrong
 // pixels under a bar per kind (measured at these settings in techniques/point/README.md; a face
 // read from the wrong view or a bias gone wild lights whole regions, tens of percent).
-#include "point/street_truth.h"
+#include "point/street_truth_test_util.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"

@@ -4,7 +4,7 @@
 // preset's defaults. Also checks the instrument: seamDistanceTexels against a hand-computed case.
 #include "bench/reference_cache.h"
 #include "point/seams.h"
-#include "point/street_truth.h"
+#include "point/street_truth_test_util.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"
