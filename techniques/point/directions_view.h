@@ -2,7 +2,11 @@
 // tinted by the light view that holds it (shaders/views/light_directions.frag).
 #pragma once
 
+#include "part/colour_key.h"
 #include "part/part.h"
+
+#include <map>
+#include <string>
 
 namespace sl {
 

@@ -1,8 +1,7 @@
 #include "point/dual_paraboloid.h"
 
 #include "part/light_frame.h"
-#include "point/directions_view.h"
-#include "point/light_faces.h"
+#include "point/point_layout.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -10,14 +9,14 @@
 
 namespace sl {
 
-ParaboloidViews paraboloidViews(const Light& light, const LayoutInput& in) {
+FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
   const Bounds bounds = in.scene->boundsAt(in.time);
   const int size = in.params->i("shadowmap.size");
   const float far = pointLightFar(light, bounds);
   const float near = far * 1e-4f;  // as the cube's: linear depth, casters touching the light kept
   const std::vector<glm::vec3> box = boxCorners(bounds);
   const std::vector<glm::vec4> seen = frustumPlanes(in.cameraProj * in.cameraView);
-  ParaboloidViews out;
+  FaceViews out;
   out.space.views.clear();
   out.space.size = size;
   const glm::vec3 axes[2] = {{0, -1, 0}, {0, 1, 0}}, ups[2] = {{0, 0, -1}, {0, 0, 1}};
@@ -41,76 +40,28 @@ ParaboloidViews paraboloidViews(const Light& light, const LayoutInput& in) {
     // behind it: a hemisphere is needed when a visible receiver lies on its side.
     std::vector<glm::vec4> planes = seen;
     planes.push_back(glm::vec4(axes[h], -glm::dot(axes[h], light.position)));
-    out.needed[h] = !clipCornersToPlanes(box, planes).empty();
+    out.needed.push_back(!clipCornersToPlanes(box, planes).empty());
   }
   return out;
 }
 
-namespace {
-
-ParaboloidViews paraboloidsOrFocused(const LayoutInput& in, bool& pointLight) {
-  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
-  pointLight = light.type == Light::Type::Point;
-  if (pointLight) return paraboloidViews(light, in);
-  ParaboloidViews focused;
-  focused.space = focusedMap(in, focusBody(in));
-  focused.needed.fill(true);
-  return focused;
+std::unique_ptr<Layout> makeDualParaboloidLayout() {
+  return makePointLayout(
+      {.id = "dual-paraboloid",
+       .help = "point light: two paraboloid views, one per hemisphere (Brabec, Annen & Seidel 2002); casters "
+               "tessellated so their bent edges stay within paraboloid.max_error texels",
+       .glslModule = "layouts/dual_paraboloid.glsl",
+       .unit = "hemispheres",
+       .params = {{.key = "paraboloid.max_error",
+                   .type = ParamType::Float,
+                   .min = 0.05,
+                   .max = 16,
+                   .defaultValue = 0.5,
+                   .unit = "texels",
+                   .help = "largest distance between a tessellated caster edge and its true (circle-arc) image in a "
+                           "paraboloid map; smaller = more tessellation",
+                   .logScale = true}},
+       .views = paraboloidViews});
 }
-
-class ParaboloidState : public LayoutState {
- public:
-  using LayoutState::LayoutState;
-  LightSpace compute(const LayoutInput& in) override {
-    bool pointLight = false;
-    ParaboloidViews v = paraboloidsOrFocused(in, pointLight);
-    needed_ = v.needed;
-    status_ = pointLight
-                  ? "dual-paraboloid: " + std::to_string(int(needed_[0]) + int(needed_[1])) + " of 2 hemispheres drawn"
-                  : "dual-paraboloid: the scene's light is not a point light; one focused map";
-    return v.space;
-  }
-  void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool) override {
-    for (size_t h = 0; h < layers.size() && h < needed_.size(); ++h)
-      if (!needed_[h]) layers[h] = ShadowLayerDraw{.tiled = true, .tiles = {}};  // cleared, nothing drawn
-  }
-  std::string status() const override { return status_; }
-  std::vector<std::string> views() const override { return {"directions"}; }
-  void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) override { addDirectionsViewPass(graph, ctx); }
-
- private:
-  std::array<bool, 2> needed_{true, true};
-  std::string status_;
-};
-
-class DualParaboloidLayout : public Layout {
- public:
-  std::string id() const override { return "dual-paraboloid"; }
-  std::string help() const override {
-    return "point light: two paraboloid views, one per hemisphere (Brabec, Annen & Seidel 2002); casters "
-           "tessellated so their bent edges stay within paraboloid.max_error texels";
-  }
-  std::string glslModule() const override { return "layouts/dual_paraboloid.glsl"; }
-  std::vector<ParamDecl> params() const override {
-    return {{.key = "paraboloid.max_error",
-             .type = ParamType::Float,
-             .min = 0.05,
-             .max = 16,
-             .defaultValue = 0.5,
-             .unit = "texels",
-             .help = "largest distance between a tessellated caster edge and its true (circle-arc) image in a "
-                     "paraboloid map; smaller = more tessellation",
-             .logScale = true}};
-  }
-  LightSpace compute(const LayoutInput& in) const override {
-    bool pointLight = false;
-    return paraboloidsOrFocused(in, pointLight).space;
-  }
-  std::unique_ptr<LayoutState> createState() const override { return std::make_unique<ParaboloidState>(*this); }
-};
-
-}  // namespace
-
-std::unique_ptr<Layout> makeDualParaboloidLayout() { return std::make_unique<DualParaboloidLayout>(); }
 
 }  // namespace sl

@@ -4,19 +4,13 @@
 // hemisphere that holds no visible receiver is not drawn.
 #pragma once
 
-#include "part/part.h"
-
-#include <array>
+#include "point/light_faces.h"
 
 namespace sl {
 
-// The hemispheres' axes: view 0 looks straight down (a lamp's ground in one disk), view 1 up; the
-// seam, the equator, is level with the light.
-struct ParaboloidViews {
-  LightSpace space;
-  std::array<bool, 2> needed{};
-};
-ParaboloidViews paraboloidViews(const Light& light, const LayoutInput& in);
+// The hemispheres' views (view 0 looks straight down, a lamp's ground in one disk; view 1 up;
+// the seam, the equator, is level with the light) and which hold a visible receiver.
+FaceViews paraboloidViews(const Light& light, const LayoutInput& in);
 
 std::unique_ptr<Layout> makeDualParaboloidLayout();
 

@@ -30,7 +30,7 @@ LayoutInput paraboloidInput(const Scene& scene, const Camera& cam, const ParamSe
 TEST(DualParaboloid, MapsDirectionsToTheStereographicDisk) {
   const Scene scene = loadScene("street", test::kAssets);
   const ParamSet params = makeTechnique("dual-paraboloid", {}).params;
-  const ParaboloidViews v = paraboloidViews(scene.light, paraboloidInput(scene, scene.cameras.front(), params));
+  const FaceViews v = paraboloidViews(scene.light, paraboloidInput(scene, scene.cameras.front(), params));
   ASSERT_EQ(v.space.views.size(), 2u);
   const glm::vec3 axes[2] = {{0, -1, 0}, {0, 1, 0}};
   for (int h = 0; h < 2; ++h) {
@@ -59,7 +59,7 @@ TEST(DualParaboloid, DrawsOnlyTheHemispheresAViewNeeds) {
   const Scene scene = loadScene("street", test::kAssets);
   const ParamSet params = makeTechnique("dual-paraboloid", {}).params;
   for (const Camera& cam : scene.cameras) {
-    const ParaboloidViews v = paraboloidViews(scene.light, paraboloidInput(scene, cam, params));
+    const FaceViews v = paraboloidViews(scene.light, paraboloidInput(scene, cam, params));
     EXPECT_TRUE(v.needed[0]) << cam.name << ": every camera sees the street below the lamp";
     // A visible point above the lamp's level needs the upper hemisphere; the check below is the
     // converse, with points sampled from the frustum.

@@ -1,10 +1,9 @@
-// The point-light family's manifest (issue #25): the cube and tetrahedron layouts and their
-// presets; the depth representations and accumulations of the other families combine with them by
-// name.
+// The point-light family's manifest (issue #25): the cube, tetrahedron and dual-paraboloid layouts
+// and their presets; the depth representations and accumulations of the other families combine
+// with them by name.
 #include "part/family.h"
 #include "point/directions_view.h"
-#include "point/dual_paraboloid.h"
-#include "point/light_faces.h"
+#include "point/point_layout.h"
 
 namespace sl {
 
@@ -17,7 +16,6 @@ Family pointFamily() {
           "mapping; Liao 2010, "
           "tetrahedron shadow mapping; Brabec, Annen & Seidel 2002, dual-paraboloid shadow maps)"};
   registerPointLayouts(f.layouts);
-  f.layouts.push_back(makeDualParaboloidLayout());
   f.presets = {
       // 6 x 1024² faces: 1.5 times the texels of one 2048² map (measured on street: README). Both
       // faces of every caster: a light inside a closed caster sees only its back faces.

@@ -30,20 +30,20 @@ const FaceSet& tetrahedronFaceSet();  // one face straight down, three tilted 19
 // face a point reads, as the GLSL module picks it.
 int nearestFace(const FaceSet& set, const glm::vec3& d);
 
-// The faces' views for the light (a point light at `light.position`) and which faces hold a
-// visible receiver (view frustum ∩ scene bounds ∩ the face's region). Every face has a view;
-// an undrawn face's is its whole region.
+// A point layout's views (faces, or the paraboloids' hemispheres) and which of them hold a
+// visible receiver.
 struct FaceViews {
   LightSpace space;
   std::vector<bool> needed;
   int neededCount() const;
 };
+// The faces' views for the light (a point light at `light.position`); a face is needed when
+// view frustum ∩ scene bounds ∩ its region is not empty. Every face has a view; an undrawn
+// face's is its whole region.
 FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in);
 
 // The far plane of a point light's views: the farthest corner of the scene's bounds, or the
 // light's range if nearer.
 float pointLightFar(const Light& light, const Bounds& bounds);
-
-void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out);
 
 }  // namespace sl

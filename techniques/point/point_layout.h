@@ -1,0 +1,25 @@
+// What the point family's layouts share: under a point light a set of views (the cube's or the
+// tetrahedron's faces, the paraboloids' hemispheres), of which the shadow pass draws only those
+// the frame needs; under any other light one focused map. The state says how many views it drew
+// ("<id>: N of M <unit> drawn") and offers the `directions` view.
+#pragma once
+
+#include "point/light_faces.h"
+
+#include <functional>
+#include <string>
+
+namespace sl {
+
+struct PointLayoutSpec {
+  std::string id, help, glslModule;
+  std::string unit;  // what its views are called in the status line: "faces", "hemispheres"
+  std::vector<ParamDecl> params;
+  std::function<FaceViews(const Light& pointLight, const LayoutInput& in)> views;
+};
+std::unique_ptr<Layout> makePointLayout(PointLayoutSpec spec);
+
+// The cube, the tetrahedron and the dual paraboloid.
+void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out);
+
+}  // namespace sl
