@@ -110,6 +110,15 @@ inline ErrorMetrics visibilityError(const Scene& scene, const Frame& f, double t
 // The percentage of pixels whose visibility is wrong against the ray-traced reference.
 inline double wrongPct(const Scene& scene, const Frame& f) { return visibilityError(scene, f).wrongPixelPct; }
 
+// `frames` frames of `vp` from a cut (default two, as the bench's --warmup 1 --frames 1:
+// accumulations have one frame of history, as a user sees them a moment after a cut).
+inline void renderFromCut(GlHarness& h, FrameInput in, Viewport& vp, int frames = 2) {
+  for (int f = 0; f < frames; ++f) {
+    in.cut = f == 0;
+    h.renderer.render(in, {&vp});
+  }
+}
+
 // One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.
 inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset,
                         const std::vector<std::string>& sets, int w, int hgt) {

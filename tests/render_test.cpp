@@ -258,15 +258,6 @@ class EveryPreset : public ::testing::TestWithParam<ScenePreset> {
 
 constexpr int kAccuracyW = 320, kAccuracyH = 180;
 
-// Two frames from a cut, as the bench's --warmup 1 --frames 1: accumulations have one frame of
-// history, as a user sees them a moment after a cut.
-void renderTwice(GlHarness& h, FrameInput in, Viewport& vp) {
-  for (int f = 0; f < 2; ++f) {
-    in.cut = f == 0;
-    h.renderer.render(in, {&vp});
-  }
-}
-
 const SceneTruth& EveryPreset::truth(const std::string& id) {
   if (truth_.scene == id) return truth_;
   truth_ = SceneTruth{id, {}, {}, 0, 0};
@@ -278,7 +269,7 @@ const SceneTruth& EveryPreset::truth(const std::string& id) {
   ReferenceCache cache(scene_, rs);
   truth_.reference = cache.forFrame(harness_->renderer, truth_.in);
   Viewport standard(makeTechnique("standard"));
-  renderTwice(*harness_, truth_.in, standard);
+  test::renderFromCut(*harness_, truth_.in, standard);
   truth_.standardWrongPct = viewportErrorMetrics(standard, truth_.reference).wrongPixelPct;
   truth_.standardImageWrongPct =
       viewportImageError(harness_->renderer, truth_.in, standard, truth_.reference.visibility, truth_.reference.valid)
@@ -342,7 +333,7 @@ TEST_P(EveryPreset, WithinThreeTimesStandardsWrongPixels) {
   if (!s) GTEST_SKIP() << id << " needs shared/scenes-real";
   const SceneTruth& t = truth(id);
   Viewport vp(makeTechnique(preset));
-  renderTwice(*harness_, t.in, vp);
+  test::renderFromCut(*harness_, t.in, vp);
   const ErrorMetrics m = viewportErrorMetrics(vp, t.reference);
   EXPECT_EQ(m.nonfinite, 0) << id << " " << preset;
   double bar = std::max(5.0, 3.0 * t.standardWrongPct);

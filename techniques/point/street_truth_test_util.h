@@ -1,6 +1,6 @@
 // What the point family's GL tests measure against, as the bench does: street's first camera at
-// a size, its ray-traced reference (16 samples, cached), and a viewport rendered two frames from
-// a cut.
+// a size and its ray-traced reference (16 samples, cached); viewports are rendered two frames
+// from a cut (test::renderFromCut).
 #pragma once
 
 #include "bench/reference_cache.h"
@@ -29,14 +29,6 @@ inline StreetTruth streetTruth(GlHarness& h, int width, int height) {
   rs.samples = 16;
   t.reference = ReferenceCache(t.scene, rs).forFrame(h.renderer, t.in);
   return t;
-}
-
-// Two frames from a cut, as the bench's --warmup 1 --frames 1.
-inline void renderFromCut(GlHarness& h, FrameInput in, Viewport& vp) {
-  for (int frame = 0; frame < 2; ++frame) {
-    in.cut = frame == 0;
-    h.renderer.render(in, {&vp});
-  }
 }
 
 // A preset's id as a test-name suffix (gtest allows no '-').
