@@ -272,7 +272,8 @@ const SceneTruth& EveryPreset::truth(const std::string& id) {
   test::renderFromCut(*harness_, truth_.in, standard);
   truth_.standardWrongPct = viewportErrorMetrics(standard, truth_.reference).wrongPixelPct;
   truth_.standardImageWrongPct =
-      viewportImageError(harness_->renderer, truth_.in, standard, truth_.reference.visibility, truth_.reference.valid)
+      viewportImageError(harness_->renderer, truth_.in, standard, truth_.reference.visibility, truth_.reference.valid,
+                         truth_.reference.otherLights)
           .imageWrongPct;
   return truth_;
 }
@@ -341,7 +342,7 @@ TEST_P(EveryPreset, WithinThreeTimesStandardsWrongPixels) {
   if (pointLightThroughOneFrustum(*s, preset)) bar = std::max(kPointAsSpotBar, bar);
   if (heldToTheImage(id, preset)) {
     const ImageErrorMetrics image =
-        viewportImageError(harness_->renderer, t.in, vp, t.reference.visibility, t.reference.valid);
+        viewportImageError(harness_->renderer, t.in, vp, t.reference.visibility, t.reference.valid, t.reference.otherLights);
     EXPECT_LE(image.imageWrongPct, std::max(1.0, 3.0 * t.standardImageWrongPct))
         << id << " " << preset << ": visibility " << m.wrongPixelPct << " % wrong, and the shaded image differs "
         << "too (standard's image " << t.standardImageWrongPct << " %)";

@@ -318,7 +318,7 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     EntryRun& run = runs[e];
     finishEntry(run, runs.front(), r, commonValid);
     run.out.image = viewportImageError(renderer, fr.inputs.back(), *run.viewport, r.lastReference.visibility,
-                                       r.lastReference.valid);
+                                       r.lastReference.valid, r.lastReference.otherLights);
     r.timer = run.out.timer;
     const BenchEntry& out = run.out;
     log << "bench: [" << e + 1 << "/" << runs.size() << "] " << out.label << ": " << out.msMedian

@@ -21,7 +21,7 @@ namespace {
 
 // Bump when the reference algorithm or the file layout changes: old files are then ignored.
 // 2: rays start on the receiver's triangle plane (docs/reference.md); older files are stale.
-constexpr uint32_t kFormatVersion = 2;
+constexpr uint32_t kFormatVersion = 3;  // 3: the other lights' visibilities follow
 constexpr char kMagic[8] = {'S', 'L', 'R', 'E', 'F', 'V', 'I', 'S'};
 
 struct Fnv {
@@ -108,16 +108,24 @@ ReferenceCache::ReferenceCache(const Scene& scene, ReferenceSettings settings)
 
 ReferenceCache::~ReferenceCache() = default;
 
+// A light's part of the cache key: what changes its traced visibility.
+static std::string lightKey(const Light& l, int samples) {
+  std::ostringstream k;
+  k << "samples=" << (l.radius > 0 ? samples : 1) << ";light=" << static_cast<int>(l.type) << ":" << fmt(l.direction)
+    << ":" << fmt(l.position) << ":" << fmt(l.fovDeg) << ":" << fmt(l.radius) << ":" << fmt(l.range);
+  return k.str();
+}
+
 std::string ReferenceCache::keyText(const FrameInput& in) const {
   const Camera& c = in.camera;
-  const Light& l = scene_.light;
   std::ostringstream k;
   k << "v" << kFormatVersion << ";scene=" << scene_.name << ":" << sceneHash_ << ";camera=" << c.name << ":"
     << fmt(c.position) << ":" << fmt(c.target) << ":" << fmt(c.up) << ":" << fmt(c.fovDeg) << ":" << fmt(c.nearPlane)
     << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height
-    << ";samples=" << (l.radius > 0 ? settings_.samples : 1) << ";light=" << static_cast<int>(l.type) << ":"
-    << fmt(l.direction) << ":" << fmt(l.position) << ":" << fmt(l.fovDeg) << ":" << fmt(l.radius) << ":" << fmt(l.range)
-    << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))
+    << ";" << lightKey(scene_.light, settings_.samples);
+  for (const Light& other : scene_.otherLights)
+    k << ";other " << (other.shadow ? lightKey(other, settings_.samples) : std::string("unshadowed"));
+  k    << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))
     << ";gl=" << glRendererName();  // the G-buffer is rasterized: a different driver may differ
   return k.str();
 }
@@ -155,6 +163,12 @@ bool ReferenceCache::lookup(const FrameInput& in, ReferenceImage& out) const {
   out.valid.resize(n);
   f.read(reinterpret_cast<char*>(out.visibility.data()), static_cast<std::streamsize>(n * sizeof(float)));
   f.read(reinterpret_cast<char*>(out.valid.data()), static_cast<std::streamsize>(n));
+  out.otherLights.assign(scene_.otherLights.size(), {});
+  for (size_t k = 0; k < scene_.otherLights.size(); ++k) {
+    if (!scene_.otherLights[k].shadow) continue;
+    out.otherLights[k].resize(n);
+    f.read(reinterpret_cast<char*>(out.otherLights[k].data()), static_cast<std::streamsize>(n * sizeof(float)));
+  }
   if (!f) return false;
   out.width = w;
   out.height = h;
@@ -188,6 +202,12 @@ ReferenceImage ReferenceCache::forLastFrame(const Renderer& renderer, const Fram
   const ReferenceTracer& tracer = tracerAt(in.time);
   auto t0 = std::chrono::steady_clock::now();
   ref.visibility = tracer.visibility(g, o);
+  ref.otherLights.assign(scene_.otherLights.size(), {});
+  for (size_t k = 0; k < scene_.otherLights.size(); ++k) {
+    if (!scene_.otherLights[k].shadow) continue;
+    o.light = &scene_.otherLights[k];
+    ref.otherLights[k] = tracer.visibility(g, o);
+  }
   ref.traceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   ref.width = in.width;
   ref.height = in.height;
@@ -211,6 +231,8 @@ ReferenceImage ReferenceCache::forLastFrame(const Renderer& renderer, const Fram
       f.write(reinterpret_cast<const char*>(ref.visibility.data()),
               static_cast<std::streamsize>(ref.visibility.size() * sizeof(float)));
       f.write(reinterpret_cast<const char*>(ref.valid.data()), static_cast<std::streamsize>(ref.valid.size()));
+      for (const auto& other : ref.otherLights)
+        f.write(reinterpret_cast<const char*>(other.data()), static_cast<std::streamsize>(other.size() * sizeof(float)));
       f.close();
       // Written whole then renamed, so a concurrent reader never sees half a file.
       if (f) std::filesystem::rename(tmp, ref.cacheFile, ec);
@@ -253,7 +275,8 @@ ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage
 }
 
 ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, const Viewport& viewport,
-                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid) {
+                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid,
+                                     const std::vector<std::vector<float>>& otherLights) {
   const Texture2D* color = viewport.colorTexture();
   if (!color) throw std::runtime_error("viewport has not rendered a frame yet");
   const size_t n = referenceVisibility.size();
@@ -261,10 +284,12 @@ ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, c
     throw std::runtime_error("viewport and reference differ in size (" +
                              std::to_string(size_t(color->width()) * size_t(color->height())) + " vs " +
                              std::to_string(n) + " pixels)");
-  const std::vector<unsigned char> truth = renderer.shadeWithVisibility(in, referenceVisibility);
+  const std::vector<unsigned char> truth = renderer.shadeWithVisibility(in, referenceVisibility, otherLights);
   if (truth.empty()) return ImageErrorMetrics{std::numeric_limits<double>::quiet_NaN(), 0};
   std::vector<uint8_t> counted(valid);
   for (size_t i = 0; i < n; ++i) counted[i] = counted[i] && std::isfinite(referenceVisibility[i]);
+  for (const auto& other : otherLights)
+    for (size_t i = 0; i < other.size() && i < n; ++i) counted[i] = counted[i] && std::isfinite(other[i]);
   return compareImages(color->readRgba8().data(), truth.data(), counted.data(), n);
 }
 

@@ -22,6 +22,9 @@ struct ReferenceImage {
   int width = 0, height = 0;
   std::vector<float> visibility;  // width*height, 1 = lit, 0 for background
   std::vector<uint8_t> valid;     // width*height, 1 where geometry covers the pixel
+  // One per Scene::otherLights entry: that light's visibility (empty for an unshadowed light).
+  // `visibility` is Scene::light's, the one the visibility metrics compare.
+  std::vector<std::vector<float>> otherLights;
   bool cached = false;            // true when it came from the disk cache
   double traceMs = 0;             // time spent tracing (0 when cached)
   std::string cacheFile;          // where it is (or would be) stored
@@ -74,8 +77,11 @@ ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage
 // with the reference's visibility (Renderer::shadeWithVisibility over `in`'s G-buffer), over the
 // `valid` pixels whose reference is finite. `in` must be the frame the viewport rendered last.
 // imageWrongPct is NaN when the shade program does not build.
+// In a scene of several lights `otherLights` are the reference's (ReferenceImage::otherLights)
+// and the colours compared sum every light.
 ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, const Viewport& viewport,
-                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid);
+                                     const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid,
+                                     const std::vector<std::vector<float>>& otherLights = {});
 // The `error` debug view (RGBA8, bottom-up): grey = agree, orange = false shadow, blue = false light.
 std::vector<uint8_t> viewportErrorImage(const Viewport& viewport, const ReferenceImage& reference);
 // Grey RGBA8 (bottom-up) of a visibility buffer, for PNGs.

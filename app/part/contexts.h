@@ -22,6 +22,10 @@ class TextureUnits;
 struct PartContext {
   std::string viewportTag;  // "[v]": unique per viewport, used in pass and resource names
   const Scene* scene = nullptr;
+  // The light this viewport's parts shadow: in a scene of several shadowed lights each gets its
+  // own part states and passes (null: scene->light).
+  const Light* light = nullptr;
+  const Light& shadowedLight() const { return light ? *light : scene->light; }
   double time = 0.0;
   ShaderLibrary* shaders = nullptr;
   const ParamSet* params = nullptr;

@@ -54,7 +54,7 @@ long long DepthMapState::texels() const {
 }
 
 std::string DepthMapState::addPasses(FrameGraph&, const PartContext& ctx) {
-  status_ = ctx.scene ? hardShadowNote(sceneEffects(*ctx.scene)) : "";
+  status_ = ctx.scene ? hardShadowNote(sceneEffects(*ctx.scene, ctx.shadowedLight())) : "";
   return ctx.shadowMap;
 }
 

@@ -48,7 +48,7 @@ Light pointAsSpot(const Light& point, const std::vector<glm::vec3>& receivers) {
 }
 
 Light layoutLight(const LayoutInput& in) {
-  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
+  const Light light = sampledLight(in.shadowedLight(), in.jitter.lightSample);
   if (light.type != Light::Type::Point) return light;
   const Bounds bounds = in.scene->boundsAt(in.time);
   std::vector<glm::vec3> receivers = clipFrustumToBox(in.cameraView, in.cameraProj, bounds);

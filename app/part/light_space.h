@@ -97,6 +97,9 @@ struct LayoutInput {
   // Unique per Renderer::setScene call over all renderers (0: unknown). What a layout derives
   // from the scene's geometry alone may be cached under it (a scene's address may be reused).
   uint64_t sceneGeneration = 0;
+  // The light these views are for: one of the scene's shadowed lights (null: scene->light).
+  const Light* light = nullptr;
+  const Light& shadowedLight() const { return light ? *light : scene->light; }
 };
 
 }  // namespace sl

@@ -227,7 +227,7 @@ struct ReferenceTracer::Impl {
 
   // Direction from p to the centre of the light; false when p is outside a spot cone or beyond
   // a point light's range.
-  bool centreToLight(const glm::vec3& p, glm::vec3& toLight, float& distance) const {
+  bool centreToLight(const Light& light, const glm::vec3& p, glm::vec3& toLight, float& distance) const {
     if (light.type == Light::Type::Directional) {
       toLight = -light.direction;
       distance = std::numeric_limits<float>::infinity();
@@ -273,10 +273,11 @@ struct ReferenceTracer::Impl {
   }
 
   // Fractional visibility of the light from surface point p with shading normal n (see docs).
-  float shade(const glm::vec3& p, glm::vec3 n, int instance, int triangle, int gridSize, uint64_t pixel) const {
+  float shade(const Light& light, const glm::vec3& p, glm::vec3 n, int instance, int triangle, int gridSize,
+              uint64_t pixel) const {
     glm::vec3 toLight;
     float distance;
-    if (!isFinite(p) || !centreToLight(p, toLight, distance)) return 0.0f;
+    if (!isFinite(p) || !centreToLight(light, p, toLight, distance)) return 0.0f;
     const float nLength = glm::length(n);
     const bool hasNormal = std::isfinite(nLength) && nLength > 1e-12f;
     n = hasNormal ? n / nLength : glm::vec3(0.0f);
@@ -427,8 +428,10 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
   const int height = gbuffer.height;
   std::vector<float> result(static_cast<size_t>(width) * height, 0.0f);
 
+  Light light = options.light ? *options.light : impl_->light;
+  if (glm::length(light.direction) > 0.0f) light.direction = glm::normalize(light.direction);
   int gridSize = 0;  // 0 = hard shadows, one ray per pixel
-  if (impl_->light.radius > 0.0f)
+  if (light.radius > 0.0f)
     gridSize = std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, options.lightSamples)))));
 
   // Rows are handed out dynamically (shadowed regions cost more); each pixel's result depends
@@ -444,7 +447,7 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
         const uint32_t* id = gbuffer.surface ? gbuffer.surface + 4 * pixel : nullptr;
         const int instance = id && id[0] > 0 ? static_cast<int>(id[0] - 1) : -1;
         const int triangle = id && id[0] > 0 ? static_cast<int>(id[1]) : -1;
-        result[pixel] = impl_->shade(glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), instance,
+        result[pixel] = impl_->shade(light, glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), instance,
                                      triangle, gridSize, pixel);
       }
     }
@@ -460,7 +463,7 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
 
 bool ReferenceTracer::pointLit(const glm::vec3& p, const glm::vec3& n, int instance, int triangle) const {
   // Hard visibility toward the light's centre, with the same ray start and tests as visibility().
-  return impl_->shade(p, n, instance, triangle, 0, 0) > 0.5f;
+  return impl_->shade(impl_->light, p, n, instance, triangle, 0, 0) > 0.5f;
 }
 
 }  // namespace sl
@@ -470,7 +473,7 @@ namespace sl {
 float ReferenceTracer::transmittanceToLight(const glm::vec3& p) const {
   glm::vec3 toLight;
   float distance;
-  if (!isFinite(p) || !impl_->centreToLight(p, toLight, distance)) return 0.0f;
+  if (!isFinite(p) || !impl_->centreToLight(impl_->light, p, toLight, distance)) return 0.0f;
   RayStart start;
   start.origin = p;
   start.tolerance = std::max(kPlaneTolerance * maxAbs(glm::dvec3(p)), kMinTolerance);

@@ -27,6 +27,8 @@ struct ReferenceOptions {
   double time = 0.0;      // scene time, for moving instances
   int lightSamples = 64;  // used only when scene.light.radius > 0
   int threads = 0;        // 0 = hardware concurrency
+  // Trace toward this light instead of the scene's (one of Scene::otherLights). Null: Scene::light.
+  const Light* light = nullptr;
 };
 
 // Visibility in [0,1] per pixel (1 = lit), 0 for background pixels; row order as the G-buffer.

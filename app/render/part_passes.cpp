@@ -80,6 +80,7 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   PartContext part;
   part.viewportTag = tag;
   part.scene = scene_;
+  part.light = &lightOf(vp);
   part.time = in.time;
   part.shaders = &shaders_;
   part.params = &vp.technique.params;

@@ -53,7 +53,15 @@ std::map<std::string, Texture2D*> Viewport::shownViewTargets() {
 }
 
 long long Viewport::shadowTexels() const {
-  return layout->texels() + representation->texels() + accumulation->texels();
+  long long texels = layout->texels() + representation->texels() + accumulation->texels();
+  for (const auto& other : otherLights_)
+    if (other) texels += other->shadowTexels();
+  return texels;
+}
+
+const Texture2D* Viewport::otherLightVisibility(size_t k) const {
+  if (k >= otherLights_.size() || !otherLights_[k] || !otherLights_[k]->visibilityHeld_) return nullptr;
+  return otherLights_[k]->visibilityTexture();
 }
 
 std::string Viewport::status() const {
@@ -63,6 +71,12 @@ std::string Viewport::status() const {
         static_cast<const PartState*>(accumulation.get())}) {
     const std::string s = part->status();
     if (!s.empty()) out += (out.empty() ? "" : "; ") + s;
+  }
+  if (!otherLights_.empty()) {
+    size_t shadowed = 1;
+    for (const auto& other : otherLights_) shadowed += other ? 1 : 0;
+    out += (out.empty() ? "" : "; ") + std::to_string(otherLights_.size() + 1) + " lights, " +
+           std::to_string(shadowed) + " shadowed (views show the first)";
   }
   return out;
 }
@@ -80,7 +94,7 @@ void Renderer::bindGBuffer(const Program& p, TextureUnits& units, const Texture2
 }
 
 void Renderer::bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const {
-  setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+  setTechniqueUniforms(p, vp.technique, vp.lightSpace, lightOf(vp));
   vp.lightViews_->bind();
   vp.layout->bind(p, units);
   vp.representation->bind(p, units);
@@ -176,9 +190,9 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // fragment; vertex stages only need the layout.
   const Technique& t = vp.technique;
   std::string defines = enumDefines(t.params);  // SL_BIAS_MODE_IS_SLOPE, ...
-  defines += lightDefines(scene_->light);
+  defines += lightDefines(lightOf(vp));
   // Soft techniques compile their area-light path only where the scene calls for it.
-  if (sceneEffects(*scene_).areaLight) defines += "#define SL_AREA_LIGHT\n";
+  if (sceneEffects(*scene_, lightOf(vp)).areaLight) defines += "#define SL_AREA_LIGHT\n";
   if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";
   defines += "#define SL_LIGHT_VIEWS " + std::to_string(vp.lightSpace.views.size()) + "\n";
   defines += vp.layout->defines() + vp.representation->defines() + vp.accumulation->defines();
@@ -310,7 +324,15 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   // A cut, a new scene or size, or a viewport's first frame: motion is relative to this frame.
   const PreviousFrame now{view_, proj_, in.time, epoch_};
   if (prev_.epoch != epoch_ || in.cut) prev_ = now;
+  // Every light's viewport of every viewport (several lights: render/other_lights.cpp).
+  std::vector<Viewport*> lights;
   for (Viewport* vp : viewports) {
+    syncOtherLightViewports(*vp);
+    lights.push_back(vp);
+    for (const auto& other : vp->otherLights_)
+      if (other) lights.push_back(other.get());
+  }
+  for (Viewport* vp : lights) {
     if (vp->prev_.epoch == epoch_ && !in.cut) continue;
     vp->prev_ = now;
     vp->accumulation->reset();
@@ -330,7 +352,7 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   // Every program this frame drew with has had all its uniforms set by now.
   shaders_.checkUnsetUniforms();
   prev_ = now;
-  for (Viewport* vp : viewports) {
+  for (Viewport* vp : lights) {
     vp->prev_ = now;
     ++vp->frameIndex_;
     vp->visibilityHeld_ = true;
@@ -342,6 +364,7 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
   Technique& t = vp.technique;
   LayoutInput li;
   li.scene = scene_;
+  li.light = &lightOf(vp);
   li.sceneGeneration = sceneGeneration_;
   li.time = in.time;
   li.cameraView = in.fitCamera ? cameraView(*in.fitCamera) : view_;
@@ -360,10 +383,21 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
 
 void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {
   const std::string tag = "[" + std::to_string(index) + "]";
+  vp.light_ = &scene_->light;
+  const std::string prelude = addLightPasses(g, vp, tag, in);
+  // Several lights: every shadowed one's passes, and the colour shaded with all of them; the
+  // volumes then march over that colour (toward Scene::light, the one their prelude names).
+  addOtherLightsPasses(g, vp, tag, in);
+  addVolumesPass(g, vp, tag, prelude, vp.output_.depthTex, {vp.output_.depth, vp.shadowResource_});
+  g.requestSink("color" + tag);
+  g.requestSink(vp.output_.visibility);
+  addDebugViewPasses(g, vp, tag, in);
+}
+
+std::string Renderer::addLightPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
   const bool cameraMoved = view_ != vp.prev_.view || proj_ != vp.prev_.proj;
   layOutViewport(vp, in, cameraMoved);
   const std::string prelude = techniquePrelude(vp);
-  const std::string raw = "visibility.raw" + tag, fin = "visibility.final" + tag;
 
   PartContext part = partContext(vp, tag, in, cameraMoved, prelude);
   addShadowPass(g, vp, tag, vp.layout->addPasses(g, part), in);
@@ -376,10 +410,7 @@ void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, cons
   // The accumulation adds the test, its own passes and the shading.
   const AccumulationContext ctx = accumulationContext(g, vp, tag, in, cameraMoved, prelude, sm, part.bindGBuffer);
   vp.output_ = vp.accumulation->addPasses(g, ctx);
-  addVolumesPass(g, vp, tag, prelude, vp.output_.depthTex, {vp.output_.depth, sm});
-  g.requestSink("color" + tag);
-  g.requestSink(vp.output_.visibility);
-  addDebugViewPasses(g, vp, tag, in);
+  return prelude;
 }
 
 }  // namespace sl

@@ -63,8 +63,13 @@ class Viewport {
   long long shadowTexels() const;
   // The debug views shown this frame (shownViews that exist) and the targets they are drawn into.
   std::map<std::string, Texture2D*> shownViewTargets();
-  // The parts' status lines joined ("" when none has one).
+  // The parts' status lines joined ("" when none has one), and in a scene of several lights how
+  // many were shadowed.
   std::string status() const;
+  // In a scene of several shadowed lights (Scene::otherLights): the visibility this viewport's
+  // technique computed for the k-th of them (null for an unshadowed light or before a frame).
+  // visibilityTexture() is Scene::light's; the colour sums every light.
+  const Texture2D* otherLightVisibility(size_t k) const;
   void setTechnique(Technique t);  // keeps targets, resets history
 
  private:
@@ -79,6 +84,12 @@ class Viewport {
   PreviousFrame prev_;           // this viewport's last frame
   int frameIndex_ = 0;           // frames this viewport has rendered
   bool visibilityHeld_ = false;  // its visibility texture holds a finished frame of this size
+  const Light* light_ = nullptr;  // the light its parts shadow this frame (a scene light)
+  // Scene::otherLights' shadowed entries: the same technique with its own part states and
+  // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.
+  std::vector<std::unique_ptr<Viewport>> otherLights_;
+  std::unique_ptr<Texture2D> otherDirect_;  // the other lights' direct light summed (R16F)
+  Framebuffer otherDirectFbo_;
 };
 
 struct FrameInput {
@@ -134,12 +145,28 @@ class Renderer {
   // the size of the last rendered frame. Viewports' histories are not touched. RGBA8, bottom-up.
   // Empty when the shade program does not build (the shader library has the error); throws
   // std::invalid_argument on a size mismatch.
-  std::vector<unsigned char> shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility);
+  // In a scene of several lights, `others` holds one visibility per Scene::otherLights entry
+  // (ignored, and may be empty, for an unshadowed one) and the colour sums every light, as the
+  // viewports' does; a missing entry throws std::invalid_argument.
+  std::vector<unsigned char> shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility,
+                                                 const std::vector<std::vector<float>>& others = {});
 
  private:
   void ensureTargets(int w, int h, bool withMotion);
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
+  // One light's passes of a viewport (layout, shadow, representation, accumulation); the name of
+  // the technique prelude they were built with.
+  std::string addLightPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  // Scene::otherLights (render/other_lights.cpp): each shadowed one's passes, their direct light
+  // summed, and the colour shaded with every light. False when the scene has one light.
+  bool addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  void syncOtherLightViewports(Viewport& vp);
+  void ensureOtherDirectTarget(Viewport& vp, int w, int h);
+  // The colour with Scene::light's `visibility` plus the other lights' summed direct light.
+  bool shadeLights(const Framebuffer& target, const Texture2D& visibility, const Texture2D& otherDirect);
+  const Texture2D& substitutedOtherDirect(int w, int h, const std::vector<std::vector<float>>& others);
+  const Light& lightOf(const Viewport& vp) const { return vp.light_ ? *vp.light_ : scene_->light; }
   void layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMoved);
   void executeTimed(const FrameGraph& graph);
   // The shading passes an accumulation adds through its context (render/shading_passes.cpp).
@@ -200,6 +227,9 @@ class Renderer {
   // shadeWithVisibility's own targets: the substituted visibility and the colour it gives.
   std::unique_ptr<Texture2D> substVisibility_, substColor_;
   Framebuffer substFbo_;
+  std::vector<std::unique_ptr<Texture2D>> substOtherVisibility_;  // one per Scene::otherLights entry
+  std::unique_ptr<Texture2D> substOtherDirect_;
+  Framebuffer substOtherDirectFbo_;
   // Scene::volumes on the GPU, for the volumes pass and the parts (PartContext::bindVolumes).
   std::unique_ptr<VolumesBuffer> volumes_;
   TransientTextures transients_;  // the frame graph's transient targets, kept between frames

@@ -16,7 +16,8 @@ std::string Renderer::shadePrelude() const {
   return scene_ ? lightDefines(scene_->light) : "";
 }
 
-std::vector<unsigned char> Renderer::shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility) {
+std::vector<unsigned char> Renderer::shadeWithVisibility(const FrameInput& in, const std::vector<float>& visibility,
+                                                         const std::vector<std::vector<float>>& others) {
   if (!scene_) throw std::runtime_error("renderer: no scene loaded");
   const int w = in.width, h = in.height;
   if (!gPosition_ || w != width_ || h != height_)
@@ -42,6 +43,13 @@ std::vector<unsigned char> Renderer::shadeWithVisibility(const FrameInput& in, c
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(substVisibility_->id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, visibility.data());
+  if (!scene_->otherLights.empty()) {
+    const Texture2D& otherDirect = substitutedOtherDirect(w, h, others);
+    const bool built = shadeLights(substFbo_, *substVisibility_, otherDirect);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!built) return {};
+    return substColor_->readRgba8();
+  }
 
   ProgramSpec spec{"shade",
                    {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}},

@@ -48,13 +48,13 @@ AccumulationOutput Renderer::addDeferredShadePass(FrameGraph& g, Viewport& vp, c
   g.add({"shade" + tag, {"gbuffer", visibility}, {"color" + tag}, [this, &vp, visTex] {
            ProgramSpec spec{"shade",
                             {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade.frag"}},
-                            shadePrelude()};
+                            lightDefines(lightOf(vp))};
            Program& p = shaders_.get(spec);
            if (!p.valid()) return;
            vp.colorFbo_.bind();
            p.use();
            TextureUnits units;
-           setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+           setTechniqueUniforms(p, vp.technique, vp.lightSpace, lightOf(vp));
            bindGBuffer(p, units, visTex);
            drawFullscreen();
          }});

@@ -64,6 +64,9 @@ struct Instance {
   glm::mat4 transformAt(double t) const { return transform * motion.at(t); }
 };
 
+// Lights a scene file may list (each shadowed one costs a technique's maps and passes).
+inline constexpr int kMaxSceneLights = 16;
+
 struct Light {
   enum class Type { Directional, Spot, Point };
   Type type = Type::Directional;
@@ -80,6 +83,9 @@ struct Light {
   // reference alike); 0 = no limit.
   float range = 0.0f;
   glm::vec3 color{1.0f};
+  // Whether a shadow map is made for it ("shadow": false in the scene file: it lights every point
+  // in its range or cone, through casters). The first shadowed light of a list is Scene::light.
+  bool shadow = true;
 };
 
 // A participating medium: procedural density inside a box or sphere (app/scene/volume_density.h;
@@ -141,7 +147,12 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<Instance> instances;
+  // The light the techniques' debug views, the error panel and the bench's visibility metrics
+  // show: the first shadowed light of the file's list (or its only light, or the automatic sun).
   Light light;
+  // The other lights of the file's list, in order, each shadowed by the technique with its own
+  // maps (light.shadow) or unshadowed. The colour sums every light (passes/shade_lights.frag).
+  std::vector<Light> otherLights;
   std::vector<Camera> cameras;  // at least one after loading
   std::vector<CameraPath> paths;
   std::vector<Volume> volumes;  // semi-transparent media (scene_effects.h)

@@ -6,12 +6,14 @@ namespace sl {
 
 bool instanceSemiTransparent(const Scene& scene, size_t index);
 
-SceneEffects sceneEffects(const Scene& scene) {
+SceneEffects sceneEffects(const Scene& scene) { return sceneEffects(scene, scene.light); }
+
+SceneEffects sceneEffects(const Scene& scene, const Light& light) {
   SceneEffects e;
   // Scene validation rejects a negative radius; a NaN one would fail every comparison, so it
   // is treated as a point light here rather than as an area light of undefined size.
-  e.areaLight = scene.light.radius > 0.0f;
-  e.lightRadius = e.areaLight ? scene.light.radius : 0.0f;
+  e.areaLight = light.radius > 0.0f;
+  e.lightRadius = e.areaLight ? light.radius : 0.0f;
   e.media = !scene.volumes.empty();
   e.semiTransparent = e.media;
   for (size_t i = 0; i < scene.instances.size() && !e.semiTransparent; ++i)

@@ -22,6 +22,8 @@ struct SceneEffects {
 };
 
 SceneEffects sceneEffects(const Scene& scene);
+// The same for one of its lights (a scene of several: each light's radius is its own).
+SceneEffects sceneEffects(const Scene& scene, const Light& light);
 
 // Status line of a technique that does not model the area light ("" when the scene has none).
 std::string hardShadowNote(const SceneEffects& effects);

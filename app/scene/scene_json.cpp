@@ -193,7 +193,7 @@ void parseObject(const JsonReader& r, const json& j, const std::string& where, S
 
 Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
   if (!j.is_object()) r.expected(where, "a light object", j);
-  r.checkKeys(j, where, {"type", "direction", "position", "fov_deg", "radius", "range", "color"});
+  r.checkKeys(j, where, {"type", "direction", "position", "fov_deg", "radius", "range", "color", "shadow"});
   Light l;
   l.direction = kAutoLightDirection;
   if (const json* t = JsonReader::find(j, "type")) {
@@ -228,6 +228,14 @@ Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
     l.range = float(r.number(*range, where + ".range"));
     if (!(l.range > 0.0f) || !std::isfinite(l.range)) r.expected(where + ".range", "a finite range > 0", *range);
   }
+  if (const json* s = JsonReader::find(j, "shadow")) {
+    if (!s->is_boolean()) r.expected(where + ".shadow", "true or false", *s);
+    l.shadow = s->get<bool>();
+  }
+  if (const json* s = JsonReader::find(j, "shadow")) {
+    if (!s->is_boolean()) r.expected(where + ".shadow", "true or false", *s);
+    l.shadow = s->get<bool>();
+  }
   if (const json* c = JsonReader::find(j, "color")) {
     l.color = r.vec3(*c, where + ".color");
     if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) r.expected(where + ".color", "3 non-negative numbers", *c);
@@ -235,26 +243,32 @@ Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
   return l;
 }
 
-// The scene's light from "light": {...} or "lights": [...] (every entry checked); false when the
-// file gives neither (finish() then places the automatic sun). The renderer and the reference
-// draw one light per scene so far: a list of one is that light; a longer one is refused by name,
-// not half drawn.
+// The scene's lights from "light": {...} or "lights": [...] (every entry checked); false when the
+// file gives neither (finish() then places the automatic sun). The first shadowed light of the
+// list becomes Scene::light, the rest Scene::otherLights in order; a list where no light casts
+// shadows is refused: every technique shadows at least one light.
 bool parseLights(const JsonReader& r, const json& root, Scene& scene) {
   const json* single = JsonReader::find(root, "light");
   const json* list = JsonReader::find(root, "lights");
   if (single && list) r.fail("lights", "give either 'light' or 'lights', not both");
-  if (single) scene.light = parseLight(r, *single, "light");
+  if (single) {
+    scene.light = parseLight(r, *single, "light");
+    if (!scene.light.shadow) r.fail("light.shadow", "the scene's only light must cast shadows");
+  }
   if (!list) return single != nullptr;
   if (!list->is_array()) r.expected("lights", "an array of light objects", *list);
   if (list->empty()) r.fail("lights", "an empty light list (leave it out for the automatic sun)");
+  if (list->size() > size_t(kMaxSceneLights))
+    r.fail("lights", std::to_string(list->size()) + " lights (at most " + std::to_string(kMaxSceneLights) + ")");
   std::vector<Light> parsed;
   for (size_t i = 0; i < list->size(); ++i)
     parsed.push_back(parseLight(r, (*list)[i], "lights[" + std::to_string(i) + "]"));
-  if (parsed.size() > 1)
-    r.fail("lights", std::to_string(parsed.size()) +
-                         " lights: this version shadows one light per scene (several shadowed lights are issue #25's "
-                         "remaining part)");
-  scene.light = parsed.front();
+  const auto primary = std::find_if(parsed.begin(), parsed.end(), [](const Light& l) { return l.shadow; });
+  if (primary == parsed.end()) r.fail("lights", "no light casts shadows (at least one needs \"shadow\": true)");
+  scene.light = *primary;
+  scene.otherLights.clear();
+  for (auto it = parsed.begin(); it != parsed.end(); ++it)
+    if (it != primary) scene.otherLights.push_back(*it);
   return true;
 }
 

@@ -374,7 +374,7 @@ class VirtualLayout : public Layout {
     // a point light as a spot aimed at all of it.
     const auto corners = boxCorners(in.scene->motionEnvelope());
     const Light light =
-        in.scene->light.type == Light::Type::Point ? pointAsSpot(in.scene->light, corners) : in.scene->light;
+        in.shadowedLight().type == Light::Type::Point ? pointAsSpot(in.shadowedLight(), corners) : in.shadowedLight();
     const glm::mat4 view = lightViewMatrix(light, in.jitter.rotationRad);
     const int size = virtualSizes(*in.params).virtualSize;
     const bool snap = in.params->b("layout.snap");

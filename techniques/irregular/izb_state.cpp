@@ -77,7 +77,7 @@ std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   const LightSpace& ls = *ctx.lightSpace;
   // The lists need one grid: one light view. A warped single view (PSM, LiSPSM, TSM under a sun)
   // would bin correctly too, but its matrix can put receivers behind its centre of projection.
-  const bool spot = ctx.scene->light.positional();  // a point light comes as a spot (layoutLight)
+  const bool spot = ctx.shadowedLight().positional();  // a point light comes as a spot (layoutLight)
   if (ls.views.size() != 1 || (ls.primary().perspective && !spot)) {
     error_ =
         "irregular z-buffer needs one orthographic light view (uniform or focused layout), or a spot light's; "
@@ -143,9 +143,9 @@ void IzbState::runLists(const PartContext& ctx) {
   pc.use();
   TextureUnits units;
   ctx.bindGBuffer(pc, units);
-  setLightUniforms(pc, ctx.scene->light);
+  setLightUniforms(pc, ctx.shadowedLight());
   setCommon(pc, ctx);
-  pc.set("u_izbSpot", ctx.scene->light.positional() ? 1 : 0);
+  pc.set("u_izbSpot", ctx.shadowedLight().positional() ? 1 : 0);
   pc.set("u_izbInstances", static_cast<int>(ctx.scene->instances.size()));
   pc.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
   glDispatchCompute(groups(ctx.width, 8), groups(ctx.height, 8), 1);

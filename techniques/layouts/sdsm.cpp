@@ -111,7 +111,7 @@ std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartConte
                TextureUnits units;
                ctx.bindGBuffer(p, units);
                p.set("u_cameraView", ctx.view);
-               p.set("u_lightView", lightViewMatrix(ctx.scene->light, 0.0f));
+               p.set("u_lightView", lightViewMatrix(ctx.shadowedLight(), 0.0f));
                bindStorage("DepthBounds", gpu_->buffers[slot]);
                glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
                glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

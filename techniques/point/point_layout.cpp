@@ -13,7 +13,7 @@ namespace {
 
 // The views under a point light; under any other light one focused map (every view needed).
 FaceViews viewsOrFocused(const PointLayoutSpec& spec, const LayoutInput& in, bool& pointLight) {
-  const Light light = sampledLight(in.scene->light, in.jitter.lightSample);
+  const Light light = sampledLight(in.shadowedLight(), in.jitter.lightSample);
   pointLight = light.type == Light::Type::Point;
   if (pointLight) return spec.views(light, in);
   FaceViews focused;

@@ -60,6 +60,29 @@ TEST(PointLight, SceneFormatReadsAPointLightAndAListOfOne) {
   EXPECT_EQ(listed.light.position, glm::vec3(1, 2, 3));
 }
 
+std::string seventeenLights() {
+  std::string list;
+  for (int i = 0; i < 17; ++i) list += std::string(i ? "," : "") + R"({"type":"point","position":[0,2,0]})";
+  return list;
+}
+
+// A point light and a directional one in one list; the first shadowed light is the one the
+// techniques' views and the visibility metrics show, the others follow in the file's order.
+TEST(PointLight, ALightListKeepsEveryLightInOrder) {
+  const Scene s = loadScene(test::writeTempFile("point_lights_list.json", R"({"objects":[{"shape":"box"}],
+      "lights":[{"type":"spot","position":[0,5,0],"direction":[0,-1,0],"shadow":false},
+                {"type":"point","position":[1,2,3]},
+                {"type":"directional","direction":[0,-1,0]}]})"),
+                            test::kAssets);
+  EXPECT_EQ(s.light.type, Light::Type::Point);
+  EXPECT_TRUE(s.light.shadow);
+  ASSERT_EQ(s.otherLights.size(), 2u);
+  EXPECT_EQ(s.otherLights[0].type, Light::Type::Spot);
+  EXPECT_FALSE(s.otherLights[0].shadow);
+  EXPECT_EQ(s.otherLights[1].type, Light::Type::Directional);
+  EXPECT_TRUE(s.otherLights[1].shadow);
+}
+
 TEST(PointLight, BadLightsNameTheFileAndTheField) {
   struct Case {
     std::string json, field, words;
@@ -77,8 +100,10 @@ TEST(PointLight, BadLightsNameTheFileAndTheField) {
       {R"("lights":[{"type":"point","position":[0,2,0],"range":-1}])", "lights[0].range", "range > 0"},
       {R"("light":{"type":"point","position":[0,2,0]},"lights":[{"type":"point","position":[0,2,0]}])", "lights",
        "not both"},
-      {R"("lights":[{"type":"point","position":[0,2,0]},{"type":"directional","direction":[0,-1,0]}])", "lights",
-       "one light per scene"},
+      {R"("lights":[{"type":"point","position":[0,2,0],"shadow":false}])", "lights", "no light casts shadows"},
+      {R"("lights":[{"type":"point","position":[0,2,0],"shadow":1}])", "lights[0].shadow", "true or false"},
+      {R"("light":{"type":"point","position":[0,2,0],"shadow":false})", "light.shadow", "must cast shadows"},
+      {R"("lights":[)" + seventeenLights() + "]", "lights", "at most 16"},
   };
   for (const Case& c : cases) {
     const std::string path =

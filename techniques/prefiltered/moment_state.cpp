@@ -96,7 +96,7 @@ void MomentMapState::beginShadowLayer(int layer) {
 }
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
-  status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene), *ctx.params) : "";
+  status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene, ctx.shadowedLight()), *ctx.params) : "";
   // One pass makes the filtered moments: of the depth the shadow pass drew, or (the soft ones,
   // momentsInShadowPass) summed from the moments it wrote.
   const std::string out = "moments.filtered" + ctx.viewportTag;

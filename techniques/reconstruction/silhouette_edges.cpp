@@ -88,7 +88,7 @@ void appendSilhouettes(const MeshEdges& m, const glm::mat4& model, const Light& 
   }
 }
 
-const std::vector<glm::vec3>& SilhouetteEdges::update(const Scene& scene, double time) {
+const std::vector<glm::vec3>& SilhouetteEdges::update(const Scene& scene, const Light& l, double time) {
   changed_ = false;
   // A scene edited in place (tests drop instances, move the light) at the same address is
   // caught by its counts and its light.
@@ -101,7 +101,6 @@ const std::vector<glm::vec3>& SilhouetteEdges::update(const Scene& scene, double
     for (const Mesh& mesh : scene.meshes) meshes_.push_back(buildMeshEdges(mesh));
     time_ = -1e30;
   }
-  const Light& l = scene.light;
   const bool sameLight = l.type == light_.type && l.direction == light_.direction && l.position == light_.position;
   const bool sameTime = time == time_ || !scene.hasMotion();
   if (sameLight && sameTime && time_ > -1e29) return segments_;

@@ -30,9 +30,9 @@ MeshEdges buildMeshEdges(const Mesh& mesh);
 
 class SilhouetteEdges {
  public:
-  // World-space segments (two points each) of every instance's silhouette edges at `time`.
-  // Recomputed only when the scene, its time (if it moves) or the light changed.
-  const std::vector<glm::vec3>& update(const Scene& scene, double time);
+  // World-space segments (two points each) of every instance's silhouette edges seen from
+  // `light` at `time`. Recomputed only when the scene, its time (if it moves) or the light changed.
+  const std::vector<glm::vec3>& update(const Scene& scene, const Light& light, double time);
   bool changed() const { return changed_; }  // the last update recomputed the segments
 
  private:

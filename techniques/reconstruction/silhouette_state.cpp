@@ -42,7 +42,7 @@ void SilhouetteMapState::upload(const std::vector<glm::vec3>& segments) {
 }
 
 void SilhouetteMapState::drawSilhouettes(const PartContext& ctx) {
-  const std::vector<glm::vec3>& segments = edges_.update(*ctx.scene, ctx.time);
+  const std::vector<glm::vec3>& segments = edges_.update(*ctx.scene, ctx.shadowedLight(), ctx.time);
   if (edges_.changed() || !vao_) upload(segments);
   const ProgramSpec spec{"silhouette edges",
                          {{GL_VERTEX_SHADER, "representations/silhouette_edges.vert"},

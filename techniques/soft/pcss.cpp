@@ -27,7 +27,7 @@ class PcssState : public DepthMapState {
   PcssState() : DepthMapState(false) {}
 
   std::string addPasses(FrameGraph& graph, const PartContext& ctx) override {
-    const SceneEffects fx = ctx.scene ? sceneEffects(*ctx.scene) : SceneEffects{};
+    const SceneEffects fx = ctx.scene ? sceneEffects(*ctx.scene, ctx.shadowedLight()) : SceneEffects{};
     areaLight_ = fx.areaLight;
     if (!areaLight_) {
       status_ = "pcss: point light (radius 0): no blocker search, minimum-kernel PCF";

@@ -1,0 +1,151 @@
+// Scenes of several lights (Scene::otherLights). Each shadowed light other than Scene::light gets
+// a viewport of its own inside the user's: the same technique and parameter values with their
+// own part states, maps and histories, built by the same addLightPasses as the first light, so
+// every part works per light without knowing of the others. Their visibilities meet only in
+// the colour: each light's direct term is added into one sum (passes/light_direct.frag, the
+// light's own defines and uniforms), and passes/shade_lights.frag shades Scene::light's
+// visibility plus that sum. Unshadowed lights add their direct term unoccluded.
+#include "part/uniforms.h"
+#include "render/renderer.h"
+
+#include <stdexcept>
+
+namespace sl {
+
+// Keeps one viewport per shadowed other light, following the user's technique: a new preset or
+// part rebuilds it (its history gone), a parameter change is copied over every frame.
+void Renderer::syncOtherLightViewports(Viewport& vp) {
+  const std::vector<Light>& others = scene_->otherLights;
+  vp.otherLights_.resize(others.size());
+  for (size_t k = 0; k < others.size(); ++k) {
+    std::unique_ptr<Viewport>& sub = vp.otherLights_[k];
+    if (!others[k].shadow) {
+      sub.reset();
+      continue;
+    }
+    const Technique& t = vp.technique;
+    const bool same = sub && sub->technique.presetId == t.presetId && sub->technique.layout == t.layout &&
+                      sub->technique.representation == t.representation &&
+                      sub->technique.accumulation == t.accumulation;
+    if (same)
+      sub->technique.params = t.params;
+    else
+      sub = std::make_unique<Viewport>(t);
+    sub->light_ = &others[k];
+  }
+}
+
+namespace {
+
+// The other lights' direct terms summed into `fbo` (one R16F target): cleared, then one
+// additive fullscreen draw per light. visibility[k]: the k-th light's, null when unshadowed.
+void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Framebuffer& fbo,
+                           const std::vector<const Texture2D*>& visibility, const ProgramSetup& bindGBuffer,
+                           const std::function<void()>& drawFullscreen) {
+  fbo.bind();
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  for (size_t k = 0; k < scene.otherLights.size(); ++k) {
+    const Light& light = scene.otherLights[k];
+    const Texture2D* vis = k < visibility.size() ? visibility[k] : nullptr;
+    if (light.shadow && !vis) continue;  // the caller checked; never read a missing target
+    const std::string defines = lightDefines(light) + (light.shadow ? "#define SL_SHADOWED_LIGHT\n" : "");
+    ProgramSpec spec{"light direct",
+                     {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/light_direct.frag"}},
+                     defines};
+    Program& p = shaders.get(spec);
+    if (!p.valid()) continue;
+    p.use();
+    setLightUniforms(p, light);
+    TextureUnits units;
+    bindGBuffer(p, units);
+    if (light.shadow) units.bind(p, "u_visibility", vis->id());
+    drawFullscreen();
+  }
+  glDisable(GL_BLEND);
+}
+
+}  // namespace
+
+void Renderer::ensureOtherDirectTarget(Viewport& vp, int w, int h) {
+  if (vp.otherDirect_ && vp.otherDirect_->width() == w && vp.otherDirect_->height() == h) return;
+  vp.otherDirect_ = std::make_unique<Texture2D>(GL_R16F, w, h, "lights.direct");
+  vp.otherDirectFbo_ = Framebuffer("other lights' direct light");
+  vp.otherDirectFbo_.attach({vp.otherDirect_.get()}, nullptr);
+}
+
+bool Renderer::shadeLights(const Framebuffer& target, const Texture2D& visibility, const Texture2D& otherDirect) {
+  ProgramSpec spec{"shade lights",
+                   {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/shade_lights.frag"}},
+                   lightDefines(scene_->light)};
+  Program& p = shaders_.get(spec);
+  if (!p.valid()) return false;
+  target.bind();
+  p.use();
+  setLightUniforms(p, scene_->light);
+  TextureUnits units;
+  bindGBuffer(p, units, &visibility);
+  units.bind(p, "u_otherDirect", otherDirect.id());
+  drawFullscreen();
+  return true;
+}
+
+bool Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
+  const std::vector<Light>& others = scene_->otherLights;
+  if (others.empty()) return false;
+  ensureOtherDirectTarget(vp, in.width, in.height);
+  std::vector<std::string> reads = {"gbuffer"};
+  std::vector<const Texture2D*> visibility(others.size(), nullptr);
+  for (size_t k = 0; k < others.size(); ++k) {
+    Viewport* sub = vp.otherLights_[k].get();
+    if (!sub) continue;
+    ensureViewportTargets(*sub, in.width, in.height);
+    addLightPasses(g, *sub, tag + ".light" + std::to_string(k + 1), in);
+    reads.push_back(sub->output_.visibility);
+    visibility[k] = sub->visibilityTexture();
+  }
+  const std::string sum = "lights.direct" + tag;
+  g.add({"lights direct" + tag, reads, {sum}, [this, &vp, visibility] {
+           ProgramSetup gbuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
+           drawOtherLightsDirect(shaders_, *scene_, vp.otherDirectFbo_, visibility, gbuffer,
+                                 [this] { drawFullscreen(); });
+         }});
+  // Writes the colour whole (sky included): the first light's own shade pass is culled unless
+  // it also writes something read (a forward pass's visibility).
+  const Texture2D* primary = vp.visibilityTexture();
+  g.add({"shade lights" + tag, {"gbuffer", vp.output_.visibility, sum}, {"color" + tag}, [this, &vp, primary] {
+           shadeLights(vp.colorFbo_, *primary, *vp.otherDirect_);
+         }});
+  return true;
+}
+
+// shadeWithVisibility's other lights: their visibilities uploaded, their direct light summed.
+const Texture2D& Renderer::substitutedOtherDirect(int w, int h, const std::vector<std::vector<float>>& others) {
+  const std::vector<Light>& lights = scene_->otherLights;
+  if (!substOtherDirect_ || substOtherDirect_->width() != w || substOtherDirect_->height() != h) {
+    substOtherDirect_ = std::make_unique<Texture2D>(GL_R16F, w, h, "substituted other lights' direct light");
+    substOtherDirectFbo_ = Framebuffer("shade with visibility: other lights");
+    substOtherDirectFbo_.attach({substOtherDirect_.get()}, nullptr);
+  }
+  substOtherVisibility_.resize(lights.size());
+  std::vector<const Texture2D*> visibility(lights.size(), nullptr);
+  for (size_t k = 0; k < lights.size(); ++k) {
+    if (!lights[k].shadow) continue;
+    if (k >= others.size() || others[k].size() != size_t(w) * size_t(h))
+      throw std::invalid_argument("shadeWithVisibility: no " + std::to_string(w) + "x" + std::to_string(h) +
+                                  " visibility for light " + std::to_string(k + 2) + " of the scene");
+    auto& tex = substOtherVisibility_[k];
+    if (!tex || tex->width() != w || tex->height() != h)
+      tex = std::make_unique<Texture2D>(GL_R32F, w, h, "substituted visibility of another light");
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(tex->id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, others[k].data());
+    visibility[k] = tex.get();
+  }
+  ProgramSetup gbuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
+  drawOtherLightsDirect(shaders_, *scene_, substOtherDirectFbo_, visibility, gbuffer, [this] { drawFullscreen(); });
+  return *substOtherDirect_;
+}
+
+}  // namespace sl
