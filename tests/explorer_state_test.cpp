@@ -64,6 +64,29 @@ TEST(ExplorerLight, MovingAPointLightIsACutAndASunHasNoPosition) {
   EXPECT_TRUE(state.cutPending);
 }
 
+// street-lamps: the views show one light at a time; another shadowed one can take its place (the
+// drag fields then move it), and an other light's shadow can be turned off, each a cut.
+TEST(ExplorerState, ALightOfSeveralIsShownOrUnshadowed) {
+  ExplorerState state;
+  state.scene = std::make_unique<Scene>(loadScene("street-lamps", defaultAssetsDir()));
+  state.cutPending = false;
+  const Light first = state.scene->light, second = state.scene->otherLights[0];
+  EXPECT_FALSE(showLightInViews(state, 3)) << "street-lamps has 3 other lights";
+  EXPECT_FALSE(state.cutPending);
+  EXPECT_TRUE(showLightInViews(state, 0));
+  EXPECT_EQ(state.scene->light.position, second.position);
+  EXPECT_EQ(state.scene->otherLights[0].position, first.position);
+  EXPECT_TRUE(state.cutPending);
+  state.cutPending = false;
+  EXPECT_TRUE(setOtherLightShadow(state, 1, false));
+  EXPECT_FALSE(state.scene->otherLights[1].shadow);
+  EXPECT_TRUE(state.cutPending);
+  state.cutPending = false;
+  EXPECT_FALSE(setOtherLightShadow(state, 1, false)) << "already off";
+  EXPECT_FALSE(showLightInViews(state, 1)) << "an unshadowed light has no maps to show";
+  EXPECT_FALSE(state.cutPending);
+}
+
 }  // namespace
 // A tour step's caption reads "left, middle, right" for three viewports: they sit in one row of
 // equal tiles, and only four make a 2x2 grid.

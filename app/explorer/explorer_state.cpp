@@ -118,6 +118,19 @@ bool setLightDirection(ExplorerState& state, glm::vec3 direction) {
   return true;
 }
 
+bool showLightInViews(ExplorerState& state, size_t k) {
+  if (!state.scene || k >= state.scene->otherLights.size() || !state.scene->otherLights[k].shadow) return false;
+  changeLight(state, [&state, k](Light& l) { std::swap(l, state.scene->otherLights[k]); });
+  return true;
+}
+
+bool setOtherLightShadow(ExplorerState& state, size_t k, bool shadow) {
+  if (!state.scene || k >= state.scene->otherLights.size() || state.scene->otherLights[k].shadow == shadow)
+    return false;
+  changeLight(state, [&state, k, shadow](Light&) { state.scene->otherLights[k].shadow = shadow; });
+  return true;
+}
+
 void jumpToCamera(ExplorerState& state, const Camera& camera) {
   state.camera.jumpTo(camera, state.scene ? sceneDiagonal(*state.scene) : 10.0f);
   state.cameraName = camera.name;

@@ -120,6 +120,13 @@ bool setLightDirection(ExplorerState& state, glm::vec3 direction);
 // Moves a spot or point light to `position` (ignored if not finite, or for a directional light),
 // a cut as above. Returns true when the light moved.
 bool setLightPosition(ExplorerState& state, glm::vec3 position);
+// A scene of several lights: makes Scene::otherLights[k] the light the debug views, the drag
+// fields and the accuracy panel show (it trades places with Scene::light; it must be shadowed),
+// a cut as above. Returns true when the shown light changed.
+bool showLightInViews(ExplorerState& state, size_t k);
+// Turns Scene::otherLights[k]'s shadow on or off (off: it lights through casters and costs no
+// maps), a cut as above. Returns true when it changed.
+bool setOtherLightShadow(ExplorerState& state, size_t k, bool shadow);
 // Replaces a viewport's technique by a preset with its default overrides.
 void setViewportPreset(ExplorerState& state, int slot, const std::string& presetId);
 // Makes sure the first viewportCount slots exist; new ones get presets not shown yet, so

@@ -75,6 +75,37 @@ void drawStatusHeader(ExplorerState& state, Renderer& renderer, const ShaderLibr
   ImGui::PopStyleColor();
 }
 
+// A scene of several lights: a row per other light, its shadow on or off, and a button that
+// makes it the light the views, the drag fields above and the accuracy panel show.
+void drawOtherLights(ExplorerState& state) {
+  if (!state.scene || state.scene->otherLights.empty()) return;
+  static const char* const kTypes[] = {"directional", "spot", "point"};
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  ImGui::Text("%zu lights; views, fields and accuracy: light 1 (%s)", state.scene->otherLights.size() + 1,
+              kTypes[int(state.scene->light.type)]);
+  ImGui::PopStyleColor();
+  for (size_t k = 0; k < state.scene->otherLights.size(); ++k) {
+    const Light& l = state.scene->otherLights[k];
+    ImGui::PushID(int(k));
+    bool shadow = l.shadow;
+    if (ImGui::Checkbox("##shadow", &shadow)) setOtherLightShadow(state, k, shadow);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("shadowed: the technique makes maps for this light too");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!l.shadow);
+    if (ImGui::SmallButton("show")) showLightInViews(state, k);
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("make this light the one the debug views, drag fields and accuracy panel show");
+    ImGui::SameLine();
+    if (l.positional())
+      ImGui::Text("light %zu %s at %.1f %.1f %.1f", k + 2, kTypes[int(l.type)], l.position.x, l.position.y,
+                  l.position.z);
+    else
+      ImGui::Text("light %zu %s", k + 2, kTypes[int(l.type)]);
+    ImGui::PopID();
+  }
+}
+
 void drawScenePanel(ExplorerState& state, Renderer& renderer) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::SetNextItemWidth(-1);
@@ -128,6 +159,7 @@ void drawScenePanel(ExplorerState& state, Renderer& renderer) {
       ImGui::SetTooltip("direction towards the light; changing it resets accumulated history and references");
     if (changed) setLightDirection(state, directionFromLightAngles(angles.x, angles.y));
   }
+  drawOtherLights(state);
   ImGui::Checkbox("Pause time (P)", &state.paused);
   ImGui::SameLine();
   ImGui::Text("t = %.2f s", state.sceneTime);

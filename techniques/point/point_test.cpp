@@ -138,6 +138,24 @@ TEST(PointLight, ReferenceShadowIsTheTangentConesDisk) {
   }
 }
 
+// The reference traces toward another of the scene's lights when asked (ReferenceOptions::light,
+// what the metrics of a scene of several lights use): the ball's shadow moves with the light.
+// From (10, 3, 0) the ray through the ball's centre (0, 1, 0) meets the ground at x = -5.
+TEST(PointLight, ReferenceTracesTowardTheLightItIsGiven) {
+  const Scene scene = ballUnderPoint(3.0f);
+  const ReferenceTracer tracer(scene);
+  const std::vector<float> position = {0, 0, 0, 1, -5, 0, 0, 1};
+  const std::vector<float> normal = {0, 1, 0, 0, 0, 1, 0, 0};
+  const GBufferView g{2, 1, position.data(), normal.data()};
+  const std::vector<float> own = tracer.visibility(g, {});
+  EXPECT_EQ(own, (std::vector<float>{0.0f, 1.0f}));
+  Light other = scene.light;
+  other.position = {10, 3, 0};
+  ReferenceOptions options;
+  options.light = &other;
+  EXPECT_EQ(tracer.visibility(g, options), (std::vector<float>{1.0f, 0.0f}));
+}
+
 // Beyond its range a point light lights nothing; a sphere light's penumbra is partial.
 TEST(PointLight, ReferenceRangeAndRadius) {
   const Scene ranged = ballUnderPoint(3.0f, R"(,"range":5)");

@@ -1,0 +1,147 @@
+// Scenes of several lights (render/other_lights.cpp): every shadowed light has maps of its own,
+// each is measured against the reference traced toward that light, and the colour sums every
+// light (an unshadowed one lights through casters). street-lamps: three lamps and a spot.
+#include "bench/reference_cache.h"
+#include "tests/assets_dir.h"
+#include "tests/gl_test_util.h"
+#include "technique.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <unistd.h>
+
+namespace sl {
+namespace {
+
+std::vector<float> redChannel(const Texture2D& t) {
+  const std::vector<float> rg = t.readFloats(2);
+  std::vector<float> v(rg.size() / 2);
+  for (size_t i = 0; i < v.size(); ++i) v[i] = rg[2 * i];
+  return v;
+}
+
+struct LampsTruth {
+  Scene scene;
+  FrameInput in;
+  ReferenceImage reference;
+};
+
+LampsTruth lampsTruth(test::GlHarness& h, int w, int hgt) {
+  LampsTruth t{loadScene("street-lamps", test::kAssets), {}, {}};
+  h.renderer.setScene(t.scene);
+  t.in.camera = t.scene.cameras.front();
+  t.in.width = w;
+  t.in.height = hgt;
+  ReferenceSettings rs;
+  rs.samples = 16;
+  t.reference = ReferenceCache(t.scene, rs).forFrame(h.renderer, t.in);
+  return t;
+}
+
+// Each light's visibility against its own reference: a light read through another's maps (or
+// every light given the first one's) is tens of percent wrong, since the lamps stand metres apart.
+TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
+  test::GlHarness h;
+  const LampsTruth t = lampsTruth(h, 160, 90);
+  ASSERT_EQ(t.scene.otherLights.size(), 3u);
+  ASSERT_EQ(t.reference.otherLights.size(), 3u);
+  for (const char* preset : {"cube", "tetrahedron"}) {
+    Viewport vp(makeTechnique(preset, {"shadowmap.size=512"}));
+    test::renderFromCut(h, t.in, vp);
+    EXPECT_LE(viewportErrorMetrics(vp, t.reference).wrongPixelPct, 3.0) << preset << ", light 1";
+    for (size_t k = 0; k < 3; ++k) {
+      const Texture2D* tex = vp.otherLightVisibility(k);
+      ASSERT_NE(tex, nullptr) << preset << ", light " << k + 2;
+      const std::vector<float> v = redChannel(*tex);
+      const ErrorMetrics own = compareVisibility(v.data(), t.reference.otherLights[k].data(), t.reference.valid.data(),
+                                                 v.size());
+      const ErrorMetrics first =
+          compareVisibility(v.data(), t.reference.visibility.data(), t.reference.valid.data(), v.size());
+      EXPECT_EQ(own.nonfinite, 0) << preset << ", light " << k + 2;
+      EXPECT_LE(own.wrongPixelPct, 3.0) << preset << ", light " << k + 2;
+      // The instrument: this light's truth is not the first light's.
+      EXPECT_GE(first.wrongPixelPct, 10.0) << preset << ", light " << k + 2;
+    }
+    // The colour sums every light: against the same shading with the reference's visibilities.
+    const double image = viewportImageError(h.renderer, t.in, vp, t.reference.visibility, t.reference.valid,
+                                            t.reference.otherLights)
+                             .imageWrongPct;
+    EXPECT_LE(image, 3.0) << preset;
+    EXPECT_NE(vp.status().find("4 lights, 4 shadowed"), std::string::npos) << vp.status();
+  }
+  // Without the other lights' visibilities the shading of a scene of several lights is refused.
+  Viewport vp(makeTechnique("standard"));
+  test::renderFromCut(h, t.in, vp);
+  EXPECT_THROW(h.renderer.shadeWithVisibility(t.in, t.reference.visibility), std::invalid_argument);
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
+// The colour is the lights' sum: the same frame shaded with every other light in full shadow
+// differs wherever they reach, and the first light's share is unchanged by them.
+TEST(ManyLightsGl, ColourChangesWithEachLightsVisibility) {
+  test::GlHarness h;
+  const LampsTruth t = lampsTruth(h, 160, 90);
+  const auto& ref = t.reference;
+  Viewport vp(makeTechnique("standard"));
+  test::renderFromCut(h, t.in, vp);  // the frame shaded below (the reference may come from the cache)
+  const std::vector<unsigned char> all = h.renderer.shadeWithVisibility(t.in, ref.visibility, ref.otherLights);
+  std::vector<std::vector<float>> dark = ref.otherLights;
+  for (auto& v : dark) std::fill(v.begin(), v.end(), 0.0f);
+  const std::vector<unsigned char> firstOnly = h.renderer.shadeWithVisibility(t.in, ref.visibility, dark);
+  ASSERT_EQ(all.size(), firstOnly.size());
+  size_t brighter = 0, darker = 0, covered = 0;
+  for (size_t i = 0; i < ref.valid.size(); ++i) {
+    if (!ref.valid[i]) continue;
+    ++covered;
+    brighter += all[4 * i + 1] > firstOnly[4 * i + 1] + 2;
+    darker += all[4 * i + 1] + 2 < firstOnly[4 * i + 1];
+  }
+  EXPECT_GT(brighter, covered / 5) << "the other lights reach a fifth of the view at least";
+  EXPECT_EQ(darker, 0u) << "a light only adds";
+}
+
+// An unshadowed light ("shadow": false) lights through casters and makes no maps: the ground in
+// the sun's shadow of a box is as bright as with no box there, while the same scene with the sun
+// shadowed darkens it.
+TEST(ManyLightsGl, AnUnshadowedLightLightsThroughCasters) {
+  test::GlHarness h;
+  auto sceneWithSun = [](bool shadowed, bool box) {
+    const std::string objects = std::string(R"({"name":"ground","shape":"plane","size":[20,20],"color":[0.3,0.3,0.3]})") +
+                                (box ? R"(,{"name":"box","shape":"box","size":[1,1,1],"transform":{"translate":[0,0.5,0]}})"
+                                     : "");
+    const std::string json = R"({"objects":[)" + objects + R"(],"lights":[
+        {"type":"point","position":[1,6,3],"range":30},
+        {"type":"directional","direction":[1,-1,0],"shadow":)" +
+                             (shadowed ? "true" : "false") + R"(}],
+        "cameras":[{"name":"top","position":[1,8,0.01],"target":[1,0,0],"fov_deg":40}]})";
+    return loadScene(test::writeTempFile("many_lights_sun_" + std::to_string(::getpid()) + ".json", json),
+                     test::kAssets);
+  };
+  auto greenAt = [&](const Scene& scene, glm::vec3 world) {
+    h.renderer.setScene(scene);
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = 96;
+    in.height = 96;
+    Viewport vp(makeTechnique("standard"));
+    test::renderFromCut(h, in, vp);
+    const glm::vec4 clip = cameraProjection(in.camera, 1.0f) * cameraView(in.camera) * glm::vec4(world, 1.0f);
+    const int x = int((clip.x / clip.w * 0.5f + 0.5f) * in.width), y = int((clip.y / clip.w * 0.5f + 0.5f) * in.height);
+    return int(vp.colorTexture()->readRgba8()[4 * (size_t(y) * in.width + x) + 1]);
+  };
+  // The sun travels along +x and down at 45 degrees: the unit box shadows the ground from x = 0.5
+  // to 1.5; (1, 0, 0) is in that shadow and lit by the point light (6 m above, beside the box).
+  const glm::vec3 inSunShadow(1.0f, 0.0f, 0.0f);
+  const int through = greenAt(sceneWithSun(false, true), inSunShadow);
+  const int noBox = greenAt(sceneWithSun(false, false), inSunShadow);
+  const int shadowed = greenAt(sceneWithSun(true, true), inSunShadow);
+  EXPECT_NEAR(through, noBox, 3);
+  EXPECT_LT(shadowed + 20, through) << "the shadowed sun darkens the box's shadow";
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
+}  // namespace
+}  // namespace sl
