@@ -103,6 +103,31 @@ TEST(ManyLightsGl, ColourChangesWithEachLightsVisibility) {
   EXPECT_EQ(darker, 0u) << "a light only adds";
 }
 
+// lights.shadowed: a shadow budget. Lights beyond it make no maps and light through casters, so
+// the colour only brightens, and the status says how many were shadowed.
+TEST(ManyLightsGl, ABudgetOfShadowedLightsLeavesTheRestUnshadowed) {
+  test::GlHarness h;
+  const LampsTruth t = lampsTruth(h, 160, 90);
+  Viewport all(makeTechnique("cube", {"shadowmap.size=256"}));
+  Viewport two(makeTechnique("cube", {"shadowmap.size=256", "lights.shadowed=2"}));
+  test::renderFromCut(h, t.in, all);
+  const std::vector<unsigned char> allColour = all.colorTexture()->readRgba8();
+  test::renderFromCut(h, t.in, two);
+  const std::vector<unsigned char> twoColour = two.colorTexture()->readRgba8();
+  EXPECT_NE(two.otherLightVisibility(0), nullptr);
+  EXPECT_EQ(two.otherLightVisibility(1), nullptr);
+  EXPECT_EQ(two.otherLightVisibility(2), nullptr);
+  EXPECT_NE(two.status().find("4 lights, 2 shadowed"), std::string::npos) << two.status();
+  EXPECT_LT(two.shadowTexels(), all.shadowTexels());
+  size_t brighter = 0;
+  for (size_t i = 0; i < t.reference.valid.size(); ++i) {
+    if (!t.reference.valid[i]) continue;
+    EXPECT_GE(twoColour[4 * i + 1] + 2, allColour[4 * i + 1]) << "pixel " << i;
+    brighter += twoColour[4 * i + 1] > allColour[4 * i + 1] + 8;
+  }
+  EXPECT_GT(brighter, 50u) << "the unshadowed lamps light what their shadows darkened";
+}
+
 // An unshadowed light ("shadow": false) lights through casters and makes no maps: the ground in
 // the sun's shadow of a box is as bright as with no box there, while the same scene with the sun
 // shadowed darkens it.

@@ -38,6 +38,7 @@ struct ErrorPanel::Job {
   RestKey key;
   const Scene* scene = nullptr;  // read only while the BVH is built (beforeSceneChange joins)
   bool sceneMoves = false;
+  std::vector<Light> otherLights;  // Scene::otherLights when the job started
   int threads = 1;
   std::vector<float> position, normal;  // G-buffer readback, rows bottom-up
   std::vector<uint32_t> surface;        // instance + 1, triangle (see Renderer::gSurface)
@@ -50,6 +51,7 @@ struct ErrorPanel::Job {
 
   // Results, read by the GL thread only after `done`.
   std::vector<float> visibility;
+  std::vector<std::vector<float>> otherVisibility;  // per other light; empty where unshadowed
   std::vector<uint8_t> valid;
   std::string error;
   double buildMs = 0, traceMs = 0;
@@ -91,6 +93,14 @@ struct ErrorPanel::Job {
           std::fill(masked.begin() + long(4 * a), masked.begin() + long(4 * b), 0.0f);
         }
         rowsDone = y1;
+      }
+      // A scene of several lights: each other shadowed light whole, after the first (the image
+      // error shades them all; the visibility metrics and the error view show the first).
+      otherVisibility.assign(otherLights.size(), {});
+      for (size_t k = 0; k < otherLights.size() && !cancel; ++k) {
+        if (!otherLights[k].shadow) continue;
+        options.light = &otherLights[k];
+        otherVisibility[k] = tracer.visibility(GBufferView{w, h, position.data(), normal.data(), surface.data()}, options);
       }
       traceMs = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
     } catch (const std::exception& e) {
@@ -150,6 +160,7 @@ void ErrorPanel::pollJobs() {
     Reference ref;
     ref.key = job.key;
     ref.visibility = std::move(job.visibility);
+    ref.otherVisibility = std::move(job.otherVisibility);
     ref.valid = std::move(job.valid);
     ref.id = nextReferenceId_++;
     ref.traceMs = job.traceMs;
@@ -193,6 +204,7 @@ void ErrorPanel::startJob(ExplorerState& state, Renderer& renderer, const RestKe
   job->key = key;
   job->scene = state.scene.get();
   job->sceneMoves = sceneMoves_;
+  job->otherLights = state.scene->otherLights;
   // Leave a core for the window; the tracer's result does not depend on the thread count.
   job->threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
   job->position = pos.readFloats(4);
@@ -279,7 +291,7 @@ void ErrorPanel::measure(ExplorerState& state, Renderer& renderer, const Referen
   in.width = ref.key.width;
   in.height = ref.key.height;
   try {
-    va.image = viewportImageError(renderer, in, vp, ref.visibility, ref.valid);
+    va.image = viewportImageError(renderer, in, vp, ref.visibility, ref.valid, ref.otherVisibility);
   } catch (const std::exception&) {
     va.image = ImageErrorMetrics{std::numeric_limits<double>::quiet_NaN(), 0};
   }

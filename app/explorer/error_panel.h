@@ -175,6 +175,7 @@ class ErrorPanel {
   struct Reference {
     RestKey key;
     std::vector<float> visibility;
+    std::vector<std::vector<float>> otherVisibility;  // Scene::otherLights' (image error)
     std::vector<uint8_t> valid;
     uint64_t id = 0;
     double traceMs = 0, buildMs = 0;

@@ -17,9 +17,11 @@ namespace sl {
 void Renderer::syncOtherLightViewports(Viewport& vp) {
   const std::vector<Light>& others = scene_->otherLights;
   vp.otherLights_.resize(others.size());
+  // Scene::light is always shadowed; lights.shadowed counts it.
+  int budget = vp.technique.params.has("lights.shadowed") ? vp.technique.params.i("lights.shadowed") - 1 : 1 << 20;
   for (size_t k = 0; k < others.size(); ++k) {
     std::unique_ptr<Viewport>& sub = vp.otherLights_[k];
-    if (!others[k].shadow) {
+    if (!others[k].shadow || budget-- <= 0) {
       sub.reset();
       continue;
     }
@@ -38,7 +40,8 @@ void Renderer::syncOtherLightViewports(Viewport& vp) {
 namespace {
 
 // The other lights' direct terms summed into `fbo` (one R16F target): cleared, then one
-// additive fullscreen draw per light. visibility[k]: the k-th light's, null when unshadowed.
+// additive fullscreen draw per light. visibility[k]: the k-th light's, null where it is not
+// shadowed (by the scene file, or beyond lights.shadowed): lit through casters.
 void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Framebuffer& fbo,
                            const std::vector<const Texture2D*>& visibility, const ProgramSetup& bindGBuffer,
                            const std::function<void()>& drawFullscreen) {
@@ -50,8 +53,7 @@ void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Fra
   for (size_t k = 0; k < scene.otherLights.size(); ++k) {
     const Light& light = scene.otherLights[k];
     const Texture2D* vis = k < visibility.size() ? visibility[k] : nullptr;
-    if (light.shadow && !vis) continue;  // the caller checked; never read a missing target
-    const std::string defines = lightDefines(light) + (light.shadow ? "#define SL_SHADOWED_LIGHT\n" : "");
+    const std::string defines = lightDefines(light) + (vis ? "#define SL_SHADOWED_LIGHT\n" : "");
     ProgramSpec spec{"light direct",
                      {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "passes/light_direct.frag"}},
                      defines};
@@ -61,7 +63,7 @@ void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Fra
     setLightUniforms(p, light);
     TextureUnits units;
     bindGBuffer(p, units);
-    if (light.shadow) units.bind(p, "u_visibility", vis->id());
+    if (vis) units.bind(p, "u_visibility", vis->id());
     drawFullscreen();
   }
   glDisable(GL_BLEND);

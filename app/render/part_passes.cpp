@@ -155,6 +155,13 @@ AccumulationContext Renderer::accumulationContext(FrameGraph& g, Viewport& vp, c
   ctx.drawSky = [this] { drawSky(); };
   ctx.rawVisibilityTarget = vp.rawVisibility_.get();
   ctx.addForwardShade = [this, &g, &vp, tag, prelude, shadowMap, bindInputs, &in] {
+    // Another light of the scene: only its visibility is read (the colour sums the lights),
+    // so the fullscreen test over the G-buffer replaces drawing the scene again (half the
+    // cost per light on llvmpipe: docs/performance.md, "Several lights").
+    if (vp.light_ && vp.light_ != &scene_->light) {
+      addVisibilityPass(g, vp, tag, prelude, shadowMap, bindInputs);
+      return AccumulationOutput{"visibility.raw" + tag, vp.rawVisibility_.get(), "gbuffer", gDepth_.get()};
+    }
     return addForwardShadePass(g, vp, tag, prelude, shadowMap, bindInputs, in);
   };
   ctx.addVisibilityTest = [this, &g, &vp, tag, prelude, shadowMap, bindInputs] {
