@@ -51,14 +51,6 @@ const std::vector<ParamDecl>& commonParams() {
        .defaultValue = 1,
        .help = "skip, per light view (each cascade, face or layer), instances whose bounds lie outside its window: "
                "they cannot cast into it (same image, less drawing)"},
-      {.key = "lights.shadowed",
-       .type = ParamType::Int,
-       .min = 1,
-       .max = kMaxSceneLights,
-       .defaultValue = kMaxSceneLights,
-       .unit = "lights",
-       .help = "a scene of several lights: the first this many shadow-casting lights of its list get maps of their "
-               "own, later ones light through casters (a shadow budget; the bench sweeps it for the cost per light)"},
       {.key = "bias.mode",
        .type = ParamType::Enum,
        .defaultValue = 2,
@@ -93,6 +85,14 @@ const std::vector<ParamDecl>& commonParams() {
        .type = ParamType::Bool,
        .defaultValue = 1,
        .help = "move the light frustum by whole texels and keep the texel size on a fixed ladder (less flicker)"},
+      {.key = "lights.shadowed",
+       .type = ParamType::Int,
+       .min = 1,
+       .max = kMaxSceneLights,
+       .defaultValue = kMaxSceneLights,
+       .unit = "lights",
+       .help = "a scene of several lights: the first this many shadow-casting lights of its list get maps of their "
+               "own, later ones light through casters (a shadow budget; the bench sweeps it for the cost per light)"},
   };
   return decls;
 }
