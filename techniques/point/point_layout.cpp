@@ -2,10 +2,14 @@
 // sets, light_faces.cpp) and the dual paraboloid (dual_paraboloid.cpp).
 #include "point/point_layout.h"
 
+#include "gl/shader_library.h"
+#include "part/contexts.h"
 #include "part/light_frame.h"
 #include "point/directions_view.h"
 #include "point/dual_paraboloid.h"
+#include "point/face_cache.h"
 
+#include <functional>
 #include <string>
 
 namespace sl {
@@ -22,7 +26,29 @@ FaceViews viewsOrFocused(const PointLayoutSpec& spec, const LayoutInput& in, boo
   return focused;
 }
 
-// Remembers which views this frame needs: the shadow pass draws only those.
+// What every point layout declares: whether faces are kept between frames (face_cache.h).
+ParamDecl keepFacesParam() {
+  return {.key = "point.keep_faces",
+          .type = ParamType::Bool,
+          .defaultValue = 1,
+          .help = "keep a face's layer from an earlier frame while its view, the technique's values and shaders and "
+                  "the casters in its frustum are unchanged (depth representations, which keep their layers): a "
+                  "still camera redraws no face, an object moving under one face redraws that face"};
+}
+
+// The parameter values and the shader builds: a change redraws every face.
+uint64_t techniqueStamp(const ParamSet& params, const ShaderLibrary* shaders) {
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](uint64_t v) { h = (h ^ v) * 1099511628211ull; };
+  for (const ParamDecl& d : params.decls()) {
+    mix(std::hash<std::string>{}(d.key));
+    mix(std::hash<double>{}(params.get(d.key)));
+  }
+  mix(shaders ? static_cast<uint64_t>(shaders->buildCount()) : 0);
+  return h;
+}
+
+// Remembers which views this frame needs and which it may keep: the shadow pass draws the rest.
 class PointLayoutState : public LayoutState {
  public:
   PointLayoutState(const Layout& layout, const PointLayoutSpec& spec) : LayoutState(layout), spec_(spec) {}
@@ -30,22 +56,60 @@ class PointLayoutState : public LayoutState {
     bool pointLight = false;
     FaceViews v = viewsOrFocused(spec_, in, pointLight);
     needed_ = v.needed;
-    status_ = pointLight ? spec_.id + ": " + std::to_string(v.neededCount()) + " of " +
-                               std::to_string(v.needed.size()) + " " + spec_.unit + " drawn"
-                         : spec_.id + ": the scene's light is not a point light; one focused map";
+    pointLight_ = pointLight;
+    scene_ = in.scene;
+    time_ = in.time;
+    keepOn_ = in.params && in.params->has("point.keep_faces") && in.params->b("point.keep_faces");
+    content_.clear();
+    for (const LightView& view : v.space.views)
+      content_.push_back({.viewProj = view.viewProj,
+                          .sceneGeneration = in.sceneGeneration,
+                          .size = v.space.size,
+                          .projective = view.projection == LightView::Projection::Matrix});
+    status_ = statusLine(v.neededCount(), 0);
     return v.space;
   }
-  void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool) override {
-    for (size_t f = 0; f < layers.size() && f < needed_.size(); ++f)
-      if (!needed_[f]) layers[f] = ShadowLayerDraw{.tiled = true, .tiles = {}};  // cleared, nothing drawn
+  std::vector<std::string> addPasses(FrameGraph&, const PartContext& ctx) override {
+    const uint64_t stamp = techniqueStamp(*ctx.params, ctx.shaders);
+    for (FaceContent& c : content_) c.techniqueStamp = stamp;
+    return {};
   }
+  void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {
+    std::vector<bool> kept(layers.size(), false);
+    if (keepOn_ && keepsLayers && scene_) kept = cache_.keep(content_, needed_, *scene_, time_);
+    std::vector<bool> drawn(layers.size(), false);
+    int keptCount = 0, neededCount = 0;
+    for (size_t f = 0; f < layers.size() && f < needed_.size(); ++f) {
+      neededCount += needed_[f] ? 1 : 0;
+      keptCount += kept[f] ? 1 : 0;
+      drawn[f] = needed_[f] && !kept[f];
+      // Not drawn: tiles of nothing, so the layer is bound without being drawn (and kept as it
+      // was when the representation keeps its layers).
+      if (!drawn[f]) layers[f] = ShadowLayerDraw{.tiled = true, .tiles = {}};
+    }
+    cache_.record(content_, drawn, keepsLayers, time_);
+    status_ = statusLine(neededCount, keptCount);
+  }
+  void reset() override { cache_.clear(); }
   std::string status() const override { return status_; }
   std::vector<std::string> views() const override { return {"directions"}; }
   void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) override { addDirectionsViewPass(graph, ctx); }
 
  private:
+  std::string statusLine(int needed, int kept) const {
+    if (!pointLight_) return spec_.id + ": the scene's light is not a point light; one focused map";
+    std::string s = spec_.id + ": " + std::to_string(needed) + " of " + std::to_string(needed_.size()) + " " +
+                    spec_.unit + " drawn";
+    if (kept > 0) s += ", " + std::to_string(kept) + " kept from an earlier frame";
+    return s;
+  }
   const PointLayoutSpec& spec_;
   std::vector<bool> needed_;
+  std::vector<FaceContent> content_;
+  FaceCache cache_;
+  const Scene* scene_ = nullptr;
+  double time_ = 0;
+  bool pointLight_ = false, keepOn_ = false;
   std::string status_;
 };
 
@@ -55,7 +119,11 @@ class PointLayout : public Layout {
   std::string id() const override { return spec_.id; }
   std::string help() const override { return spec_.help; }
   std::string glslModule() const override { return spec_.glslModule; }
-  std::vector<ParamDecl> params() const override { return spec_.params; }
+  std::vector<ParamDecl> params() const override {
+    std::vector<ParamDecl> decls = spec_.params;
+    decls.push_back(keepFacesParam());
+    return decls;
+  }
   LightSpace compute(const LayoutInput& in) const override {
     bool pointLight = false;
     return viewsOrFocused(spec_, in, pointLight).space;
