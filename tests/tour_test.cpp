@@ -123,9 +123,11 @@ TEST(TourParse, StructuralErrors) {
 
 TEST(TourParse, ClaimsNameTheirViewportsAndMetric) {
   const Tour t = parseTour(tourWith(R"({"title": "a", "viewports": ["uniform", "standard"], "frames": [1, 5],
-      "claims": [{"better": 2, "than": 1, "factor": 2, "metric": "false_light"}, {"converges": 1}]})"),
+      "claims": [{"better": 2, "than": 1, "factor": 2, "metric": "false_light"}, {"converges": 1},
+                 {"better": 1, "than": 2, "metric": "image_wrong"}]})"),
                            "lecture.json");
-  ASSERT_EQ(t.steps[0].claims.size(), 2u);
+  ASSERT_EQ(t.steps[0].claims.size(), 3u);
+  EXPECT_EQ(t.steps[0].claims[2].metric, TourClaim::Metric::ImageWrong);
   EXPECT_EQ(t.steps[0].claims[0].kind, TourClaim::Kind::Better);
   EXPECT_EQ(t.steps[0].claims[0].viewport, 2);
   EXPECT_EQ(t.steps[0].claims[0].than, 1);
@@ -137,7 +139,7 @@ TEST(TourParse, ClaimsNameTheirViewportsAndMetric) {
   expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 1}]})")), {"claims[0].than", "itself"});
   expectMessage(parseError(tourWith(two + R"({"better": 1}]})")), {"claims[0]", "'than'"});
   expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 2, "metric": "psnr"}]})")),
-                {"claims[0].metric", "psnr"});
+                {"claims[0].metric", "psnr", "image_wrong"});
   expectMessage(parseError(tourWith(two + R"({"better": 1, "than": 2, "factor": 0.5}]})")),
                 {"claims[0].factor", "[1, 1000]"});
   expectMessage(parseError(tourWith(two + R"({"converges": 1}]})")), {"claims", "two frame counts"});

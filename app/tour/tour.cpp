@@ -188,8 +188,10 @@ TourClaim parseClaim(const JsonReader& r, const json& j, const std::string& wher
       c.metric = TourClaim::Metric::FalseLight;
     else if (metric == "false_shadow")
       c.metric = TourClaim::Metric::FalseShadow;
+    else if (metric == "image_wrong")
+      c.metric = TourClaim::Metric::ImageWrong;
     else if (metric != "wrong")
-      r.fail(where + ".metric", "unknown metric '" + metric + "' (wrong, false_light, false_shadow)");
+      r.fail(where + ".metric", "unknown metric '" + metric + "' (wrong, false_light, false_shadow, image_wrong)");
   }
   if (const json* f = JsonReader::find(j, "factor")) {
     c.factor = r.number(*f, where + ".factor");

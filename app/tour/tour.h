@@ -61,8 +61,9 @@ struct TourPlot {
 struct TourClaim {
   enum class Kind { Better, Converges };
   // What is counted: wrong pixels, or only those lit where the truth is shadowed (leaks), or only
-  // those shadowed where it is lit ("metric": "wrong", "false_light", "false_shadow").
-  enum class Metric { Wrong, FalseLight, FalseShadow };
+  // those shadowed where it is lit ("metric": "wrong", "false_light", "false_shadow"); or pixels
+  // whose colour differs from the reference's ("image_wrong": every light of the scene counts).
+  enum class Metric { Wrong, FalseLight, FalseShadow, ImageWrong };
   Kind kind = Kind::Better;
   Metric metric = Metric::Wrong;
   int viewport = 1, than = 0;

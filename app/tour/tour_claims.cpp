@@ -6,6 +6,7 @@
 #include "render/renderer.h"
 #include "technique.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -24,8 +25,17 @@ std::string describe(const TourStep& s, int viewport) {
   return "viewport " + std::to_string(viewport) + " (" + (v.label.empty() ? v.technique : v.label) + ")";
 }
 
-double counted(const ErrorMetrics& m, TourClaim::Metric metric) {
+// A viewport's measurements at one captured frame.
+struct Counts {
+  ErrorMetrics visibility;
+  double imageWrongPct = 0;
+};
+
+double counted(const Counts& c, TourClaim::Metric metric) {
+  const ErrorMetrics& m = c.visibility;
   switch (metric) {
+    case TourClaim::Metric::ImageWrong:
+      return c.imageWrongPct;
     case TourClaim::Metric::FalseLight:
       return m.falseLightPct;
     case TourClaim::Metric::FalseShadow:
@@ -38,13 +48,14 @@ double counted(const ErrorMetrics& m, TourClaim::Metric metric) {
 const char* metricName(TourClaim::Metric metric) {
   return metric == TourClaim::Metric::FalseLight    ? "falsely lit"
          : metric == TourClaim::Metric::FalseShadow ? "falsely shadowed"
+         : metric == TourClaim::Metric::ImageWrong  ? "of the colour wrong"
                                                     : "wrong";
 }
 
-ClaimCheck judge(const TourStep& s, const TourClaim& c, const std::vector<std::vector<ErrorMetrics>>& metrics) {
+ClaimCheck judge(const TourStep& s, const TourClaim& c, const std::vector<std::vector<Counts>>& metrics) {
   ClaimCheck out;
   out.claim = c;
-  const std::vector<ErrorMetrics>& mine = metrics.at(static_cast<size_t>(c.viewport - 1));
+  const std::vector<Counts>& mine = metrics.at(static_cast<size_t>(c.viewport - 1));
   out.wrongPct = counted(mine.back(), c.metric);
   const bool better = c.kind == TourClaim::Kind::Better;
   out.comparedPct = counted(better ? metrics.at(static_cast<size_t>(c.than - 1)).back() : mine.front(), c.metric);
@@ -81,7 +92,9 @@ std::vector<ClaimCheck> checkStepClaims(const Tour& tour, size_t step, ShaderLib
     vps.push_back(std::make_unique<Viewport>(makeTechnique(v.technique, v.overrides)));
     shown.push_back(vps.back().get());
   }
-  std::vector<std::vector<ErrorMetrics>> metrics(vps.size());  // per viewport, per captured frame
+  std::vector<std::vector<Counts>> metrics(vps.size());  // per viewport, per captured frame
+  const bool image = std::any_of(s.claims.begin(), s.claims.end(),
+                                 [](const TourClaim& c) { return c.metric == TourClaim::Metric::ImageWrong; });
   size_t row = 0;
   for (int f = 1; f <= s.frames.back(); ++f) {
     in.cut = f == 1;
@@ -90,7 +103,11 @@ std::vector<ClaimCheck> checkStepClaims(const Tour& tour, size_t step, ShaderLib
     ++row;
     for (size_t v = 0; v < vps.size(); ++v) {
       const std::vector<float> vis = viewportVisibility(*vps[v]);
-      metrics[v].push_back(compareVisibility(vis.data(), ref.visibility.data(), ref.valid.data(), vis.size()));
+      Counts counts{compareVisibility(vis.data(), ref.visibility.data(), ref.valid.data(), vis.size()), 0};
+      if (image)
+        counts.imageWrongPct =
+            viewportImageError(renderer, in, *vps[v], ref.visibility, ref.valid, ref.otherLights).imageWrongPct;
+      metrics[v].push_back(counts);
     }
   }
   std::vector<ClaimCheck> out;
