@@ -207,6 +207,39 @@ TEST(Bench, SeesShadowMapResolution) {
   EXPECT_GT(low - high, 0.02);
 }
 
+// A scene of several lights: each other light's error against the reference traced toward it,
+// and which ones the budget left unshadowed (the first light's stays `error`).
+TEST(Bench, MeasuresEveryLightOfTheScene) {
+  BenchTempDir t;
+  BenchOptions o;
+  o.scene = "street-lamps";
+  o.techniques = {"cube"};
+  o.sweeps = {"lights.shadowed=4,2"};
+  o.sets = {"shadowmap.size=256"};
+  o.frames = 1;
+  o.warmup = 1;
+  o.width = 96;
+  o.height = 54;
+  std::ostringstream log;
+  const BenchResult r = runBench(o, log);
+  ASSERT_EQ(r.entries.size(), 2u);
+  for (const BenchEntry& e : r.entries) ASSERT_EQ(e.otherLights.size(), 3u) << e.label;
+  for (const auto& l : r.entries[0].otherLights) {
+    EXPECT_TRUE(l.shadowed);
+    EXPECT_LE(l.error.wrongPixelPct, 5.0);
+    EXPECT_GT(l.error.validPixels, 0);
+  }
+  EXPECT_TRUE(r.entries[1].otherLights[0].shadowed);
+  EXPECT_FALSE(r.entries[1].otherLights[1].shadowed);
+  EXPECT_FALSE(r.entries[1].otherLights[2].shadowed);
+  // Two lamps lighting through casters: the colour is further from the truth.
+  EXPECT_GT(r.entries[1].image.imageWrongPct, r.entries[0].image.imageWrongPct);
+  const nlohmann::json j = benchToJson(r);
+  EXPECT_EQ(j["entries"][1]["error"]["other_lights"].size(), 3u);
+  EXPECT_EQ(j["entries"][1]["error"]["other_lights"][2]["shadowed"], false);
+  EXPECT_EQ(j["entries"][0]["error"]["other_lights"][0]["light"], 2);
+}
+
 TEST(Bench, BadKeysFailClearly) {
   BenchTempDir t;
   const std::string base = "bench --scene basic --techniques standard,pcf --size 64x36 --frames 1 --json '" +

@@ -64,6 +64,14 @@ struct BenchEntry {
   std::vector<PassMs> passes;
   ErrorMetrics error;               // last frame vs its reference
   ImageErrorMetrics image;          // last frame's colour vs the same shading with the reference's visibility
+  // A scene of several lights: `error` is the first light's; these are the others' (one per
+  // Scene::otherLights entry, against the reference traced toward that light; empty `shadowed`
+  // where the technique made no maps for it: unshadowed in the file or beyond lights.shadowed).
+  struct LightError {
+    bool shadowed = false;
+    ErrorMetrics error;
+  };
+  std::vector<LightError> otherLights;
   std::vector<double> convergence;  // wrong_pixel_pct per measured frame
   bool hasFlicker = false;
   double flicker = 0, flickerTechnique = 0, flickerReference = 0;

@@ -57,6 +57,19 @@ nlohmann::json benchToJson(const BenchResult& r) {
     x["error"] = {{"wrong_pixel_pct", e.error.wrongPixelPct}, {"false_shadow_pct", e.error.falseShadowPct},
                   {"false_light_pct", e.error.falseLightPct}, {"rmse", e.error.rmse},
                   {"image_wrong_pct", e.image.imageWrongPct}, {"valid_pixels", e.error.validPixels}};
+    if (!e.otherLights.empty()) {
+      // The other lights of the scene, numbered as in the file's list after the first shadowed one.
+      json lights = json::array();
+      for (size_t k = 0; k < e.otherLights.size(); ++k) {
+        const auto& l = e.otherLights[k];
+        json one = {{"light", k + 2}, {"shadowed", l.shadowed}};
+        if (l.shadowed)
+          one.update({{"wrong_pixel_pct", l.error.wrongPixelPct}, {"false_shadow_pct", l.error.falseShadowPct},
+                      {"false_light_pct", l.error.falseLightPct}, {"rmse", l.error.rmse}});
+        lights.push_back(one);
+      }
+      x["error"]["other_lights"] = lights;
+    }
     x["convergence"] = e.convergence;
     if (e.hasFlicker)
       x["flicker"] = {{"excess", e.flicker},

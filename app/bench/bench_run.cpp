@@ -255,6 +255,21 @@ void finishEntry(EntryRun& run, const EntryRun& base, const BenchResult& r, cons
   if (!run.worldFrames.empty()) out.worldFlicker = meanTemporalChange(run.worldFrames, r.worldValid.data());
 }
 
+// Each other light's visibility against the reference traced toward it.
+std::vector<BenchEntry::LightError> otherLightsError(const Viewport& viewport, const ReferenceImage& ref) {
+  std::vector<BenchEntry::LightError> out(ref.otherLights.size());
+  for (size_t k = 0; k < ref.otherLights.size(); ++k) {
+    const Texture2D* tex = viewport.otherLightVisibility(k);
+    if (!tex || ref.otherLights[k].empty()) continue;
+    const std::vector<float> rg = tex->readFloats(2);
+    std::vector<float> v(rg.size() / 2);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = rg[2 * i];
+    if (v.size() != ref.otherLights[k].size()) continue;
+    out[k] = {true, compareVisibility(v.data(), ref.otherLights[k].data(), ref.valid.data(), v.size())};
+  }
+  return out;
+}
+
 }  // namespace
 
 BenchResult runBench(const BenchOptions& o, std::ostream& log) {
@@ -319,6 +334,7 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     finishEntry(run, runs.front(), r, commonValid);
     run.out.image = viewportImageError(renderer, fr.inputs.back(), *run.viewport, r.lastReference.visibility,
                                        r.lastReference.valid, r.lastReference.otherLights);
+    run.out.otherLights = otherLightsError(*run.viewport, r.lastReference);
     r.timer = run.out.timer;
     const BenchEntry& out = run.out;
     log << "bench: [" << e + 1 << "/" << runs.size() << "] " << out.label << ": " << out.msMedian
