@@ -1,9 +1,9 @@
 // Scenes of several lights (render/other_lights.cpp): every shadowed light has maps of its own,
 // each is measured against the reference traced toward that light, and the colour sums every
 // light (an unshadowed one lights through casters). street-lamps: three lamps and a spot.
-#include "bench/reference_cache.h"
 #include "tests/assets_dir.h"
 #include "tests/gl_test_util.h"
+#include "tests/scene_truth_test_util.h"
 #include "technique.h"
 
 #include <gtest/gtest.h>
@@ -23,29 +23,13 @@ std::vector<float> redChannel(const Texture2D& t) {
   return v;
 }
 
-struct LampsTruth {
-  Scene scene;
-  FrameInput in;
-  ReferenceImage reference;
-};
-
-LampsTruth lampsTruth(test::GlHarness& h, int w, int hgt) {
-  LampsTruth t{loadScene("street-lamps", test::kAssets), {}, {}};
-  h.renderer.setScene(t.scene);
-  t.in.camera = t.scene.cameras.front();
-  t.in.width = w;
-  t.in.height = hgt;
-  ReferenceSettings rs;
-  rs.samples = 16;
-  t.reference = ReferenceCache(t.scene, rs).forFrame(h.renderer, t.in);
-  return t;
-}
+test::SceneTruth lampsTruth(test::GlHarness& h, int w, int hgt) { return test::sceneTruth(h, "street-lamps", w, hgt); }
 
 // Each light's visibility against its own reference: a light read through another's maps (or
 // every light given the first one's) is tens of percent wrong, since the lamps stand metres apart.
 TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
   test::GlHarness h;
-  const LampsTruth t = lampsTruth(h, 160, 90);
+  const test::SceneTruth t = lampsTruth(h, 160, 90);
   ASSERT_EQ(t.scene.otherLights.size(), 3u);
   ASSERT_EQ(t.reference.otherLights.size(), 3u);
   for (const char* preset : {"cube", "tetrahedron"}) {
@@ -83,7 +67,7 @@ TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
 // differs wherever they reach, and the first light's share is unchanged by them.
 TEST(ManyLightsGl, ColourChangesWithEachLightsVisibility) {
   test::GlHarness h;
-  const LampsTruth t = lampsTruth(h, 160, 90);
+  const test::SceneTruth t = lampsTruth(h, 160, 90);
   const auto& ref = t.reference;
   Viewport vp(makeTechnique("standard"));
   test::renderFromCut(h, t.in, vp);  // the frame shaded below (the reference may come from the cache)
@@ -107,7 +91,7 @@ TEST(ManyLightsGl, ColourChangesWithEachLightsVisibility) {
 // the colour only brightens, and the status says how many were shadowed.
 TEST(ManyLightsGl, ABudgetOfShadowedLightsLeavesTheRestUnshadowed) {
   test::GlHarness h;
-  const LampsTruth t = lampsTruth(h, 160, 90);
+  const test::SceneTruth t = lampsTruth(h, 160, 90);
   Viewport all(makeTechnique("cube", {"shadowmap.size=256"}));
   Viewport two(makeTechnique("cube", {"shadowmap.size=256", "lights.shadowed=2"}));
   test::renderFromCut(h, t.in, all);

@@ -3,9 +3,7 @@
 // from a cut (test::renderFromCut).
 #pragma once
 
-#include "bench/reference_cache.h"
-#include "tests/assets_dir.h"
-#include "tests/gl_test_util.h"
+#include "tests/scene_truth_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -13,23 +11,9 @@
 
 namespace sl::test {
 
-struct StreetTruth {
-  Scene scene;
-  FrameInput in;
-  ReferenceImage reference;
-};
+using StreetTruth = SceneTruth;
 
-inline StreetTruth streetTruth(GlHarness& h, int width, int height) {
-  StreetTruth t{loadScene("street", kAssets), {}, {}};
-  h.renderer.setScene(t.scene);
-  t.in.camera = t.scene.cameras.front();
-  t.in.width = width;
-  t.in.height = height;
-  ReferenceSettings rs;
-  rs.samples = 16;
-  t.reference = ReferenceCache(t.scene, rs).forFrame(h.renderer, t.in);
-  return t;
-}
+inline StreetTruth streetTruth(GlHarness& h, int width, int height) { return sceneTruth(h, "street", width, height); }
 
 // A preset's id as a test-name suffix (gtest allows no '-').
 inline std::string presetTestName(const ::testing::TestParamInfo<std::string>& info) {
