@@ -152,5 +152,57 @@ TEST(ManyLightsGl, AnUnshadowedLightLightsThroughCasters) {
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
 
+// Sixteen lights (the most a file may list) of every type, one inside a closed box, one exactly
+// on the ground, one unshadowed, under the representations and accumulations with per-light
+// state: every light's visibility is finite and in [0, 1] and the colour has no magenta.
+TEST(ManyLightsGl, SixteenLightsOfEveryTypeStayFinite) {
+  test::GlHarness h;
+  std::string lights;
+  for (int i = 0; i < 10; ++i)
+    lights += R"({"type":"point","position":[)" + std::to_string(-9 + 2 * i) + R"(,2.5,)" + std::to_string(i % 3 - 1) +
+              R"(],"range":9},)";
+  lights += R"({"type":"point","position":[4,0.5,4],"range":9},)";  // inside the closed box
+  lights += R"({"type":"point","position":[-4,0,4]},)";             // on the ground plane
+  lights += R"({"type":"spot","position":[0,6,0],"direction":[0,-1,0.2],"fov_deg":70},)";
+  lights += R"({"type":"spot","position":[3,4,-3],"direction":[-1,-1,1],"fov_deg":40,"radius":0.2},)";
+  lights += R"({"type":"directional","direction":[0.3,-1,0.2]},)";
+  lights += R"({"type":"directional","direction":[-0.5,-1,0],"shadow":false})";
+  const Scene scene = loadScene(test::writeTempFile("sixteen_lights_" + std::to_string(::getpid()) + ".json", R"({
+    "objects":[{"name":"ground","shape":"plane","size":[30,30]},
+      {"name":"box","shape":"box","size":[2,2,2],"transform":{"translate":[4,1,4]}},
+      {"name":"ball","shape":"sphere","radius":0.7,"transform":{"translate":[-2,1,-1]}}],
+    "lights":[)" + lights + R"(],
+    "cameras":[{"name":"top","position":[0,12,10],"target":[0,0,0],"fov_deg":70}]})"),
+                                test::kAssets);
+  ASSERT_EQ(scene.otherLights.size(), 15u);
+  h.renderer.setScene(scene);
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 64;
+  in.height = 36;
+  for (const char* preset : {"cube-pcf", "vsm", "pcss", "pixel-correct"}) {
+    Viewport vp(makeTechnique(preset, {"technique.layout=cube", "shadowmap.size=128"}));
+    test::renderFromCut(h, in, vp, 3);
+    EXPECT_NE(vp.status().find("16 lights, 15 shadowed"), std::string::npos) << preset << ": " << vp.status();
+    for (size_t k = 0; k < 15; ++k) {
+      const Texture2D* tex = vp.otherLightVisibility(k);
+      if (k == 14) {
+        EXPECT_EQ(tex, nullptr) << "the unshadowed sun has no maps";
+        continue;
+      }
+      ASSERT_NE(tex, nullptr) << preset << ", light " << k + 2;
+      for (float v : redChannel(*tex)) {
+        ASSERT_TRUE(std::isfinite(v)) << preset << ", light " << k + 2;
+        ASSERT_GE(v, 0.0f) << preset << ", light " << k + 2;
+        ASSERT_LE(v, 1.0f) << preset << ", light " << k + 2;
+      }
+    }
+    const std::vector<unsigned char> rgba = vp.colorTexture()->readRgba8();
+    for (size_t i = 0; i < rgba.size(); i += 4)
+      ASSERT_FALSE(rgba[i] == 255 && rgba[i + 1] == 0 && rgba[i + 2] == 255) << preset << ": magenta at " << i / 4;
+  }
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
 }  // namespace
 }  // namespace sl
