@@ -40,8 +40,8 @@ TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
       const Texture2D* tex = vp.otherLightVisibility(k);
       ASSERT_NE(tex, nullptr) << preset << ", light " << k + 2;
       const std::vector<float> v = redChannel(*tex);
-      const ErrorMetrics own = compareVisibility(v.data(), t.reference.otherLights[k].data(), t.reference.valid.data(),
-                                                 v.size());
+      const ErrorMetrics own =
+          compareVisibility(v.data(), t.reference.otherLights[k].data(), t.reference.valid.data(), v.size());
       const ErrorMetrics first =
           compareVisibility(v.data(), t.reference.visibility.data(), t.reference.valid.data(), v.size());
       EXPECT_EQ(own.nonfinite, 0) << preset << ", light " << k + 2;
@@ -50,9 +50,9 @@ TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
       EXPECT_GE(first.wrongPixelPct, 10.0) << preset << ", light " << k + 2;
     }
     // The colour sums every light: against the same shading with the reference's visibilities.
-    const double image = viewportImageError(h.renderer, t.in, vp, t.reference.visibility, t.reference.valid,
-                                            t.reference.otherLights)
-                             .imageWrongPct;
+    const double image =
+        viewportImageError(h.renderer, t.in, vp, t.reference.visibility, t.reference.valid, t.reference.otherLights)
+            .imageWrongPct;
     EXPECT_LE(image, 3.0) << preset;
     EXPECT_NE(vp.status().find("4 lights, 4 shadowed"), std::string::npos) << vp.status();
   }
@@ -118,9 +118,9 @@ TEST(ManyLightsGl, ABudgetOfShadowedLightsLeavesTheRestUnshadowed) {
 TEST(ManyLightsGl, AnUnshadowedLightLightsThroughCasters) {
   test::GlHarness h;
   auto sceneWithSun = [](bool shadowed, bool box) {
-    const std::string objects = std::string(R"({"name":"ground","shape":"plane","size":[20,20],"color":[0.3,0.3,0.3]})") +
-                                (box ? R"(,{"name":"box","shape":"box","size":[1,1,1],"transform":{"translate":[0,0.5,0]}})"
-                                     : "");
+    const std::string objects =
+        std::string(R"({"name":"ground","shape":"plane","size":[20,20],"color":[0.3,0.3,0.3]})") +
+        (box ? R"(,{"name":"box","shape":"box","size":[1,1,1],"transform":{"translate":[0,0.5,0]}})" : "");
     const std::string json = R"({"objects":[)" + objects + R"(],"lights":[
         {"type":"point","position":[1,6,3],"range":30},
         {"type":"directional","direction":[1,-1,0],"shadow":)" +

@@ -353,8 +353,8 @@ TEST_P(EveryPreset, WithinThreeTimesStandardsWrongPixels) {
   if (pointLightThroughOneFrustum(*s, preset))
     bar = std::max(id == "sponza-lamps" ? kPointAsSpotInSponzaBar : kPointAsSpotBar, bar);
   if (heldToTheImage(id, preset)) {
-    const ImageErrorMetrics image =
-        viewportImageError(harness_->renderer, t.in, vp, t.reference.visibility, t.reference.valid, t.reference.otherLights);
+    const ImageErrorMetrics image = viewportImageError(harness_->renderer, t.in, vp, t.reference.visibility,
+                                                       t.reference.valid, t.reference.otherLights);
     EXPECT_LE(image.imageWrongPct, std::max(1.0, 3.0 * t.standardImageWrongPct))
         << id << " " << preset << ": visibility " << m.wrongPixelPct << " % wrong, and the shaded image differs "
         << "too (standard's image " << t.standardImageWrongPct << " %)";

@@ -62,8 +62,8 @@ struct BenchEntry {
   // each frame index back to back, so machine noise lands on both sides of the ratio. 1 for entry 0.
   double msRatio = 1, msRatioP25 = 1, msRatioP75 = 1;
   std::vector<PassMs> passes;
-  ErrorMetrics error;               // last frame vs its reference
-  ImageErrorMetrics image;          // last frame's colour vs the same shading with the reference's visibility
+  ErrorMetrics error;       // last frame vs its reference
+  ImageErrorMetrics image;  // last frame's colour vs the same shading with the reference's visibility
   // A scene of several lights: `error` is the first light's; these are the others' (one per
   // Scene::otherLights entry, against the reference traced toward that light; empty `shadowed`
   // where the technique made no maps for it: unshadowed in the file or beyond lights.shadowed).

@@ -64,8 +64,10 @@ nlohmann::json benchToJson(const BenchResult& r) {
         const auto& l = e.otherLights[k];
         json one = {{"light", k + 2}, {"shadowed", l.shadowed}};
         if (l.shadowed)
-          one.update({{"wrong_pixel_pct", l.error.wrongPixelPct}, {"false_shadow_pct", l.error.falseShadowPct},
-                      {"false_light_pct", l.error.falseLightPct}, {"rmse", l.error.rmse}});
+          one.update({{"wrong_pixel_pct", l.error.wrongPixelPct},
+                      {"false_shadow_pct", l.error.falseShadowPct},
+                      {"false_light_pct", l.error.falseLightPct},
+                      {"rmse", l.error.rmse}});
         lights.push_back(one);
       }
       x["error"]["other_lights"] = lights;

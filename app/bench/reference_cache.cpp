@@ -121,11 +121,11 @@ std::string ReferenceCache::keyText(const FrameInput& in) const {
   std::ostringstream k;
   k << "v" << kFormatVersion << ";scene=" << scene_.name << ":" << sceneHash_ << ";camera=" << c.name << ":"
     << fmt(c.position) << ":" << fmt(c.target) << ":" << fmt(c.up) << ":" << fmt(c.fovDeg) << ":" << fmt(c.nearPlane)
-    << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height
-    << ";" << lightKey(scene_.light, settings_.samples);
+    << ":" << fmt(c.farPlane) << ";size=" << in.width << "x" << in.height << ";"
+    << lightKey(scene_.light, settings_.samples);
   for (const Light& other : scene_.otherLights)
     k << ";other " << (other.shadow ? lightKey(other, settings_.samples) : std::string("unshadowed"));
-  k    << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))
+  k << ";time=" << (scene_.hasMotion() ? fmt(static_cast<float>(in.time)) : std::string("static"))
     << ";gl=" << glRendererName();  // the G-buffer is rasterized: a different driver may differ
   return k.str();
 }
@@ -232,7 +232,8 @@ ReferenceImage ReferenceCache::forLastFrame(const Renderer& renderer, const Fram
               static_cast<std::streamsize>(ref.visibility.size() * sizeof(float)));
       f.write(reinterpret_cast<const char*>(ref.valid.data()), static_cast<std::streamsize>(ref.valid.size()));
       for (const auto& other : ref.otherLights)
-        f.write(reinterpret_cast<const char*>(other.data()), static_cast<std::streamsize>(other.size() * sizeof(float)));
+        f.write(reinterpret_cast<const char*>(other.data()),
+                static_cast<std::streamsize>(other.size() * sizeof(float)));
       f.close();
       // Written whole then renamed, so a concurrent reader never sees half a file.
       if (f) std::filesystem::rename(tmp, ref.cacheFile, ec);

@@ -25,10 +25,10 @@ struct ReferenceImage {
   // One per Scene::otherLights entry: that light's visibility (empty for an unshadowed light).
   // `visibility` is Scene::light's, the one the visibility metrics compare.
   std::vector<std::vector<float>> otherLights;
-  bool cached = false;            // true when it came from the disk cache
-  double traceMs = 0;             // time spent tracing (0 when cached)
-  std::string cacheFile;          // where it is (or would be) stored
-  std::string key;                // the cache key text (for reports and debugging)
+  bool cached = false;    // true when it came from the disk cache
+  double traceMs = 0;     // time spent tracing (0 when cached)
+  std::string cacheFile;  // where it is (or would be) stored
+  std::string key;        // the cache key text (for reports and debugging)
 };
 
 struct ReferenceSettings {

@@ -100,7 +100,8 @@ struct ErrorPanel::Job {
       for (size_t k = 0; k < otherLights.size() && !cancel; ++k) {
         if (!otherLights[k].shadow) continue;
         options.light = &otherLights[k];
-        otherVisibility[k] = tracer.visibility(GBufferView{w, h, position.data(), normal.data(), surface.data()}, options);
+        otherVisibility[k] =
+            tracer.visibility(GBufferView{w, h, position.data(), normal.data(), surface.data()}, options);
       }
       traceMs = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
     } catch (const std::exception& e) {

@@ -447,8 +447,8 @@ std::vector<float> ReferenceTracer::visibility(const GBufferView& gbuffer, const
         const uint32_t* id = gbuffer.surface ? gbuffer.surface + 4 * pixel : nullptr;
         const int instance = id && id[0] > 0 ? static_cast<int>(id[0] - 1) : -1;
         const int triangle = id && id[0] > 0 ? static_cast<int>(id[1]) : -1;
-        result[pixel] = impl_->shade(light, glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]), instance,
-                                     triangle, gridSize, pixel);
+        result[pixel] = impl_->shade(light, glm::vec3(pos[0], pos[1], pos[2]), glm::vec3(nrm[0], nrm[1], nrm[2]),
+                                     instance, triangle, gridSize, pixel);
       }
     }
   };

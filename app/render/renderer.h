@@ -79,11 +79,11 @@ class Viewport {
   Framebuffer visibilityFbo_, colorFbo_, forwardFbo_;
   std::unique_ptr<LightViewsBuffer> lightViews_;
   int targetsW_ = 0, targetsH_ = 0;
-  std::string shadowResource_;   // what the visibility tests read (the representation's output)
-  AccumulationOutput output_;    // what the accumulation's passes left: the shown visibility, the colour's depth
-  PreviousFrame prev_;           // this viewport's last frame
-  int frameIndex_ = 0;           // frames this viewport has rendered
-  bool visibilityHeld_ = false;  // its visibility texture holds a finished frame of this size
+  std::string shadowResource_;    // what the visibility tests read (the representation's output)
+  AccumulationOutput output_;     // what the accumulation's passes left: the shown visibility, the colour's depth
+  PreviousFrame prev_;            // this viewport's last frame
+  int frameIndex_ = 0;            // frames this viewport has rendered
+  bool visibilityHeld_ = false;   // its visibility texture holds a finished frame of this size
   const Light* light_ = nullptr;  // the light its parts shadow this frame (a scene light)
   // Scene::otherLights' shadowed entries: the same technique with its own part states and
   // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.

@@ -31,9 +31,10 @@ ParamDecl keepFacesParam() {
   return {.key = "point.keep_faces",
           .type = ParamType::Bool,
           .defaultValue = 1,
-          .help = "keep a face's layer from an earlier frame while its view, the technique's values and shaders and "
-                  "the casters in its frustum are unchanged (depth representations, which keep their layers): a "
-                  "still camera redraws no face, an object moving under one face redraws that face"};
+          .help =
+              "keep a face's layer from an earlier frame while its view, the technique's values and shaders and "
+              "the casters in its frustum are unchanged (depth representations, which keep their layers): a "
+              "still camera redraws no face, an object moving under one face redraws that face"};
 }
 
 // The parameter values and the shader builds: a change redraws every face.
