@@ -204,5 +204,41 @@ TEST(ManyLightsGl, SixteenLightsOfEveryTypeStayFinite) {
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
 
+// A light's "color" scales its direct term per channel, for the first light (shaded with the
+// technique's visibility) and for another (summed by passes/light_direct.frag) alike: a red lamp
+// leaves green and blue at the ambient level, and a red plus a blue lamp light the ground purple.
+TEST(ManyLightsGl, LightsShadeInTheirColour) {
+  test::GlHarness h;
+  auto centreColour = [&h](const std::string& lights) {
+    const Scene scene = loadScene(test::writeTempFile("coloured_lights_" + std::to_string(::getpid()) + ".json", R"({
+      "objects":[{"name":"ground","shape":"plane","size":[20,20],"color":[0.5,0.5,0.5]}],
+      "lights":[)" + lights + R"(],
+      "cameras":[{"name":"top","position":[0,8,0.01],"target":[0,0,0],"fov_deg":40}]})"),
+                                  test::kAssets);
+    h.renderer.setScene(scene);
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = 32;
+    in.height = 32;
+    Viewport vp(makeTechnique("standard"));
+    test::renderFromCut(h, in, vp);
+    const std::vector<unsigned char> rgba = vp.colorTexture()->readRgba8();
+    const size_t centre = 4 * (16 * 32 + 16);
+    return glm::ivec3(rgba[centre], rgba[centre + 1], rgba[centre + 2]);
+  };
+  const std::string red = R"({"type":"point","position":[0,4,0],"color":[1,0,0]})";
+  const std::string white = R"({"type":"point","position":[0,4,0]})";
+  const std::string blue = R"({"type":"point","position":[0,4,0],"color":[0,0,1]})";
+  // Ambient alone: sqrt(0.5 * 0.18) = 0.30 (77 of 255); straight under a white lamp 1.0 * 0.82 more.
+  const glm::ivec3 w = centreColour(white), r = centreColour(red), rb = centreColour(red + "," + blue);
+  EXPECT_NEAR(w.g, 255.0 * std::sqrt(0.5 * (0.18 + 0.82)), 3) << "white lamp straight above";
+  EXPECT_NEAR(r.r, w.r, 2);
+  EXPECT_NEAR(r.g, 255.0 * std::sqrt(0.5 * 0.18), 2);
+  EXPECT_NEAR(r.b, 255.0 * std::sqrt(0.5 * 0.18), 2);
+  EXPECT_NEAR(rb.r, w.r, 2) << "red from the first light";
+  EXPECT_NEAR(rb.b, w.b, 2) << "blue from the other, through the sum";
+  EXPECT_NEAR(rb.g, r.g, 2);
+}
+
 }  // namespace
 }  // namespace sl

@@ -21,6 +21,7 @@ void setLightUniforms(const Program& p, const Light& light) {
   p.set("u_spotCosHalfAngle", light.type == Light::Type::Point ? -2.0f : std::cos(glm::radians(light.fovDeg) * 0.5f));
   p.set("u_lightRadius", light.radius);
   p.set("u_lightRange", light.range > 0.0f ? light.range : 1e30f);
+  p.set("u_lightColor", light.color);
 }
 
 std::string lightDefines(const Light& light) {

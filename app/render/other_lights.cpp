@@ -39,8 +39,8 @@ void Renderer::syncOtherLightViewports(Viewport& vp) {
 
 namespace {
 
-// The other lights' direct terms summed into `fbo` (one R16F target): cleared, then one
-// additive fullscreen draw per light. visibility[k]: the k-th light's, null where it is not
+// The other lights' direct terms, each in its colour, summed into `fbo` (one RGBA16F target):
+// cleared, then one additive fullscreen draw per light. visibility[k]: the k-th light's, null where it is not
 // shadowed (by the scene file, or beyond lights.shadowed): lit through casters.
 void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Framebuffer& fbo,
                            const std::vector<const Texture2D*>& visibility, const ProgramSetup& bindGBuffer,
@@ -73,7 +73,7 @@ void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Fra
 
 void Renderer::ensureOtherDirectTarget(Viewport& vp, int w, int h) {
   if (vp.otherDirect_ && vp.otherDirect_->width() == w && vp.otherDirect_->height() == h) return;
-  vp.otherDirect_ = std::make_unique<Texture2D>(GL_R16F, w, h, "lights.direct");
+  vp.otherDirect_ = std::make_unique<Texture2D>(GL_RGBA16F, w, h, "lights.direct");
   vp.otherDirectFbo_ = Framebuffer("other lights' direct light");
   vp.otherDirectFbo_.attach({vp.otherDirect_.get()}, nullptr);
 }
@@ -127,7 +127,7 @@ bool Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::stri
 const Texture2D& Renderer::substitutedOtherDirect(int w, int h, const std::vector<std::vector<float>>& others) {
   const std::vector<Light>& lights = scene_->otherLights;
   if (!substOtherDirect_ || substOtherDirect_->width() != w || substOtherDirect_->height() != h) {
-    substOtherDirect_ = std::make_unique<Texture2D>(GL_R16F, w, h, "substituted other lights' direct light");
+    substOtherDirect_ = std::make_unique<Texture2D>(GL_RGBA16F, w, h, "substituted other lights' direct light");
     substOtherDirectFbo_ = Framebuffer("shade with visibility: other lights");
     substOtherDirectFbo_.attach({substOtherDirect_.get()}, nullptr);
   }

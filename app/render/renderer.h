@@ -88,7 +88,7 @@ class Viewport {
   // Scene::otherLights' shadowed entries: the same technique with its own part states and
   // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.
   std::vector<std::unique_ptr<Viewport>> otherLights_;
-  std::unique_ptr<Texture2D> otherDirect_;  // the other lights' direct light summed (R16F)
+  std::unique_ptr<Texture2D> otherDirect_;  // the other lights' direct light summed (RGBA16F)
   Framebuffer otherDirectFbo_;
 };
 

@@ -4,6 +4,7 @@ uniform vec3 u_lightDirection;  // direction light travels, normalized
 uniform vec3 u_lightPosition;
 uniform float u_spotCosHalfAngle;  // -2 for a point light: no cone
 uniform float u_lightRange;        // point light: distance it reaches (1e30: no limit)
+uniform vec3 u_lightColor;         // intensity per channel (white: 1)
 
 vec3 directionToLight(vec3 p) {
 #ifdef SL_SPOT_LIGHT

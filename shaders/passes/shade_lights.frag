@@ -19,8 +19,8 @@ void main() {
   }
   vec3 N = normalize(texelFetch(u_gNormal, pixel, 0).xyz);
   float vis = texelFetch(u_visibility, pixel, 0).r;
-  float others = texelFetch(u_otherDirect, pixel, 0).r;
-  if (isnan(vis) || isinf(vis) || isnan(others) || isinf(others)) {
+  vec3 others = texelFetch(u_otherDirect, pixel, 0).rgb;
+  if (isnan(vis) || isinf(vis) || any(isnan(others)) || any(isinf(others))) {
     o_color = kNonFinite;
     return;
   }
