@@ -16,13 +16,6 @@
 namespace sl {
 namespace {
 
-std::vector<float> redChannel(const Texture2D& t) {
-  const std::vector<float> rg = t.readFloats(2);
-  std::vector<float> v(rg.size() / 2);
-  for (size_t i = 0; i < v.size(); ++i) v[i] = rg[2 * i];
-  return v;
-}
-
 test::SceneTruth lampsTruth(test::GlHarness& h, int w, int hgt) { return test::sceneTruth(h, "street-lamps", w, hgt); }
 
 // Each light's visibility against its own reference: a light read through another's maps (or
@@ -39,7 +32,7 @@ TEST(ManyLightsGl, EveryShadowedLightIsMeasuredAgainstItsOwnReference) {
     for (size_t k = 0; k < 3; ++k) {
       const Texture2D* tex = vp.otherLightVisibility(k);
       ASSERT_NE(tex, nullptr) << preset << ", light " << k + 2;
-      const std::vector<float> v = redChannel(*tex);
+      const std::vector<float> v = visibilityChannel(*tex);
       const ErrorMetrics own =
           compareVisibility(v.data(), t.reference.otherLights[k].data(), t.reference.valid.data(), v.size());
       const ErrorMetrics first =
@@ -191,7 +184,7 @@ TEST(ManyLightsGl, SixteenLightsOfEveryTypeStayFinite) {
         continue;
       }
       ASSERT_NE(tex, nullptr) << preset << ", light " << k + 2;
-      for (float v : redChannel(*tex)) {
+      for (float v : visibilityChannel(*tex)) {
         ASSERT_TRUE(std::isfinite(v)) << preset << ", light " << k + 2;
         ASSERT_GE(v, 0.0f) << preset << ", light " << k + 2;
         ASSERT_LE(v, 1.0f) << preset << ", light " << k + 2;

@@ -6,6 +6,61 @@
 
 namespace sl {
 
+namespace {
+
+using nlohmann::json;
+
+json visibilityErrorJson(const ErrorMetrics& m) {
+  return {{"wrong_pixel_pct", m.wrongPixelPct},
+          {"false_shadow_pct", m.falseShadowPct},
+          {"false_light_pct", m.falseLightPct},
+          {"rmse", m.rmse}};
+}
+
+// The other lights of the scene, numbered as in the file's list after the first shadowed one.
+json otherLightsJson(const std::vector<BenchEntry::LightError>& lights) {
+  json out = json::array();
+  for (size_t k = 0; k < lights.size(); ++k) {
+    json one = {{"light", k + 2}, {"shadowed", lights[k].shadowed}};
+    if (lights[k].shadowed) one.update(visibilityErrorJson(lights[k].error));
+    out.push_back(one);
+  }
+  return out;
+}
+
+json entryJson(const BenchEntry& e) {
+  json x;
+  x["technique"] = e.technique;
+  x["label"] = e.label;
+  x["params"] = json::object();
+  for (const auto& [k, v] : e.params) x["params"][k] = v;
+  x["sweep"] = json::object();
+  for (const auto& [k, v] : e.sweepPoint) x["sweep"][k] = v;
+  x["frames"] = e.frames;
+  x["timer"] = e.timer;
+  x["ms_per_frame"] = {{"median", e.msMedian}, {"p95", e.msP95}, {"frames", e.frameMs}};
+  x["ms_ratio"] = {{"median", e.msRatio}, {"p25", e.msRatioP25}, {"p75", e.msRatioP75}};
+  x["passes"] = json::array();
+  for (const auto& p : e.passes) x["passes"].push_back({{"name", p.name}, {"ms", p.ms}});
+  x["error"] = visibilityErrorJson(e.error);
+  x["error"].update({{"image_wrong_pct", e.image.imageWrongPct}, {"valid_pixels", e.error.validPixels}});
+  if (!e.otherLights.empty()) x["error"]["other_lights"] = otherLightsJson(e.otherLights);
+  x["convergence"] = e.convergence;
+  if (e.hasFlicker)
+    x["flicker"] = {{"excess", e.flicker},
+                    {"technique", e.flickerTechnique},
+                    {"reference", e.flickerReference},
+                    {"world", e.worldFlicker}};
+  else
+    x["flicker"] = nullptr;
+  x["nonfinite_pixels"] = e.nonfinite;
+  x["shadow_texels"] = e.shadowTexels;
+  if (!e.status.empty()) x["status"] = e.status;
+  return x;
+}
+
+}  // namespace
+
 nlohmann::json benchToJson(const BenchResult& r) {
   using nlohmann::json;
   json j;
@@ -40,51 +95,7 @@ nlohmann::json benchToJson(const BenchResult& r) {
   if (!r.options.path.empty()) j["reference"]["flicker"] = r.referenceFlicker;
   j["shader_errors"] = r.shaderErrors;
   j["entries"] = json::array();
-  for (const auto& e : r.entries) {
-    json x;
-    x["technique"] = e.technique;
-    x["label"] = e.label;
-    x["params"] = json::object();
-    for (const auto& [k, v] : e.params) x["params"][k] = v;
-    x["sweep"] = json::object();
-    for (const auto& [k, v] : e.sweepPoint) x["sweep"][k] = v;
-    x["frames"] = e.frames;
-    x["timer"] = e.timer;
-    x["ms_per_frame"] = {{"median", e.msMedian}, {"p95", e.msP95}, {"frames", e.frameMs}};
-    x["ms_ratio"] = {{"median", e.msRatio}, {"p25", e.msRatioP25}, {"p75", e.msRatioP75}};
-    x["passes"] = json::array();
-    for (const auto& p : e.passes) x["passes"].push_back({{"name", p.name}, {"ms", p.ms}});
-    x["error"] = {{"wrong_pixel_pct", e.error.wrongPixelPct}, {"false_shadow_pct", e.error.falseShadowPct},
-                  {"false_light_pct", e.error.falseLightPct}, {"rmse", e.error.rmse},
-                  {"image_wrong_pct", e.image.imageWrongPct}, {"valid_pixels", e.error.validPixels}};
-    if (!e.otherLights.empty()) {
-      // The other lights of the scene, numbered as in the file's list after the first shadowed one.
-      json lights = json::array();
-      for (size_t k = 0; k < e.otherLights.size(); ++k) {
-        const auto& l = e.otherLights[k];
-        json one = {{"light", k + 2}, {"shadowed", l.shadowed}};
-        if (l.shadowed)
-          one.update({{"wrong_pixel_pct", l.error.wrongPixelPct},
-                      {"false_shadow_pct", l.error.falseShadowPct},
-                      {"false_light_pct", l.error.falseLightPct},
-                      {"rmse", l.error.rmse}});
-        lights.push_back(one);
-      }
-      x["error"]["other_lights"] = lights;
-    }
-    x["convergence"] = e.convergence;
-    if (e.hasFlicker)
-      x["flicker"] = {{"excess", e.flicker},
-                      {"technique", e.flickerTechnique},
-                      {"reference", e.flickerReference},
-                      {"world", e.worldFlicker}};
-    else
-      x["flicker"] = nullptr;
-    x["nonfinite_pixels"] = e.nonfinite;
-    x["shadow_texels"] = e.shadowTexels;
-    if (!e.status.empty()) x["status"] = e.status;
-    j["entries"].push_back(std::move(x));
-  }
+  for (const auto& e : r.entries) j["entries"].push_back(entryJson(e));
   return j;
 }
 

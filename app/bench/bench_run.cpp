@@ -261,9 +261,7 @@ std::vector<BenchEntry::LightError> otherLightsError(const Viewport& viewport, c
   for (size_t k = 0; k < ref.otherLights.size(); ++k) {
     const Texture2D* tex = viewport.otherLightVisibility(k);
     if (!tex || ref.otherLights[k].empty()) continue;
-    const std::vector<float> rg = tex->readFloats(2);
-    std::vector<float> v(rg.size() / 2);
-    for (size_t i = 0; i < v.size(); ++i) v[i] = rg[2 * i];
+    const std::vector<float> v = visibilityChannel(*tex);
     if (v.size() != ref.otherLights[k].size()) continue;
     out[k] = {true, compareVisibility(v.data(), ref.otherLights[k].data(), ref.valid.data(), v.size())};
   }

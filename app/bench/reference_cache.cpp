@@ -254,13 +254,17 @@ ReferenceImage ReferenceCache::forFrame(Renderer& renderer, const FrameInput& in
   return forLastFrame(renderer, in);
 }
 
-std::vector<float> viewportVisibility(const Viewport& viewport) {
-  const Texture2D* tex = viewport.visibilityTexture();
-  if (!tex) throw std::runtime_error("viewport has not rendered a frame yet");
-  std::vector<float> rg = tex->readFloats(2);
+std::vector<float> visibilityChannel(const Texture2D& visibility) {
+  const std::vector<float> rg = visibility.readFloats(2);
   std::vector<float> v(rg.size() / 2);
   for (size_t i = 0; i < v.size(); ++i) v[i] = rg[2 * i];
   return v;
+}
+
+std::vector<float> viewportVisibility(const Viewport& viewport) {
+  const Texture2D* tex = viewport.visibilityTexture();
+  if (!tex) throw std::runtime_error("viewport has not rendered a frame yet");
+  return visibilityChannel(*tex);
 }
 
 static void checkSameSize(const std::vector<float>& v, const ReferenceImage& r) {

@@ -68,6 +68,8 @@ class ReferenceCache {
   std::unique_ptr<Viewport> gbufferViewport_;
 };
 
+// Visibility channel (R) of an RG visibility target (visibility, confidence), bottom-up rows.
+std::vector<float> visibilityChannel(const Texture2D& visibility);
 // Visibility channel (R) of a viewport's last frame, bottom-up rows.
 std::vector<float> viewportVisibility(const Viewport& viewport);
 // Metrics of a viewport's last frame against a reference of the same frame and size

@@ -94,9 +94,9 @@ bool Renderer::shadeLights(const Framebuffer& target, const Texture2D& visibilit
   return true;
 }
 
-bool Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
+void Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in) {
   const std::vector<Light>& others = scene_->otherLights;
-  if (others.empty()) return false;
+  if (others.empty()) return;
   ensureOtherDirectTarget(vp, in.width, in.height);
   std::vector<std::string> reads = {"gbuffer"};
   std::vector<const Texture2D*> visibility(others.size(), nullptr);
@@ -120,7 +120,6 @@ bool Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::stri
   g.add({"shade lights" + tag, {"gbuffer", vp.output_.visibility, sum}, {"color" + tag}, [this, &vp, primary] {
            shadeLights(vp.colorFbo_, *primary, *vp.otherDirect_);
          }});
-  return true;
 }
 
 // shadeWithVisibility's other lights: their visibilities uploaded, their direct light summed.

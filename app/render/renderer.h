@@ -159,8 +159,8 @@ class Renderer {
   // the technique prelude they were built with.
   std::string addLightPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
   // Scene::otherLights (render/other_lights.cpp): each shadowed one's passes, their direct light
-  // summed, and the colour shaded with every light. False when the scene has one light.
-  bool addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
+  // summed, and the colour shaded with every light. Nothing when the scene has one light.
+  void addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
   void syncOtherLightViewports(Viewport& vp);
   void ensureOtherDirectTarget(Viewport& vp, int w, int h);
   // The colour with Scene::light's `visibility` plus the other lights' summed direct light.

@@ -228,14 +228,7 @@ Light parseLight(const JsonReader& r, const json& j, const std::string& where) {
     l.range = float(r.number(*range, where + ".range"));
     if (!(l.range > 0.0f) || !std::isfinite(l.range)) r.expected(where + ".range", "a finite range > 0", *range);
   }
-  if (const json* s = JsonReader::find(j, "shadow")) {
-    if (!s->is_boolean()) r.expected(where + ".shadow", "true or false", *s);
-    l.shadow = s->get<bool>();
-  }
-  if (const json* s = JsonReader::find(j, "shadow")) {
-    if (!s->is_boolean()) r.expected(where + ".shadow", "true or false", *s);
-    l.shadow = s->get<bool>();
-  }
+  if (const json* s = JsonReader::find(j, "shadow")) l.shadow = r.boolean(*s, where + ".shadow");
   if (const json* c = JsonReader::find(j, "color")) {
     l.color = r.vec3(*c, where + ".color");
     if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) r.expected(where + ".color", "3 non-negative numbers", *c);
