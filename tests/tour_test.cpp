@@ -74,7 +74,11 @@ TEST(TourParse, EnlargeNamesOneOfTheViewportsViews) {
                  "'moments' is not one of this viewport's views", "texels"});
 }
 
-TEST(TourParse, BadJsonNamesTheFile) { expectMessage(parseError("{\"steps\": ["), {"lecture.json", "invalid JSON"}); }
+TEST(TourParse, BadJsonNamesTheFile) {
+  expectMessage(parseError("{\"steps\": ["), {"lecture.json", "invalid JSON"});
+  // A number beyond double's range (the tour fuzzer's input "52e529") is an error, not a crash.
+  expectMessage(parseError("52e529"), {"lecture.json", "invalid JSON", "finite"});
+}
 
 TEST(TourParse, UnknownFieldNamesStepAndKey) {
   const std::string two =

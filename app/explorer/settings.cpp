@@ -88,7 +88,7 @@ ExplorerSettings settingsFromJson(const std::string& text) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a parse error, or a number out of range (1e999)
     throw std::runtime_error(std::string("not JSON: ") + e.what());
   }
   if (!j.is_object()) throw std::runtime_error("not a JSON object");

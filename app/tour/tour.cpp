@@ -263,6 +263,9 @@ Tour parseTour(const std::string& text, const std::string& fileName) {
       root = json::parse(text);
     } catch (const json::parse_error& e) {
       r.fail("", std::string("invalid JSON: ") + e.what());
+    } catch (const json::exception& e) {
+      // nlohmann reports literals like 1e999 this way (out_of_range 406), as scene files meet it.
+      r.fail("", std::string("invalid JSON (numbers must be finite): ") + e.what());
     }
     r.checkKeys(root, "", {"title", "description", "steps"});
     Tour tour;
