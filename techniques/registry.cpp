@@ -93,6 +93,15 @@ const std::vector<ParamDecl>& commonParams() {
        .unit = "lights",
        .help = "a scene of several lights: the first this many shadow-casting lights of its list get maps of their "
                "own, later ones light through casters (a shadow budget; the bench sweeps it for the cost per light)"},
+      {.key = "lights.texel_budget",
+       .type = ParamType::Float,
+       .min = 0,
+       .max = 1024,
+       .defaultValue = 24,
+       .unit = "M texels",
+       .help = "a scene of several shadowed lights: the texels all their maps share (24 M: four cube lamps at "
+               "1024² a face), given by the screen each light's range covers, each map shadowmap.size halved 0 or "
+               "more times (at least 64); 0 = every light at shadowmap.size"},
   };
   return decls;
 }

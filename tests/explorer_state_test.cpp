@@ -1,5 +1,6 @@
 // Explorer state changes that need no window: the light-direction control.
 #include "explorer/explorer_state.h"
+#include "explorer/param_panel.h"
 #include "explorer/plot_window.h"
 #include "explorer/viewport_area.h"
 #include "scene/scene.h"
@@ -85,6 +86,17 @@ TEST(ExplorerState, ALightOfSeveralIsShownOrUnshadowed) {
   EXPECT_FALSE(setOtherLightShadow(state, 1, false)) << "already off";
   EXPECT_FALSE(showLightInViews(state, 1)) << "an unshadowed light has no maps to show";
   EXPECT_FALSE(state.cutPending);
+}
+
+// The panel shows the several-light parameters (lights.shadowed, lights.texel_budget) only in a
+// scene of several lights.
+TEST(ExplorerState, LightParametersShowOnlyInScenesOfSeveralLights) {
+  const Technique t = makeTechnique("cube");
+  const Scene lamps = loadScene("street-lamps", defaultAssetsDir()), one = loadScene("street", defaultAssetsDir());
+  EXPECT_TRUE(paramsWithoutEffect(t.params, &lamps).empty());
+  const std::set<std::string> hidden = paramsWithoutEffect(t.params, &one);
+  EXPECT_EQ(hidden, (std::set<std::string>{"lights.shadowed", "lights.texel_budget"}));
+  EXPECT_FALSE(hidden.count("shadowmap.size"));
 }
 
 }  // namespace

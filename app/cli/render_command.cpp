@@ -76,7 +76,8 @@ void writeRenderStats(const std::string& path, const RenderRun& run, const std::
   // overflow, a hard test in an area-light scene ignoring the radius).
   j["status"] = {{"layout", run.viewport->layout->status()},
                  {"representation", run.viewport->representation->status()},
-                 {"accumulation", run.viewport->accumulation->status()}};
+                 {"accumulation", run.viewport->accumulation->status()},
+                 {"viewport", run.viewport->status()}};  // the parts' joined, and several lights'
   j["shadow_texels"] = run.viewport->shadowTexels();
   j["shader_errors"] = errors;
   j["gl_errors"] = glDebugErrorCount();

@@ -1,5 +1,7 @@
 #include "explorer/param_panel.h"
 
+#include "scene/scene.h"
+
 #include <imgui.h>
 
 #include <cmath>
@@ -92,11 +94,20 @@ void linkToggle(const std::string& key, ParamLinks& links) {
   ImGui::SameLine();
 }
 
-bool drawParamPanel(ParamSet& params, std::string& error, ParamLinks* links) {
+std::set<std::string> paramsWithoutEffect(const ParamSet& params, const Scene* scene) {
+  std::set<std::string> keys;
+  if (scene && !scene->otherLights.empty()) return keys;
+  for (const ParamDecl& decl : params.decls())
+    if (decl.key.rfind("lights.", 0) == 0) keys.insert(decl.key);
+  return keys;
+}
+
+bool drawParamPanel(ParamSet& params, std::string& error, ParamLinks* links, const std::set<std::string>& hidden) {
   bool changed = false;
   // Widgets take a bit over half the width; the rest shows the key, which is also the --set name.
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
   for (const ParamDecl& decl : params.decls()) {
+    if (hidden.count(decl.key)) continue;
     ImGui::PushID(decl.key.c_str());
     if (links && links->linked) linkToggle(decl.key, *links);
     double newValue = 0.0;

@@ -10,6 +10,8 @@
 
 namespace sl {
 
+struct Scene;
+
 // Linking across viewports: a small chain toggle before each widget (when given), and the keys
 // this call changed (the caller copies those that are linked to the other viewports).
 struct ParamLinks {
@@ -22,6 +24,12 @@ struct ParamLinks {
 // slider; Bool: checkbox; Enum: combo), with help, unit and range as tooltip. Every change goes
 // through ParamSet::set; a rejected value leaves the set unchanged and its message in `error`.
 // Returns true when a value changed.
-bool drawParamPanel(ParamSet& params, std::string& error, ParamLinks* links = nullptr);
+// Keys in `hidden` get no widget (their values stay as they are).
+bool drawParamPanel(ParamSet& params, std::string& error, ParamLinks* links = nullptr,
+                    const std::set<std::string>& hidden = {});
+
+// The keys of `params` that mean nothing in `scene`: the "lights." ones (lights.shadowed, the
+// texel budget) in a scene of one light.
+std::set<std::string> paramsWithoutEffect(const ParamSet& params, const Scene* scene);
 
 }  // namespace sl

@@ -264,7 +264,8 @@ void drawViewportPanels(ExplorerState& state) {
       }
       // setViewportPreset may have replaced the technique: read it again.
       ParamLinks links{state.viewportCount > 1 ? &state.linkedParams : nullptr, state.linkAllParams, {}};
-      drawParamPanel(slot.viewport->technique.params, slot.error, &links);
+      drawParamPanel(slot.viewport->technique.params, slot.error, &links,
+                     paramsWithoutEffect(slot.viewport->technique.params, state.scene.get()));
       for (const std::string& key : links.changed)
         if (paramLinked(state, key)) propagateLinkedParam(state, i, key);
       if (!slot.error.empty()) errorText(slot.error);

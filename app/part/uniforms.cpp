@@ -9,7 +9,11 @@ namespace sl {
 // Every parameter reaches the shaders as a float uniform named after its key, plus the map size
 // and the light; modules declare only what they use. The light views are a uniform block.
 void setTechniqueUniforms(const Program& p, const Technique& t, const LightSpace& ls, const Light& light) {
-  for (const auto& d : t.params.decls()) p.set(uniformName(d.key), static_cast<float>(t.params.get(d.key)));
+  setTechniqueUniforms(p, t.params, ls, light);
+}
+
+void setTechniqueUniforms(const Program& p, const ParamSet& params, const LightSpace& ls, const Light& light) {
+  for (const auto& d : params.decls()) p.set(uniformName(d.key), static_cast<float>(params.get(d.key)));
   p.set("u_shadowMapSize", static_cast<float>(ls.size));
   setLightUniforms(p, light);
 }

@@ -135,7 +135,7 @@ void Renderer::addDebugViewPasses(FrameGraph& g, Viewport& vp, const std::string
              if (needsTechnique)
                bindTechnique(p, units, vp);
              else
-               setTechniqueUniforms(p, vp.technique, vp.lightSpace, scene_->light);
+               setTechniqueUniforms(p, vp.frameParams_, vp.lightSpace, scene_->light);
              bindGBuffer(p, units, visTex);
              // The raw depth of each layer (also under compare representations: the view shows it).
              units.bind(p, "u_shadowDepth", vp.representation->depthTexture()->id());

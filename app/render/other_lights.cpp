@@ -6,8 +6,10 @@
 // light's own defines and uniforms), and passes/shade_lights.frag shades Scene::light's
 // visibility plus that sum. Unshadowed lights add their direct term unoccluded.
 #include "part/uniforms.h"
+#include "render/light_budget.h"
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sl {
@@ -37,20 +39,78 @@ void Renderer::syncOtherLightViewports(Viewport& vp) {
   }
 }
 
+// Layers of a light's maps: the last frame's, or before its first frame its layout asked once (then
+// reset, so that nothing of the question stays in its state).
+int Renderer::lightViewCount(Viewport& light, const FrameInput& in) {
+  if (!light.laidOut_) {
+    const LayoutInput li = layoutInput(light, in);
+    const size_t views = light.layout->compute(li).views.size();
+    light.layout->reset();
+    return static_cast<int>(std::max<size_t>(views, 1));
+  }
+  return static_cast<int>(light.lightSpace.views.size());
+}
+
+// The user's viewport and its other lights: an other light whose reach holds no visible point is
+// not drawn (it lights no pixel; its history is forgotten), and with lights.texel_budget every
+// drawn light's map size follows the screen it covers (render/light_budget.h). One shadowed light
+// keeps the technique's size.
+void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
+  vp.mapSize_ = 0;
+  vp.budgetTexels_ = 0.0;
+  std::vector<Viewport*> lights = {&vp};
+  std::vector<const Light*> sources = {&scene_->light};
+  for (size_t k = 0; k < vp.otherLights_.size(); ++k)
+    if (vp.otherLights_[k]) {
+      lights.push_back(vp.otherLights_[k].get());
+      sources.push_back(&scene_->otherLights[k]);
+    }
+  if (lights.size() == 1) return;
+  const ParamSet& params = vp.technique.params;
+  const double budget = params.has("lights.texel_budget") ? params.get("lights.texel_budget") * 1e6 : 0.0;
+  const Bounds bounds = scene_->boundsAt(in.time);
+  std::vector<LightDemand> demand(lights.size());
+  for (size_t k = 0; k < lights.size(); ++k) {
+    // Scene::light is always drawn: its visibility is what the views and the metrics show.
+    const double footprint = lightFootprint(*sources[k], bounds, view_, proj_);
+    demand[k].footprint = k == 0 ? std::max(footprint, 1e-6) : footprint;
+    demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightViewCount(*lights[k], in) : 1;
+  }
+  const int size = params.has("shadowmap.size") ? params.i("shadowmap.size") : 2048;
+  const std::vector<int> sizes = budgetMapSizes(demand, budget, size, 64);
+  vp.sizeRange_[0] = size;
+  vp.sizeRange_[1] = 0;
+  for (size_t k = 0; k < lights.size(); ++k) {
+    Viewport& light = *lights[k];
+    light.drawn_ = sizes[k] > 0;
+    light.mapSize_ = budget > 0.0 ? sizes[k] : 0;
+    if (!light.drawn_) {
+      light.prev_.epoch = 0;  // drawn again later: from a cut
+      light.visibilityHeld_ = false;
+      continue;
+    }
+    vp.sizeRange_[0] = std::min(vp.sizeRange_[0], sizes[k]);
+    vp.sizeRange_[1] = std::max(vp.sizeRange_[1], sizes[k]);
+  }
+  if (budget > 0.0) vp.budgetTexels_ = budgetedTexels(demand, sizes);
+}
+
 namespace {
 
 // The other lights' direct terms, each in its colour, summed into `fbo` (one RGBA16F target):
 // cleared, then one additive fullscreen draw per light. visibility[k]: the k-th light's, null where it is not
-// shadowed (by the scene file, or beyond lights.shadowed): lit through casters.
+// shadowed (by the scene file, or beyond lights.shadowed): lit through casters. outOfReach[k]: no
+// visible point is in the light's range (Renderer::budgetLightMaps), its draw skipped.
 void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Framebuffer& fbo,
-                           const std::vector<const Texture2D*>& visibility, const ProgramSetup& bindGBuffer,
-                           const std::function<void()>& drawFullscreen) {
+                           const std::vector<const Texture2D*>& visibility, const std::vector<bool>& outOfReach,
+                           const ProgramSetup& bindGBuffer, const std::function<void()>& drawFullscreen) {
   fbo.bind();
   const float zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   for (size_t k = 0; k < scene.otherLights.size(); ++k) {
+    if (k < outOfReach.size() && outOfReach[k]) continue;  // lights no visible point
     const Light& light = scene.otherLights[k];
     const Texture2D* vis = k < visibility.size() ? visibility[k] : nullptr;
     const std::string defines = lightDefines(light) + (vis ? "#define SL_SHADOWED_LIGHT\n" : "");
@@ -100,18 +160,21 @@ void Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::stri
   ensureOtherDirectTarget(vp, in.width, in.height);
   std::vector<std::string> reads = {"gbuffer"};
   std::vector<const Texture2D*> visibility(others.size(), nullptr);
+  std::vector<bool> outOfReach(others.size(), false);
   for (size_t k = 0; k < others.size(); ++k) {
     Viewport* sub = vp.otherLights_[k].get();
     if (!sub) continue;
+    outOfReach[k] = !sub->drawn_;
+    if (outOfReach[k]) continue;
     ensureViewportTargets(*sub, in.width, in.height);
     addLightPasses(g, *sub, tag + ".light" + std::to_string(k + 1), in);
     reads.push_back(sub->output_.visibility);
     visibility[k] = sub->visibilityTexture();
   }
   const std::string sum = "lights.direct" + tag;
-  g.add({"lights direct" + tag, reads, {sum}, [this, &vp, visibility] {
+  g.add({"lights direct" + tag, reads, {sum}, [this, &vp, visibility, outOfReach] {
            ProgramSetup gbuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
-           drawOtherLightsDirect(shaders_, *scene_, vp.otherDirectFbo_, visibility, gbuffer,
+           drawOtherLightsDirect(shaders_, *scene_, vp.otherDirectFbo_, visibility, outOfReach, gbuffer,
                                  [this] { drawFullscreen(); });
          }});
   // Writes the colour whole (sky included): the first light's own shade pass is culled unless
@@ -145,7 +208,7 @@ const Texture2D& Renderer::substitutedOtherDirect(int w, int h, const std::vecto
     visibility[k] = tex.get();
   }
   ProgramSetup gbuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
-  drawOtherLightsDirect(shaders_, *scene_, substOtherDirectFbo_, visibility, gbuffer, [this] { drawFullscreen(); });
+  drawOtherLightsDirect(shaders_, *scene_, substOtherDirectFbo_, visibility, {}, gbuffer, [this] { drawFullscreen(); });
   return *substOtherDirect_;
 }
 

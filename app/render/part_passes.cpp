@@ -22,7 +22,7 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
 // Draws one layer of the plan (whole, or tile by tile into its rectangles).
 void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int layer,
                                double time) {
-  const ParamSet& params = vp.technique.params;
+  const ParamSet& params = vp.frameParams_;
   static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
   const GLenum cull = culled[params.i("shadowmap.cull")];
   const auto only = plan.casters == CasterSet::Opaque ? GpuScene::Only::Opaque : GpuScene::Only::All;
@@ -83,7 +83,7 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
   part.light = &lightOf(vp);
   part.time = in.time;
   part.shaders = &shaders_;
-  part.params = &vp.technique.params;
+  part.params = &vp.frameParams_;
   part.lightSpace = &vp.lightSpace;
   part.view = view_;
   part.proj = proj_;
@@ -133,7 +133,7 @@ AccumulationContext Renderer::accumulationContext(FrameGraph& g, Viewport& vp, c
   ctx.gNormal = gNormal_.get();
   ctx.gMotion = gMotion_.get();
   ctx.shaders = &shaders_;
-  ctx.params = &vp.technique.params;
+  ctx.params = &vp.frameParams_;
   ctx.view = view_;
   ctx.proj = proj_;
   ctx.prevView = vp.prev_.view;

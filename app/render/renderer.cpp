@@ -4,6 +4,7 @@
 #include "render/gpu_scene.h"
 #include "scene/scene_effects.h"
 
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <atomic>
@@ -29,6 +30,7 @@ void Viewport::setTechnique(Technique t) {
   // The last frame's visibility may be a texture of the old accumulation's state.
   output_ = {};
   visibilityHeld_ = false;
+  laidOut_ = false;
 }
 
 const Texture2D* Viewport::viewTexture(const std::string& name) const {
@@ -73,10 +75,20 @@ std::string Viewport::status() const {
     if (!s.empty()) out += (out.empty() ? "" : "; ") + s;
   }
   if (!otherLights_.empty()) {
-    size_t shadowed = 1;
-    for (const auto& other : otherLights_) shadowed += other ? 1 : 0;
+    size_t shadowed = 1, unreached = 0;
+    for (const auto& other : otherLights_) {
+      shadowed += other ? 1 : 0;
+      unreached += other && !other->drawn_ ? 1 : 0;
+    }
     out += (out.empty() ? "" : "; ") + std::to_string(otherLights_.size() + 1) + " lights, " +
            std::to_string(shadowed) + " shadowed (views show the first)";
+    if (unreached) out += ", " + std::to_string(unreached) + " reaching nothing in view (not drawn)";
+    if (budgetTexels_ > 0.0) {
+      char text[96];
+      std::snprintf(text, sizeof text, "; maps %d to %d per side, %.1f M texels", sizeRange_[0], sizeRange_[1],
+                    budgetTexels_ * 1e-6);
+      out += text;
+    }
   }
   return out;
 }
@@ -94,7 +106,7 @@ void Renderer::bindGBuffer(const Program& p, TextureUnits& units, const Texture2
 }
 
 void Renderer::bindTechnique(const Program& p, TextureUnits& units, const Viewport& vp) const {
-  setTechniqueUniforms(p, vp.technique, vp.lightSpace, lightOf(vp));
+  setTechniqueUniforms(p, vp.frameParams_, vp.lightSpace, lightOf(vp));
   vp.lightViews_->bind();
   vp.layout->bind(p, units);
   vp.representation->bind(p, units);
@@ -328,9 +340,10 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   std::vector<Viewport*> lights;
   for (Viewport* vp : viewports) {
     syncOtherLightViewports(*vp);
+    budgetLightMaps(*vp, in);
     lights.push_back(vp);
     for (const auto& other : vp->otherLights_)
-      if (other) lights.push_back(other.get());
+      if (other && other->drawn_) lights.push_back(other.get());
   }
   for (Viewport* vp : lights) {
     if (vp->prev_.epoch == epoch_ && !in.cut) continue;
@@ -360,8 +373,10 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
 }
 
 // The layout's light views for this frame, uploaded, and the representation's targets for them.
-void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMoved) {
-  Technique& t = vp.technique;
+// What a layout fits this frame's views to (the jitter is the caller's); sets frameParams_.
+LayoutInput Renderer::layoutInput(Viewport& vp, const FrameInput& in) {
+  vp.frameParams_ = vp.technique.params;
+  if (vp.mapSize_ > 0) vp.frameParams_.set("shadowmap.size", vp.mapSize_);
   LayoutInput li;
   li.scene = scene_;
   li.light = &lightOf(vp);
@@ -369,15 +384,22 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
   li.time = in.time;
   li.cameraView = in.fitCamera ? cameraView(*in.fitCamera) : view_;
   li.cameraProj = in.fitCamera ? cameraProjection(*in.fitCamera, static_cast<float>(in.width) / in.height) : proj_;
-  li.params = &t.params;
-  li.jitter = vp.accumulation->jitter(t.params, cameraMoved);
+  li.params = &vp.frameParams_;
+  return li;
+}
+
+void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMoved) {
+  Technique& t = vp.technique;
+  LayoutInput li = layoutInput(vp, in);
+  li.jitter = vp.accumulation->jitter(vp.frameParams_, cameraMoved);
   vp.lightSpace = vp.layout->compute(li);
+  vp.laidOut_ = true;
   if (vp.lightSpace.views.empty() || vp.lightSpace.views.size() > static_cast<size_t>(kMaxLightViews))
     throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
   vp.lightViews_->upload(vp.lightSpace);
   vp.representation->setScene(*scene_);
-  vp.representation->configure(t.params);
+  vp.representation->configure(vp.frameParams_);
   vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
 }
 

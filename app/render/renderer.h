@@ -85,6 +85,14 @@ class Viewport {
   int frameIndex_ = 0;            // frames this viewport has rendered
   bool visibilityHeld_ = false;   // its visibility texture holds a finished frame of this size
   const Light* light_ = nullptr;  // the light its parts shadow this frame (a scene light)
+  // This frame's values for the parts: technique.params with the map size the texel budget gave
+  // this light (render/light_budget.h; mapSize_ 0 = the technique's own shadowmap.size).
+  ParamSet frameParams_;
+  int mapSize_ = 0;
+  bool drawn_ = true;          // an other light: false when no visible point is in its reach
+  bool laidOut_ = false;       // lightSpace is its technique's layout's (not a default, nor a former technique's)
+  double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
+  int sizeRange_[2] = {0, 0};  // and their smallest and largest map size
   // Scene::otherLights' shadowed entries: the same technique with its own part states and
   // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.
   std::vector<std::unique_ptr<Viewport>> otherLights_;
@@ -162,6 +170,10 @@ class Renderer {
   // summed, and the colour shaded with every light. Nothing when the scene has one light.
   void addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::string& tag, const FrameInput& in);
   void syncOtherLightViewports(Viewport& vp);
+  // Which other lights this frame draws and every light's map size (render/light_budget.h).
+  void budgetLightMaps(Viewport& vp, const FrameInput& in);
+  int lightViewCount(Viewport& light, const FrameInput& in);
+  LayoutInput layoutInput(Viewport& vp, const FrameInput& in);
   void ensureOtherDirectTarget(Viewport& vp, int w, int h);
   // The colour with Scene::light's `visibility` plus the other lights' summed direct light.
   bool shadeLights(const Framebuffer& target, const Texture2D& visibility, const Texture2D& otherDirect);

@@ -54,7 +54,7 @@ AccumulationOutput Renderer::addDeferredShadePass(FrameGraph& g, Viewport& vp, c
            vp.colorFbo_.bind();
            p.use();
            TextureUnits units;
-           setTechniqueUniforms(p, vp.technique, vp.lightSpace, lightOf(vp));
+           setTechniqueUniforms(p, vp.frameParams_, vp.lightSpace, lightOf(vp));
            bindGBuffer(p, units, visTex);
            drawFullscreen();
          }});

@@ -1,0 +1,105 @@
+#include "render/light_budget.h"
+
+#include "part/light_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+
+namespace {
+
+// Area of the convex hull of 2D points (Andrew's monotone chain).
+double hullArea(std::vector<glm::dvec2> p) {
+  if (p.size() < 3) return 0.0;
+  std::sort(p.begin(), p.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  std::vector<glm::dvec2> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  double area = 0.0;
+  for (size_t i = 0; i + 1 < k; ++i) area += hull[i].x * hull[i + 1].y - hull[i + 1].x * hull[i].y;
+  return std::abs(area) * 0.5;
+}
+
+Bounds reachOf(const Light& light, const Bounds& scene) {
+  if (light.type != Light::Type::Point || !(light.range > 0.0f)) return scene;
+  Bounds b;
+  b.min = glm::max(scene.min, light.position - glm::vec3(light.range));
+  b.max = glm::min(scene.max, light.position + glm::vec3(light.range));
+  return b;
+}
+
+}  // namespace
+
+double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj) {
+  const Bounds reach = reachOf(light, sceneBounds);
+  if (reach.empty()) return 0.0;
+  const std::vector<glm::vec3> body = clipFrustumToBox(view, proj, reach);
+  if (body.empty()) return 0.0;
+  std::vector<glm::dvec2> ndc;
+  const glm::mat4 viewProj = proj * view;
+  for (const glm::vec3& p : body) {
+    const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+    if (!(c.w > 0.0f)) continue;  // on the camera's plane by rounding: the body's other corners bound it
+    ndc.push_back(glm::clamp(glm::dvec2(c.x / c.w, c.y / c.w), glm::dvec2(-1.0), glm::dvec2(1.0)));
+  }
+  // A body flat on screen (seen edge-on) still holds visible points: never 0 for a non-empty one.
+  return std::clamp(hullArea(ndc) / 4.0, 1e-6, 1.0);
+}
+
+double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes) {
+  double sum = 0.0;
+  for (size_t k = 0; k < lights.size() && k < sizes.size(); ++k)
+    sum += double(std::max(lights[k].views, 1)) * double(sizes[k]) * double(sizes[k]);
+  return sum;
+}
+
+std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double budgetTexels, int maxSize, int minSize) {
+  std::vector<int> sizes(lights.size(), 0);
+  std::vector<int> step(lights.size(), 0);  // size = maxSize >> step
+  int smallest = 0;
+  while ((maxSize >> (smallest + 1)) >= minSize) ++smallest;
+  for (size_t k = 0; k < lights.size(); ++k) {
+    if (!(lights[k].footprint > 0.0)) continue;
+    step[k] = budgetTexels > 0.0 ? smallest : 0;
+    sizes[k] = maxSize >> step[k];
+  }
+  if (!(budgetTexels > 0.0)) return sizes;
+  double used = budgetedTexels(lights, sizes);
+  for (;;) {
+    // The drawn light with the most footprint per texel whose doubling still fits.
+    int best = -1;
+    double bestNeed = 0.0;
+    for (size_t k = 0; k < lights.size(); ++k) {
+      if (!sizes[k] || step[k] == 0) continue;
+      const double views = std::max(lights[k].views, 1);
+      const double texels = views * double(sizes[k]) * sizes[k];
+      const double larger = maxSize >> (step[k] - 1);
+      if (used - texels + views * larger * larger > budgetTexels) continue;
+      const double need = lights[k].footprint / texels;
+      if (need > bestNeed) {
+        bestNeed = need;
+        best = static_cast<int>(k);
+      }
+    }
+    if (best < 0) break;
+    const double views = std::max(lights[size_t(best)].views, 1);
+    used -= views * double(sizes[size_t(best)]) * sizes[size_t(best)];
+    sizes[size_t(best)] = maxSize >> --step[size_t(best)];
+    used += views * double(sizes[size_t(best)]) * sizes[size_t(best)];
+  }
+  return sizes;
+}
+
+}  // namespace sl

@@ -1,0 +1,38 @@
+// Which lights of a scene of several a frame makes maps for, and how large (beyond the papers:
+// the survey's "one texel per pixel" applied across lights). A light whose reach (its range, the
+// scene's bounds) shows no visible point lights no pixel of this frame: it is not drawn, exactly.
+// The others share a texel budget (lights.texel_budget) in proportion to the screen they cover,
+// each light's maps on a ladder of halvings of shadowmap.size so that a size changes seldom.
+// Pure geometry and arithmetic (no GL): tests/light_budget_test.cpp.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace sl {
+
+// The fraction of the screen (0..1) covered by the projection of the light's reach (the box
+// around a point light's range, else the scene's bounds) clipped by the camera frustum and the
+// scene's bounds: its convex hull, so an upper bound of the pixels the light can reach. 0 when
+// that body is empty (no visible point is in its range).
+double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj);
+
+struct LightDemand {
+  double footprint = 1.0;  // lightFootprint; 0 = not drawn
+  int views = 1;           // layers of the light's maps (a cube: 6)
+};
+
+// Texels per side of each light's maps: 0 for a light of no footprint, else maxSize >> j. With
+// budgetTexels <= 0 every drawn light gets maxSize. Otherwise every drawn light starts at the
+// smallest step of at least minSize, and the light with the most footprint per texel is doubled
+// while the sum of views · size² stays within the budget: a light of more footprint never gets
+// fewer texels per view than one of less, and the sum exceeds the budget only when the smallest
+// steps alone do.
+std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double budgetTexels, int maxSize, int minSize);
+
+// The sum of views · size² of those sizes.
+double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes);
+
+}  // namespace sl

@@ -1,0 +1,108 @@
+// The budget of maps across several lights (app/render/light_budget.h): footprints against areas
+// computed by hand, and the allocation's bounds.
+#include "render/light_budget.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace sl {
+namespace {
+
+// A camera at the origin looking down -z, 90° square: at distance d the screen spans ±d.
+struct Camera90 {
+  glm::mat4 view{1.0f};
+  glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
+};
+
+Bounds box(glm::vec3 lo, glm::vec3 hi) {
+  Bounds b;
+  b.add(lo);
+  b.add(hi);
+  return b;
+}
+
+Light pointLight(glm::vec3 position, float range) {
+  Light l;
+  l.type = Light::Type::Point;
+  l.position = position;
+  l.range = range;
+  return l;
+}
+
+TEST(LightBudget, FootprintIsTheReachsProjectedArea) {
+  const Camera90 cam;
+  // The scene [-1,1]² × [-3,-2]: its near face at distance 2 spans ±0.5 of the screen, a quarter.
+  const Bounds scene = box({-1, -1, -3}, {1, 1, -2});
+  Light sun;
+  EXPECT_NEAR(lightFootprint(sun, scene, cam.view, cam.proj), 0.25, 1e-5);
+  // A point light without a range reaches the whole scene.
+  EXPECT_NEAR(lightFootprint(pointLight({0, 0, -2.5f}, 0.0f), scene, cam.view, cam.proj), 0.25, 1e-5);
+  // Range 0.25 at depth 2.5: its box's near face at 2.25 spans ±0.25 / 2.25.
+  const double side = 0.25 / 2.25;
+  EXPECT_NEAR(lightFootprint(pointLight({0, 0, -2.5f}, 0.25f), scene, cam.view, cam.proj), side * side, 1e-5);
+  // Cut by the scene: range 2 reaches past it on every side, so the scene's quarter again.
+  EXPECT_NEAR(lightFootprint(pointLight({0, 0, -2.5f}, 2.0f), scene, cam.view, cam.proj), 0.25, 1e-5);
+}
+
+TEST(LightBudget, ALightReachingNothingInViewHasNoFootprint) {
+  const Camera90 cam;
+  const Bounds scene = box({-10, -1, -10}, {10, 1, 10});
+  // Beside the frustum (at depth 2.5 it spans x within ±2.5), behind the camera, outside the scene.
+  EXPECT_EQ(lightFootprint(pointLight({8, 0, -2.5f}, 0.5f), scene, cam.view, cam.proj), 0.0);
+  EXPECT_EQ(lightFootprint(pointLight({0, 0, 5}, 1.0f), scene, cam.view, cam.proj), 0.0);
+  EXPECT_EQ(lightFootprint(pointLight({0, 5, -3}, 1.0f), scene, cam.view, cam.proj), 0.0);
+  // Reaching into the frustum by a little: a small footprint, never 0.
+  const double edge = lightFootprint(pointLight({3.2f, 0, -2.5f}, 0.8f), scene, cam.view, cam.proj);
+  EXPECT_GT(edge, 0.0);
+  EXPECT_LT(edge, 0.05);
+}
+
+TEST(LightBudget, NoBudgetGivesEveryDrawnLightTheFullSize) {
+  const std::vector<int> sizes = budgetMapSizes({{0.5, 6}, {0.0, 6}, {1.0, 1}}, 0.0, 1024, 64);
+  EXPECT_EQ(sizes, (std::vector<int>{1024, 0, 1024}));
+}
+
+TEST(LightBudget, ABudgetSplitByHandStaysOnTheLadder) {
+  // From 64² each, doubled by footprint per texel: 3:1 footprints give 512 and 512 within
+  // 1024² + 256² texels (1024 and 256 would be the 3:1 nearest to proportional, but the greedy
+  // doubling stops when the larger light's next step does not fit).
+  EXPECT_EQ(budgetMapSizes({{0.75, 1}, {0.25, 1}}, 1024.0 * 1024 + 256 * 256, 1024, 64), (std::vector<int>{512, 512}));
+  // Four equal cubes within four times 6 × 512²: each 512.
+  EXPECT_EQ(budgetMapSizes({{0.3, 6}, {0.3, 6}, {0.3, 6}, {0.3, 6}}, 4.0 * 6 * 512 * 512, 1024, 64),
+            (std::vector<int>{512, 512, 512, 512}));
+  // The ladder of a size that is not a power of two: 1254 halved.
+  EXPECT_EQ(budgetMapSizes({{1.0, 4}}, 4.0 * 313 * 313, 1254, 64), (std::vector<int>{313}));
+  // A budget below the smallest steps: every drawn light at its smallest (78 = 1254 >> 4).
+  EXPECT_EQ(budgetMapSizes({{1.0, 4}, {0.2, 4}}, 10.0, 1254, 64), (std::vector<int>{78, 78}));
+}
+
+TEST(LightBudget, RandomDemandsStayWithinTheBudgetAndFollowTheFootprint) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int views = trial % 2 ? 6 : 4;
+    std::vector<LightDemand> lights(1 + trial % 16);
+    for (LightDemand& l : lights) l = {unit(rng) < 0.1 ? 0.0 : unit(rng), views};
+    const double budget = 1e6 * (1 + trial % 40);
+    const std::vector<int> sizes = budgetMapSizes(lights, budget, 1024, 64);
+    ASSERT_EQ(sizes.size(), lights.size());
+    double smallest = 0.0;
+    for (const LightDemand& l : lights) smallest += l.footprint > 0.0 ? double(l.views) * 64 * 64 : 0.0;
+    EXPECT_LE(budgetedTexels(lights, sizes), std::max(budget, smallest)) << "trial " << trial;
+    for (size_t a = 0; a < lights.size(); ++a) {
+      if (lights[a].footprint == 0.0) {
+        EXPECT_EQ(sizes[a], 0);
+        continue;
+      }
+      EXPECT_TRUE(sizes[a] >= 64 && sizes[a] <= 1024 && (1024 % sizes[a]) == 0) << sizes[a];
+      for (size_t b = 0; b < lights.size(); ++b)
+        if (lights[a].footprint > lights[b].footprint && lights[b].footprint > 0.0)
+          EXPECT_GE(sizes[a], sizes[b]) << "trial " << trial << ": more footprint, fewer texels";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sl
