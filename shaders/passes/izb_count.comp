@@ -3,6 +3,11 @@
 // the light and its grid cell are stored, and the cell's count is incremented. Samples the
 // reference calls unlit without tracing (facing away, terminator, outside the cone) get their
 // shadow bit here and are not listed.
+// Several light views (a point light's faces, cascades) run this pass once per view, each after
+// the last view's triangles: a sample is listed in every view whose window holds it (a ray to
+// the light stays inside a view that holds its start, so that view's casters are all its
+// occluders) and its fallback bit, set for every pixel before the first view, is cleared once a
+// view lists it or it is decided here; a sample in no window keeps the shadow-map test.
 #extension GL_ARB_gpu_shader_fp64 : enable
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "passes/izb_common.glsl"
@@ -15,10 +20,19 @@ uniform float u_spotCosHalfAngle;
 uniform int u_izbSpot;
 uniform int u_izbInstances;
 uniform int u_izbTriangles;
+uniform int u_izbViews;  // light views listed one after another; 1: a point off the grid is listed at its border
 
 double maxAbs(dvec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
 
-void setBit(uint pixel) { atomicOr(shadowBits[pixel >> 5], 1u << (pixel & 31u)); }
+// Under several views: this pixel needs no shadow-map test (decided here, or listed).
+void decided(uint pixel) {
+  if (u_izbViews > 1) atomicAnd(fallbackBits[pixel >> 5], ~(1u << (pixel & 31u)));
+}
+
+void setBit(uint pixel) {
+  atomicOr(shadowBits[pixel >> 5], 1u << (pixel & 31u));
+  decided(pixel);
+}
 
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -26,7 +40,10 @@ void main() {
   uint pixel = uint(px.y * int(u_izbSize.x) + px.x);
   pixelCell[pixel] = kNoCell;
   vec4 P = texelFetch(u_gPosition, px, 0);
-  if (!(P.w > 0.5)) return;
+  if (!(P.w > 0.5)) {
+    decided(pixel);
+    return;
+  }
   if (any(isnan(P.xyz)) || any(isinf(P.xyz))) { setBit(pixel); return; }
   vec3 n = texelFetch(u_gNormal, px, 0).xyz;
   uvec4 s = texelFetch(u_gSurface, px, 0);
@@ -69,11 +86,19 @@ void main() {
   if (hasPlane && dot(plane, dvec3(toLight)) <= 0.0) { setBit(pixel); return; }  // terminator
   double tolerance = max(scale / 1048576.0, 1e-9);
   double tnear = hasPlane ? tolerance / dot(plane, dvec3(toLight)) : tolerance;
-  if (!(float(tnear) < tfar)) return;  // nothing can lie between: lit
+  if (!(float(tnear) < tfar)) {  // nothing can lie between: lit
+    decided(pixel);
+    return;
+  }
   samples[pixel] = Sample(vec4(vec3(origin), float(tnear)), vec4(toLight, tfar), own, 0u, 0u, 0u);
   vec2 g;
-  // Behind a perspective light: the reference would trace it, the grid cannot list it.
-  if (!izbGridPos(P.xyz, g)) {
+  bool onGrid = izbGridPos(P.xyz, g);
+  if (u_izbViews > 1) {
+    // Outside this view's window: another view lists it, or none and it keeps its fallback bit.
+    if (!onGrid || any(lessThan(g, vec2(0.0))) || any(greaterThanEqual(g, vec2(float(u_izbGrid))))) return;
+    decided(pixel);
+  } else if (!onGrid) {
+    // Behind a perspective light: the reference would trace it, the grid cannot list it.
     atomicOr(fallbackBits[pixel >> 5], 1u << (pixel & 31u));
     return;
   }

@@ -1,6 +1,7 @@
 // The irregular z-buffer against the ray-traced reference (llvmpipe, 160x90): exact up to a
 // handful of tie pixels on the builtin scenes, Sponza's alpha-masked casters and a masked quad;
-// the overflow path on purpose; composition with pixel-correct; layouts it cannot use.
+// the overflow path on purpose; composition with pixel-correct; layouts of several views, and
+// those it cannot use.
 #include "irregular/izb_state.h"
 #include "metrics/metrics.h"
 #include "scene/shapes.h"
@@ -11,6 +12,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <tuple>
 
 namespace sl {
 namespace {
@@ -209,23 +211,53 @@ TEST(Irregular, ComposesWithPixelCorrectAccumulation) {
   EXPECT_GT(r.shadowed, 50);
 }
 
-// A layout with several views has no single grid: a clear status, the map test everywhere.
-TEST(Irregular, CascadesGiveAStatusAndTheMapTest) {
-  test::GlHarness h;
-  const Scene scene = loadScene("basic", defaultAssetsDir());
-  Technique t = makeTechnique("alias-free");
-  t.layout = findLayout("cascaded");
-  std::vector<ParamDecl> decls = commonParams();
-  for (auto&& part : {t.layout->params(), t.representation->params(), t.accumulation->params()})
-    decls.insert(decls.end(), part.begin(), part.end());
-  t.params = ParamSet(std::move(decls));
-  Viewport vp(t);
-  const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
-  EXPECT_NE(vp.representation->status().find("one orthographic light view"), std::string::npos)
+// Several views are listed one after another, a sample in every view whose window holds it: the
+// cascades under the sun and a point light's cube and tetrahedron faces are exact as one view is.
+Result severalViews(test::GlHarness& h, const std::string& sceneId, const std::string& layout) {
+  const Scene scene = loadScene(sceneId, defaultAssetsDir());
+  Viewport vp(makeTechnique("alias-free", {"technique.layout=" + layout, "shadowmap.size=512"}));
+  const Result r = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front()));
+  std::printf("%s alias-free over %s: %lld wrong of %lld covered (%lld shadowed); %s\n", sceneId.c_str(),
+              layout.c_str(), r.wrong, r.covered, r.shadowed, vp.representation->status().c_str());
+  EXPECT_NE(vp.representation->status().find("listings of samples in"), std::string::npos)
       << vp.representation->status();
-  const Result r = compareWithReference(scene, f);
-  EXPECT_EQ(r.nonfinite, 0);
-  EXPECT_LT(r.error.wrongPixelPct, 5.0);  // a cascaded map's test, not garbage
+  EXPECT_EQ(r.nonfinite, 0) << layout;
+  EXPECT_GT(r.shadowed, 50) << layout;
+  return r;
+}
+
+TEST(Irregular, CascadesAreListedViewByViewAndMatchTheReference) {
+  test::GlHarness h;
+  EXPECT_LE(severalViews(h, "basic", "cascaded").wrong, 3);
+}
+
+TEST(Irregular, CubeFacesAreListedViewByViewAndMatchTheReference) {
+  test::GlHarness h;
+  EXPECT_LE(severalViews(h, "street", "cube").wrong, 3);
+}
+
+TEST(Irregular, TetrahedronFacesAreListedViewByViewAndMatchTheReference) {
+  test::GlHarness h;
+  EXPECT_LE(severalViews(h, "street", "tetrahedron").wrong, 3);
+}
+
+// Views no matrix places points in get a clear status and the map test everywhere: a warped view
+// under a sun (LiSPSM) and the paraboloids.
+TEST(Irregular, WarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {
+  test::GlHarness h;
+  for (const auto& [sceneId, layout, word] :
+       {std::tuple<const char*, const char*, const char*>{"basic", "lispsm", "warped"},
+        {"street", "dual-paraboloid", "paraboloid"}}) {
+    const Scene scene = loadScene(sceneId, defaultAssetsDir());
+    Viewport vp(makeTechnique("alias-free", {std::string("technique.layout=") + layout}));
+    const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
+    const std::string status = vp.representation->status();
+    EXPECT_NE(status.find(std::string(word) + " view(s): every pixel uses the shadow-map test"), std::string::npos)
+        << layout << ": " << status;
+    const Result r = compareWithReference(scene, f);
+    EXPECT_EQ(r.nonfinite, 0) << layout;
+    EXPECT_LT(r.error.wrongPixelPct, 5.0) << layout << ": the map's test, not garbage";
+  }
 }
 
 TEST(Irregular, ListViewShowsTheGrid) {

@@ -72,26 +72,46 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
   }
 }
 
+namespace {
+
+// Why the lists cannot be built over these views ("" when they can). Each view needs a grid its
+// matrix alone places points in: orthographic, or perspective from a light with a position (a
+// spot, a point light's faces). A warped view under a sun (PSM, LiSPSM, TSM) would bin correctly
+// too, but its matrix can put receivers behind its centre of projection; the log warp and the
+// paraboloid are not matrices.
+std::string unlistableViews(const LightSpace& ls, bool positionalLight) {
+  for (const LightView& v : ls.views)
+    if (v.projection != LightView::Projection::Matrix || (v.perspective && !positionalLight))
+      return "irregular z-buffer needs light views a matrix places points in (orthographic, or perspective from "
+             "a spot or point light); this layout gives " +
+             std::to_string(ls.views.size()) +
+             (v.projection == LightView::Projection::Paraboloid ? " paraboloid"
+              : v.perspective                                   ? " warped"
+                                                                : " log-warped") +
+             " view(s): every pixel uses the shadow-map test";
+  return "";
+}
+
+}  // namespace
+
 std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
-  error_.clear();
   const LightSpace& ls = *ctx.lightSpace;
-  // The lists need one grid: one light view. A warped single view (PSM, LiSPSM, TSM under a sun)
-  // would bin correctly too, but its matrix can put receivers behind its centre of projection.
-  const bool spot = ctx.shadowedLight().positional();  // a point light comes as a spot (layoutLight)
-  if (ls.views.size() != 1 || (ls.primary().perspective && !spot)) {
-    error_ =
-        "irregular z-buffer needs one orthographic light view (uniform or focused layout), or a spot light's; "
-        "this layout gives " +
-        std::to_string(ls.views.size()) + (ls.primary().perspective ? " warped" : "") +
-        " view(s): every pixel uses the shadow-map test";
-  }
+  error_ = unlistableViews(ls, ctx.shadowedLight().positional());  // a point light's one view is a spot's
   ensureBuffers(ctx.width, ctx.height, gridParam_);
+  views_ = static_cast<int>(ls.views.size());
   gridViewProj_ = ls.primary().viewProj;
   scene_.update(*ctx.scene, ctx.time);
   const std::string lists = "izb.lists" + ctx.viewportTag, out = "izb" + ctx.viewportTag;
   graph.add({lists, {"gbuffer"}, {lists}, [this, ctx] { runLists(ctx); }});
   // The shadow map stays an input: overflowed samples fall back to it.
-  graph.add({"izb.triangles" + ctx.viewportTag, {lists, ctx.shadowMap}, {out}, [this, ctx] { runTriangles(ctx); }});
+  graph.add({"izb.triangles" + ctx.viewportTag, {lists, ctx.shadowMap}, {out}, [this, ctx] {
+               runTriangles(ctx);
+               // Several views: each view's lists, then its triangles, in turn (one set of buffers).
+               for (int view = 1; view < views_ && error_.empty(); ++view) {
+                 listView(ctx, view);
+                 runTriangles(ctx);
+               }
+             }});
   auto it = ctx.viewTargets.find("izb-lists");
   if (it != ctx.viewTargets.end() && it->second) {
     const std::string view = "view.izb-lists" + ctx.viewportTag;
@@ -126,17 +146,31 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
     bindStorage(block, buffer);
 }
 
-// Count, prefix sum and scatter: the samples of each light-space cell, contiguous in one buffer.
+// The frame's bits cleared, then the first view's lists. Under several views every fallback bit
+// starts set: the count pass clears it for each pixel a view lists or decides
+// (shaders/passes/izb_count.comp); without lists (error_) every sample keeps it.
 void IzbState::runLists(const PartContext& ctx) {
   for (GLuint b : {counts_, bits_, fallback_, counters_}) clearBuffer(b);
-  const long long cells = static_cast<long long>(grid_) * grid_;
-  if (!error_.empty()) {
-    // No lists: every sample takes the shadow-map test (all fallback bits set), no offsets.
+  if (!error_.empty() || views_ > 1) {
     const uint32_t ones = ~0u;
     glClearNamedBufferData(fallback_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-    clearBuffer(offsets_);
+  }
+  if (!error_.empty()) {
+    clearBuffer(offsets_);  // no lists
     return;
   }
+  listView(ctx, 0);
+}
+
+// Count, prefix sum and scatter: the samples of each light-space cell of `view`, contiguous in
+// one buffer.
+void IzbState::listView(const PartContext& ctx, int view) {
+  gridViewProj_ = ctx.lightSpace->views[size_t(view)].viewProj;
+  const long long cells = static_cast<long long>(grid_) * grid_;
+  clearBuffer(counts_);
+  // The large-triangle queue is per view: its rows are cells of this view's grid.
+  const uint32_t zero = 0;
+  glClearNamedBufferSubData(counters_, GL_R32UI, 8, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   ProgramSpec count{"izb count", {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}}, ""};
   Program& pc = ctx.shaders->get(count);
   if (!pc.valid()) return;
@@ -146,6 +180,7 @@ void IzbState::runLists(const PartContext& ctx) {
   setLightUniforms(pc, ctx.shadowedLight());
   setCommon(pc, ctx);
   pc.set("u_izbSpot", ctx.shadowedLight().positional() ? 1 : 0);
+  pc.set("u_izbViews", views_);
   pc.set("u_izbInstances", static_cast<int>(ctx.scene->instances.size()));
   pc.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
   glDispatchCompute(groups(ctx.width, 8), groups(ctx.height, 8), 1);
@@ -229,8 +264,11 @@ std::string IzbState::status() const {
   if (!error_.empty()) return error_;
   if (!counters_) return "";
   const uint32_t overflow = overflowCount();
-  std::string s = std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells, " +
-                  std::to_string(counter(2)) + " rows of large triangles queued";
+  std::string s = views_ > 1 ? std::to_string(listedCount()) + " listings of samples in " + std::to_string(views_) +
+                                   " views of " + std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) +
+                                   " rows of large triangles queued in the last"
+                             : std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells, " +
+                                   std::to_string(counter(2)) + " rows of large triangles queued";
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +
          " samples use the shadow-map test (raise izb.capacity)";

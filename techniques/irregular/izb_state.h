@@ -43,6 +43,7 @@ class IzbState : public DepthMapState {
  private:
   void ensureBuffers(int width, int height, int grid);
   void runLists(const PartContext& ctx);
+  void listView(const PartContext& ctx, int view);
   void runTriangles(const PartContext& ctx);
   void drawListView(const PartContext& ctx, Texture2D* target);
   void setCommon(const Program& p, const PartContext& ctx) const;
@@ -55,10 +56,11 @@ class IzbState : public DepthMapState {
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
          counters_ = 0, queue_ = 0, dispatch_ = 0;
   int width_ = 0, height_ = 0, grid_ = 0;
+  int views_ = 1;  // light views of this frame, listed and tested one after another
   long long capacity_ = 0;
   int gridParam_ = 512;
   double capacityPct_ = 100.0;
-  std::string error_;  // why the lists are not built (layout with several views), shown as status
+  std::string error_;  // why the lists are not built (views no matrix places points in), shown as status
   glm::mat4 gridViewProj_{1.0f};
 };
 
