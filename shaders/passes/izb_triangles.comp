@@ -77,7 +77,12 @@ bool setup(uint id, out Caster c) {
   // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
   if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
   vec2 g[3];
-  // Behind a perspective light's plane the projection wraps around: walk the whole grid.
+  // Wholly behind a perspective light's plane (w <= 0; an orthographic view's w is 1): no point of
+  // it lies between a listed sample (w > 0) and the light (w = 0), where w falls linearly to 0.
+  vec3 w = vec3((u_izbViewProj * vec4(c.t.a.xyz, 1.0)).w, (u_izbViewProj * vec4(c.t.b.xyz, 1.0)).w,
+                (u_izbViewProj * vec4(c.t.c.xyz, 1.0)).w);
+  if (all(lessThanEqual(w, vec3(0.0)))) return false;
+  // Partly behind it the projection wraps around: walk the whole grid.
   if (!(izbGridPos(c.t.a.xyz, g[0]) && izbGridPos(c.t.b.xyz, g[1]) && izbGridPos(c.t.c.xyz, g[2]))) return true;
   c.lo = izbCell(min(g[0], min(g[1], g[2])) - 0.01);
   c.hi = izbCell(max(g[0], max(g[1], g[2])) + 0.01);
