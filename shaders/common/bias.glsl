@@ -67,3 +67,31 @@ vec2 receiverPlaneGradient(vec3 p, vec3 n, int view, ShadowCoord c0) {
   if (isnan(perTexel) || isinf(perTexel)) return vec2(0.0);
   return perTexel > 1.0 ? g / perTexel : g;
 }
+
+#ifdef SL_HAS_RECEIVER_PLANE
+// sl_receiverPlaneProjective(Base) of the receiver's tangent plane (normal n) at p in a projective
+// view (common/receiver_plane.glsl), from two steps on the plane as receiverPlaneGradient takes;
+// unset (the linear extrapolation) in other views and where the steps are not finite.
+void setReceiverPlaneProjective(vec3 p, vec3 n, int view) {
+  sl_receiverPlaneProjectiveBase = vec4(0.0);
+#if defined(SL_PERSPECTIVE_MAP) && defined(SL_LAYOUT_PROJECTIVE)
+  vec3 t1 = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(n, t1);
+  float h = 4.0 * layoutTexelWorldSize(p, view);
+  mat4 vp = lightViewProjMatrix[view], v = lightViewMatrix[view];
+  vec4 c0 = vp * vec4(p, 1.0), c1 = vp * vec4(p + t1 * h, 1.0), c2 = vp * vec4(p + t2 * h, 1.0);
+  if (!(min(c0.w, min(c1.w, c2.w)) > 1e-6)) return;
+  vec3 z = -vec3((v * vec4(p, 1.0)).z, (v * vec4(p + t1 * h, 1.0)).z, (v * vec4(p + t2 * h, 1.0)).z);
+  vec3 invW = 1.0 / vec3(c0.w, c1.w, c2.w);
+  vec3 zw = z * invW;
+  vec2 u0 = c0.xy * invW.x * 0.5, a = c1.xy * invW.y * 0.5 - u0, b = c2.xy * invW.z * 0.5 - u0;
+  float det = a.x * b.y - a.y * b.x;
+  vec2 gzw = vec2((zw.y - zw.x) * b.y - (zw.z - zw.x) * a.y, a.x * (zw.z - zw.x) - b.x * (zw.y - zw.x)) / det;
+  vec2 gw = vec2((invW.y - invW.x) * b.y - (invW.z - invW.x) * a.y, a.x * (invW.z - invW.x) - b.x * (invW.y - invW.x)) / det;
+  vec4 g = vec4(gzw, gw);
+  if (any(isnan(g)) || any(isinf(g)) || isnan(zw.x) || isinf(zw.x)) return;
+  sl_receiverPlaneProjective = g;
+  sl_receiverPlaneProjectiveBase = vec4(zw.x, invW.x, lightViewRange[view].xy);
+#endif
+}
+#endif

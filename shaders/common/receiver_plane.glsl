@@ -9,12 +9,31 @@
 vec4 sl_receiverPlane = vec4(0.0);
 // The map's texels per side for that gradient (0: no plane set, e.g. views and probes).
 float sl_receiverPlaneTexels = 0.0;
+// Projective views (SL_LAYOUT_PROJECTIVE: uv = clip.xy / clip.w of the view's matrix): over a
+// plane z/w and 1/w are affine in uv (z: the stored light-view depth, w: the clip w; a point
+// light's face or a spot has w = z), while z itself is not, so across a wide perspective face the
+// linear extrapolation above bends off the plane (a 141° tetrahedron face striped PCSS with
+// self-shadowing). Set by setReceiverPlaneProjective (common/bias.glsl): xy d(z/w)/d(uv), zw
+// d(1/w)/d(uv); the base holds z/w and 1/w at the receiver and the view's near and far (far >
+// near: in use).
+vec4 sl_receiverPlaneProjective = vec4(0.0);
+vec4 sl_receiverPlaneProjectiveBase = vec4(0.0);
+#define SL_HAS_RECEIVER_PLANE
 
 // The receiver's depth at a tap at `tapUV` read by a nearest-texel lookup: the plane at the
 // centre of the texel the tap falls in (that is where the stored depth was rasterized).
 float receiverDepthAt(float receiverDepth, vec2 tapUV, vec2 mapSize) {
 #ifdef SL_BIAS_MODE_IS_RECEIVER_PLANE
   vec2 centre = (floor(tapUV * mapSize) + 0.5) / mapSize;
+  vec4 base = sl_receiverPlaneProjectiveBase;
+  if (base.w > base.z) {
+    vec2 d = centre - sl_receiverPlane.xy;
+    float a = base.x + dot(sl_receiverPlaneProjective.xy, d), b = base.y + dot(sl_receiverPlaneProjective.zw, d);
+    // The tap's ray meets the plane behind the light, or at infinity: no receiver in front of
+    // anything drawn there (the far plane's value, as the linear form's clamp gives).
+    if (!(b > 0.0)) return 1.0;
+    return min(receiverDepth + (a / b - base.x / base.y) / (base.w - base.z), 1.0);
+  }
   // Beyond the far plane (1) the map holds its clear value 1: the plane extrapolated past it
   // must compare as lit there, not as behind the "caster" at 1.
   return min(receiverDepth + dot(sl_receiverPlane.zw, centre - sl_receiverPlane.xy), 1.0);

@@ -15,6 +15,9 @@ vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coo
   coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
 #if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P, F, view, sc));
+#ifdef SL_HAS_RECEIVER_PLANE
+  setReceiverPlaneProjective(P, F, view);
+#endif
   sl_receiverPlaneTexels = u_shadowMapSize;
 #endif
   float visibility = representationVisibility(vec3(coord.xy, coord.w), coord.z);

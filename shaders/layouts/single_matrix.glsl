@@ -6,6 +6,11 @@
 // layoutShadowCoord (picks the view(s) for a point), layoutShadowCoordIn, layoutTexelWorldSize
 // and layoutDepthScale per view.
 #include "common/light_views.glsl"
+// uv is clip.xy / clip.w of the view's matrix (common/receiver_plane.glsl relies on it); not under
+// LogPSM's warp, and the dual paraboloid (which includes this module) takes it back.
+#ifndef SL_LOG_WARP
+#define SL_LAYOUT_PROJECTIVE
+#endif
 uniform float u_shadowMapSize;
 uniform int u_shadowView;  // the view the shadow pass rasterizes (passes/shadow.vert)
 

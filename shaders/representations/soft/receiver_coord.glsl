@@ -24,6 +24,9 @@ bool receiverShadowCoord(ivec2 pixel, out vec3 uvLayer, out float depth) {
   depth = sc.depth - biasDepth(P.xyz, cosTheta, view);
 #if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P.xyz, F, view, sc));
+#ifdef SL_HAS_RECEIVER_PLANE
+  setReceiverPlaneProjective(P.xyz, F, view);
+#endif
 #endif
   uvLayer = vec3(sc.uv, float(view));
   return true;
