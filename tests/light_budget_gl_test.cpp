@@ -65,6 +65,48 @@ TEST(LightBudgetGl, ALightReachingNothingInViewDrawsNothingAndChangesNoPixel) {
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
 
+// A lamp of 2 m range beside the first: its visibility test and direct term run only over the
+// rectangle its range can reach (Viewport::scissor_). Beyond it the visibility is the test's own
+// answer there, unlit (the reference's too), the colour is what shading every pixel with those
+// visibilities gives, and the sky outside the rectangle shows that the test did not run there.
+TEST(LightBudgetGl, ALampOfShortRangeIsTestedOnlyWhereItReaches) {
+  test::GlHarness h;
+  const std::string path = test::writeTempFile("short_lamp_" + std::to_string(::getpid()) + ".json", R"({
+    "objects":[{"name":"ground","shape":"plane","size":[30,30]},
+      {"name":"box","shape":"box","size":[1,1,1],"transform":{"translate":[0,0.5,0]}},
+      {"name":"post","shape":"box","size":[0.2,1.2,0.2],"transform":{"translate":[-3.4,0.6,0.3]}}],
+    "lights":[{"type":"point","position":[0.5,3,0.5],"range":12},
+              {"type":"point","position":[-3,1.5,0],"range":2}],
+    "cameras":[{"name":"low","position":[4,3,6],"target":[-1,0,0],"fov_deg":60}]})");
+  const test::SceneTruth t = test::sceneTruth(h, path, 160, 90);
+  ASSERT_EQ(t.reference.otherLights.size(), 1u);
+  Viewport vp(makeTechnique("cube", {"shadowmap.size=256"}));
+  test::renderFromCut(h, t.in, vp);
+  const Texture2D* tex = vp.otherLightVisibility(0);
+  ASSERT_NE(tex, nullptr);
+  const std::vector<float> rg = tex->readFloats(2);
+  const std::vector<float> v = visibilityChannel(*tex);
+  size_t skyNotTested = 0, reached = 0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (!t.reference.valid[i]) skyNotTested += rg[2 * i] == 0.0f && rg[2 * i + 1] == 1.0f;  // the test writes (1, 0)
+    reached += t.reference.valid[i] && t.reference.otherLights[0][i] > 0.5f;
+  }
+  EXPECT_GT(skyNotTested, 100u) << "the lamp's test ran beyond the rectangle its range reaches";
+  EXPECT_GT(reached, 100u) << "the lamp lights part of the view";
+  const ErrorMetrics e =
+      compareVisibility(v.data(), t.reference.otherLights[0].data(), t.reference.valid.data(), v.size());
+  EXPECT_LE(e.wrongPixelPct, 3.0);
+  // The colour: the scissored sum equals shading every pixel with the same visibilities.
+  const std::vector<unsigned char> colour = vp.colorTexture()->readRgba8();
+  const std::vector<unsigned char> whole =
+      h.renderer.shadeWithVisibility(t.in, visibilityChannel(*vp.visibilityTexture()), {v});
+  ASSERT_EQ(colour.size(), whole.size());
+  int worst = 0;
+  for (size_t i = 0; i < colour.size(); ++i) worst = std::max(worst, std::abs(int(colour[i]) - int(whole[i])));
+  EXPECT_LE(worst, 1);
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
 // street-lamps at 512² per face hold 3 × 6 × 512² + 512² = 4.98 M texels.
 TEST(LightBudgetGl, ATexelBudgetShrinksTheMapsAndKeepsEveryLightNearItsReference) {
   test::GlHarness h;

@@ -253,14 +253,13 @@ void drawViewportPanels(ExplorerState& state) {
       ImGui::SameLine();
       if (ImGui::SmallButton("Reset")) setViewportPreset(state, i, technique.presetId);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the preset's values");
-      for (const PartState* part : {static_cast<const PartState*>(slot.viewport->representation.get()),
-                                    static_cast<const PartState*>(slot.viewport->accumulation.get())}) {
-        const std::string status = part ? part->status() : "";
-        if (!status.empty()) {  // wrapped: the tile header has room only for its start
-          ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-          ImGui::TextWrapped("%s", status.c_str());
-          ImGui::PopStyleColor();
-        }
+      // Every part's status and the several lights' (wrapped: the tile header has room only for
+      // its start).
+      const std::string status = slot.viewport->status();
+      if (!status.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+        ImGui::TextWrapped("%s", status.c_str());
+        ImGui::PopStyleColor();
       }
       // setViewportPreset may have replaced the technique: read it again.
       ParamLinks links{state.viewportCount > 1 ? &state.linkedParams : nullptr, state.linkAllParams, {}};

@@ -35,12 +35,10 @@ void drawTileHeader(ImDrawList* draw, const ViewportTile& tile, const ViewportSl
   std::string text = std::to_string(index + 1) + "  " +
                      (slot.title.empty() ? vp.technique.label() : slot.title + "   " + vp.technique.label());
   if (!slot.enlargedView.empty()) text += "   [" + slot.enlargedView + "]";
-  // Representations report too (the irregular z-buffer's overflow, a layout it cannot use).
-  for (const PartState* part :
-       {static_cast<const PartState*>(vp.representation.get()), static_cast<const PartState*>(vp.accumulation.get())}) {
-    const std::string status = part ? part->status() : "";
-    if (!status.empty()) text += "   " + status;
-  }
+  // Every part's status (the faces a point light's layout drew, the irregular z-buffer's
+  // overflow) and, in a scene of several lights, how many were shadowed and at what map sizes.
+  const std::string status = vp.status();
+  if (!status.empty()) text += "   " + status;
   const float textY = tile.headerMin.y + (tile.headerSize.y - ImGui::GetTextLineHeight()) * 0.5f;
   const ImVec2 headerMax(tile.headerMin.x + tile.headerSize.x, tile.headerMin.y + tile.headerSize.y);
   // A long status (pixel-correct's) does not fit a 2x2 tile: cut it with an ellipsis and show

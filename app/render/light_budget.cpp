@@ -42,7 +42,9 @@ Bounds reachOf(const Light& light, const Bounds& scene) {
 
 }  // namespace
 
-double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj) {
+double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj,
+                      glm::vec4* ndcBounds) {
+  if (ndcBounds) *ndcBounds = glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f);
   const Bounds reach = reachOf(light, sceneBounds);
   if (reach.empty()) return 0.0;
   const std::vector<glm::vec3> body = clipFrustumToBox(view, proj, reach);
@@ -54,8 +56,25 @@ double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::
     if (!(c.w > 0.0f)) continue;  // on the camera's plane by rounding: the body's other corners bound it
     ndc.push_back(glm::clamp(glm::dvec2(c.x / c.w, c.y / c.w), glm::dvec2(-1.0), glm::dvec2(1.0)));
   }
+  if (ndcBounds && !ndc.empty()) {
+    glm::dvec2 lo(1.0), hi(-1.0);
+    for (const glm::dvec2& q : ndc) {
+      lo = glm::min(lo, q);
+      hi = glm::max(hi, q);
+    }
+    *ndcBounds = glm::vec4(lo.x, lo.y, hi.x, hi.y);
+  }
   // A body flat on screen (seen edge-on) still holds visible points: never 0 for a non-empty one.
   return std::clamp(hullArea(ndc) / 4.0, 1e-6, 1.0);
+}
+
+glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int width, int height) {
+  if (light.type != Light::Type::Point || !(light.range > 0.0f)) return {0, 0, width, height};
+  const int x0 = std::clamp(int(std::floor((ndcBounds.x * 0.5f + 0.5f) * width)) - 1, 0, width);
+  const int y0 = std::clamp(int(std::floor((ndcBounds.y * 0.5f + 0.5f) * height)) - 1, 0, height);
+  const int x1 = std::clamp(int(std::ceil((ndcBounds.z * 0.5f + 0.5f) * width)) + 1, x0, width);
+  const int y1 = std::clamp(int(std::ceil((ndcBounds.w * 0.5f + 0.5f) * height)) + 1, y0, height);
+  return {x0, y0, x1 - x0, y1 - y0};
 }
 
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes) {

@@ -17,7 +17,15 @@ namespace sl {
 // around a point light's range, else the scene's bounds) clipped by the camera frustum and the
 // scene's bounds: its convex hull, so an upper bound of the pixels the light can reach. 0 when
 // that body is empty (no visible point is in its range).
-double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj);
+// ndcBounds (when given): the hull's bounding rectangle in normalized device coordinates, min xy
+// and max xy, within [-1, 1] (the whole screen when the footprint is 0).
+double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::mat4& view, const glm::mat4& proj,
+                      glm::vec4* ndcBounds = nullptr);
+
+// The pixels (x, y, width, height) a light of limited reach (a point light with a range) can
+// light: ndcBounds in a width x height frame, widened by a pixel for rounding; the whole frame
+// for a light of unlimited reach.
+glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int width, int height);
 
 struct LightDemand {
   double footprint = 1.0;  // lightFootprint; 0 = not drawn

@@ -71,9 +71,11 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
   const Bounds bounds = scene_->boundsAt(in.time);
   std::vector<LightDemand> demand(lights.size());
   for (size_t k = 0; k < lights.size(); ++k) {
-    // Scene::light is always drawn: its visibility is what the views and the metrics show.
-    const double footprint = lightFootprint(*sources[k], bounds, view_, proj_);
+    // Scene::light is always drawn whole: its visibility is what the views and the metrics show.
+    glm::vec4 ndc;
+    const double footprint = lightFootprint(*sources[k], bounds, view_, proj_, &ndc);
     demand[k].footprint = k == 0 ? std::max(footprint, 1e-6) : footprint;
+    lights[k]->scissor_ = k == 0 ? glm::ivec4(0) : lightScissor(*sources[k], ndc, in.width, in.height);
     demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightViewCount(*lights[k], in) : 1;
   }
   const int size = params.has("shadowmap.size") ? params.i("shadowmap.size") : 2048;
@@ -99,10 +101,11 @@ namespace {
 
 // The other lights' direct terms, each in its colour, summed into `fbo` (one RGBA16F target):
 // cleared, then one additive fullscreen draw per light. visibility[k]: the k-th light's, null where it is not
-// shadowed (by the scene file, or beyond lights.shadowed): lit through casters. outOfReach[k]: no
-// visible point is in the light's range (Renderer::budgetLightMaps), its draw skipped.
+// shadowed (by the scene file, or beyond lights.shadowed): lit through casters. scissors[k]: the
+// pixels the light can reach (Viewport::scissor_; empty: none, its draw skipped; x < 0 or no
+// entry: every pixel).
 void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Framebuffer& fbo,
-                           const std::vector<const Texture2D*>& visibility, const std::vector<bool>& outOfReach,
+                           const std::vector<const Texture2D*>& visibility, const std::vector<glm::ivec4>& scissors,
                            const ProgramSetup& bindGBuffer, const std::function<void()>& drawFullscreen) {
   fbo.bind();
   const float zero[4] = {0, 0, 0, 0};
@@ -110,7 +113,8 @@ void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Fra
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   for (size_t k = 0; k < scene.otherLights.size(); ++k) {
-    if (k < outOfReach.size() && outOfReach[k]) continue;  // lights no visible point
+    const glm::ivec4 rect = k < scissors.size() ? scissors[k] : glm::ivec4(-1);
+    if (rect.z == 0 || rect.w == 0) continue;  // lights no visible point
     const Light& light = scene.otherLights[k];
     const Texture2D* vis = k < visibility.size() ? visibility[k] : nullptr;
     const std::string defines = lightDefines(light) + (vis ? "#define SL_SHADOWED_LIGHT\n" : "");
@@ -124,7 +128,12 @@ void drawOtherLightsDirect(ShaderLibrary& shaders, const Scene& scene, const Fra
     TextureUnits units;
     bindGBuffer(p, units);
     if (vis) units.bind(p, "u_visibility", vis->id());
+    if (rect.x >= 0) {  // beyond the light's range its term is 0: only the pixels it can reach
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(rect.x, rect.y, rect.z, rect.w);
+    }
     drawFullscreen();
+    glDisable(GL_SCISSOR_TEST);
   }
   glDisable(GL_BLEND);
 }
@@ -160,21 +169,24 @@ void Renderer::addOtherLightsPasses(FrameGraph& g, Viewport& vp, const std::stri
   ensureOtherDirectTarget(vp, in.width, in.height);
   std::vector<std::string> reads = {"gbuffer"};
   std::vector<const Texture2D*> visibility(others.size(), nullptr);
-  std::vector<bool> outOfReach(others.size(), false);
+  std::vector<glm::ivec4> scissors(others.size(), glm::ivec4(-1));
   for (size_t k = 0; k < others.size(); ++k) {
     Viewport* sub = vp.otherLights_[k].get();
     if (!sub) continue;
-    outOfReach[k] = !sub->drawn_;
-    if (outOfReach[k]) continue;
+    if (!sub->drawn_) {
+      scissors[k] = glm::ivec4(0);
+      continue;
+    }
+    if (sub->scissor_.z > 0) scissors[k] = sub->scissor_;
     ensureViewportTargets(*sub, in.width, in.height);
     addLightPasses(g, *sub, tag + ".light" + std::to_string(k + 1), in);
     reads.push_back(sub->output_.visibility);
     visibility[k] = sub->visibilityTexture();
   }
   const std::string sum = "lights.direct" + tag;
-  g.add({"lights direct" + tag, reads, {sum}, [this, &vp, visibility, outOfReach] {
+  g.add({"lights direct" + tag, reads, {sum}, [this, &vp, visibility, scissors] {
            ProgramSetup gbuffer = [this](const Program& p, TextureUnits& units) { bindGBuffer(p, units); };
-           drawOtherLightsDirect(shaders_, *scene_, vp.otherDirectFbo_, visibility, outOfReach, gbuffer,
+           drawOtherLightsDirect(shaders_, *scene_, vp.otherDirectFbo_, visibility, scissors, gbuffer,
                                  [this] { drawFullscreen(); });
          }});
   // Writes the colour whole (sky included): the first light's own shade pass is culled unless

@@ -90,6 +90,10 @@ class Viewport {
   ParamSet frameParams_;
   int mapSize_ = 0;
   bool drawn_ = true;          // an other light: false when no visible point is in its reach
+  // An other light of limited reach: the pixels its range can light (x, y, width, height); its
+  // visibility test and direct term run there only (the rest is beyond its range: unlit).
+  // Width 0: the whole frame.
+  glm::ivec4 scissor_{0};
   bool laidOut_ = false;       // lightSpace is its technique's layout's (not a default, nor a former technique's)
   double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
   int sizeRange_[2] = {0, 0};  // and their smallest and largest map size

@@ -39,7 +39,17 @@ void Renderer::addVisibilityPass(FrameGraph& g, Viewport& vp, const std::string&
            p.use();
            TextureUnits units;
            bindInputs(p, units);
+           // An other light of limited reach: beyond its range every point is unlit with full
+           // confidence (what the test would write there), so only its pixels run the test.
+           const glm::ivec4 rect = vp.scissor_;
+           if (rect.z > 0) {
+             const float beyondRange[4] = {0.0f, 1.0f, 0.0f, 0.0f};
+             glClearNamedFramebufferfv(vp.visibilityFbo_.id(), GL_COLOR, 0, beyondRange);
+             glEnable(GL_SCISSOR_TEST);
+             glScissor(rect.x, rect.y, rect.z, rect.w);
+           }
            drawFullscreen();
+           glDisable(GL_SCISSOR_TEST);
          }});
 }
 
