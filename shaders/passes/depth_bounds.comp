@@ -2,6 +2,9 @@
 // their camera view depth and of their position in the light's fixed basis, reduced per work
 // group in shared memory, then once per group into the result buffer. Floats are stored as
 // order-preserving uints so that atomicMin/atomicMax compare them correctly.
+// Each invocation reduces a 4x4 block of pixels in registers first, so a group of 16x16 covers
+// 64x64 pixels and the shared atomics run once per invocation, not once per pixel (on a CPU
+// rasterizer the atomics, serialized per lane, were most of the pass).
 layout(local_size_x = 16, local_size_y = 16) in;
 uniform sampler2D u_gPosition;
 uniform mat4 u_cameraView;
@@ -10,6 +13,7 @@ layout(std430) buffer DepthBounds {
   uint bounds[8];  // view depth min, max; light x min, max; y min, max; light depth min, max
 };
 shared uint groupBounds[8];
+const int kBlock = 4;  // pixels per invocation along each axis (sdsm.cpp dispatches by it)
 
 uint orderedBits(float f) {
   uint u = floatBitsToUint(f);
@@ -19,17 +23,26 @@ uint orderedBits(float f) {
 void main() {
   if (gl_LocalInvocationIndex < 8u) groupBounds[gl_LocalInvocationIndex] = (gl_LocalInvocationIndex & 1u) == 0u ? 0xffffffffu : 0u;
   barrier();
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(pixel, textureSize(u_gPosition, 0)))) {
-    vec4 P = texelFetch(u_gPosition, pixel, 0);
-    // Covered and finite: a NaN would poison the bounds for the frames that read them.
-    if (P.w > 0.5 && !any(isnan(P.xyz)) && !any(isinf(P.xyz))) {
+  ivec2 size = textureSize(u_gPosition, 0);
+  vec4 lo = vec4(1.0 / 0.0), hi = vec4(-1.0 / 0.0);
+  bool found = false;
+  for (int j = 0; j < kBlock; ++j)
+    for (int i = 0; i < kBlock; ++i) {
+      ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * kBlock + ivec2(i, j);
+      if (any(greaterThanEqual(pixel, size))) continue;
+      vec4 P = texelFetch(u_gPosition, pixel, 0);
+      // Covered and finite: a NaN would poison the bounds for the frames that read them.
+      if (!(P.w > 0.5) || any(isnan(P.xyz)) || any(isinf(P.xyz))) continue;
       vec3 q = (u_lightView * vec4(P.xyz, 1.0)).xyz;
-      float values[4] = float[4](-(u_cameraView * vec4(P.xyz, 1.0)).z, q.x, q.y, -q.z);
-      for (int k = 0; k < 4; ++k) {
-        atomicMin(groupBounds[2 * k], orderedBits(values[k]));
-        atomicMax(groupBounds[2 * k + 1], orderedBits(values[k]));
-      }
+      vec4 v = vec4(-(u_cameraView * vec4(P.xyz, 1.0)).z, q.x, q.y, -q.z);
+      lo = min(lo, v);
+      hi = max(hi, v);
+      found = true;
+    }
+  if (found) {
+    for (int k = 0; k < 4; ++k) {
+      atomicMin(groupBounds[2 * k], orderedBits(lo[k]));
+      atomicMax(groupBounds[2 * k + 1], orderedBits(hi[k]));
     }
   }
   barrier();

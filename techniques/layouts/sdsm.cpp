@@ -113,7 +113,8 @@ std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartConte
                p.set("u_cameraView", ctx.view);
                p.set("u_lightView", lightViewMatrix(ctx.shadowedLight(), 0.0f));
                bindStorage("DepthBounds", gpu_->buffers[slot]);
-               glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
+               // 16x16 invocations of 4x4 pixels each (passes/depth_bounds.comp).
+               glDispatchCompute((ctx.width + 63) / 64, (ctx.height + 63) / 64, 1);
                glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
                if (ctx.params->i("fit.sdsm_latency") > 0) return;
                // No latency: wait for the result and refit this frame's light space with it.
