@@ -4,12 +4,12 @@
 #include "render/gpu_scene.h"
 #include "scene/scene_effects.h"
 
-#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 

@@ -42,6 +42,22 @@ float biasDepth(vec3 p, float cosTheta, int view) {
 #endif
 }
 
+// Two steps 4 texels long on the receiver's tangent plane (normal n) at p: what the plane's
+// gradients in a perspective or warped view are taken over.
+void tangentSteps(vec3 p, vec3 n, int view, out vec3 s1, out vec3 s2) {
+  vec3 t1 = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(n, t1);
+  float h = 4.0 * layoutTexelWorldSize(p, view);
+  s1 = t1 * h;
+  s2 = t2 * h;
+}
+
+// d(f)/d(uv) of a quantity f that changes by df1 and df2 over the map steps a and b.
+vec2 gradientOverSteps(vec2 a, vec2 b, float df1, float df2) {
+  float det = a.x * b.y - a.y * b.x;
+  return vec2(df1 * b.y - df2 * a.y, a.x * df2 - b.x * df1) / det;
+}
+
 // d(stored depth)/d(uv) of the receiver's tangent plane (normal n) at p in `view`, for
 // receiver-plane depth bias. Orthographic views: exact, from the normal in light-view space
 // (the window is texelWorldSize x size wide on both axes). Perspective or warped views: from two
@@ -50,14 +66,10 @@ float biasDepth(vec3 p, float cosTheta, int view) {
 vec2 receiverPlaneGradient(vec3 p, vec3 n, int view, ShadowCoord c0) {
   vec2 g;
 #ifdef SL_PERSPECTIVE_MAP
-  vec3 t1 = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  vec3 t2 = cross(n, t1);
-  float h = 4.0 * layoutTexelWorldSize(p, view);
-  ShadowCoord c1 = layoutShadowCoordIn(p + t1 * h, view), c2 = layoutShadowCoordIn(p + t2 * h, view);
-  vec2 a = c1.uv - c0.uv, b = c2.uv - c0.uv;
-  float za = c1.depth - c0.depth, zb = c2.depth - c0.depth;
-  float det = a.x * b.y - a.y * b.x;
-  g = vec2(za * b.y - zb * a.y, a.x * zb - b.x * za) / det;
+  vec3 s1, s2;
+  tangentSteps(p, n, view, s1, s2);
+  ShadowCoord c1 = layoutShadowCoordIn(p + s1, view), c2 = layoutShadowCoordIn(p + s2, view);
+  g = gradientOverSteps(c1.uv - c0.uv, c2.uv - c0.uv, c1.depth - c0.depth, c2.depth - c0.depth);
 #else
   vec3 nl = mat3(lightViewMatrix[view]) * n;
   float nz = nl.z < 0.0 ? min(nl.z, -1e-4) : max(nl.z, 1e-4);
@@ -75,20 +87,16 @@ vec2 receiverPlaneGradient(vec3 p, vec3 n, int view, ShadowCoord c0) {
 void setReceiverPlaneProjective(vec3 p, vec3 n, int view) {
   sl_receiverPlaneProjectiveBase = vec4(0.0);
 #if defined(SL_PERSPECTIVE_MAP) && defined(SL_LAYOUT_PROJECTIVE)
-  vec3 t1 = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  vec3 t2 = cross(n, t1);
-  float h = 4.0 * layoutTexelWorldSize(p, view);
+  vec3 s1, s2;
+  tangentSteps(p, n, view, s1, s2);
   mat4 vp = lightViewProjMatrix[view], v = lightViewMatrix[view];
-  vec4 c0 = vp * vec4(p, 1.0), c1 = vp * vec4(p + t1 * h, 1.0), c2 = vp * vec4(p + t2 * h, 1.0);
+  vec4 c0 = vp * vec4(p, 1.0), c1 = vp * vec4(p + s1, 1.0), c2 = vp * vec4(p + s2, 1.0);
   if (!(min(c0.w, min(c1.w, c2.w)) > 1e-6)) return;
-  vec3 z = -vec3((v * vec4(p, 1.0)).z, (v * vec4(p + t1 * h, 1.0)).z, (v * vec4(p + t2 * h, 1.0)).z);
+  vec3 z = -vec3((v * vec4(p, 1.0)).z, (v * vec4(p + s1, 1.0)).z, (v * vec4(p + s2, 1.0)).z);
   vec3 invW = 1.0 / vec3(c0.w, c1.w, c2.w);
   vec3 zw = z * invW;
   vec2 u0 = c0.xy * invW.x * 0.5, a = c1.xy * invW.y * 0.5 - u0, b = c2.xy * invW.z * 0.5 - u0;
-  float det = a.x * b.y - a.y * b.x;
-  vec2 gzw = vec2((zw.y - zw.x) * b.y - (zw.z - zw.x) * a.y, a.x * (zw.z - zw.x) - b.x * (zw.y - zw.x)) / det;
-  vec2 gw = vec2((invW.y - invW.x) * b.y - (invW.z - invW.x) * a.y, a.x * (invW.z - invW.x) - b.x * (invW.y - invW.x)) / det;
-  vec4 g = vec4(gzw, gw);
+  vec4 g = vec4(gradientOverSteps(a, b, zw.y - zw.x, zw.z - zw.x), gradientOverSteps(a, b, invW.y - invW.x, invW.z - invW.x));
   if (any(isnan(g)) || any(isinf(g)) || isnan(zw.x) || isinf(zw.x)) return;
   sl_receiverPlaneProjective = g;
   sl_receiverPlaneProjectiveBase = vec4(zw.x, invW.x, lightViewRange[view].xy);

@@ -150,7 +150,7 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
 // starts set: the count pass clears it for each pixel a view lists or decides
 // (shaders/passes/izb_count.comp); without lists (error_) every sample keeps it.
 void IzbState::runLists(const PartContext& ctx) {
-  for (GLuint b : {counts_, bits_, fallback_, counters_}) clearBuffer(b);
+  for (GLuint b : {bits_, fallback_, counters_}) clearBuffer(b);  // counts_: per view (listView)
   if (!error_.empty() || views_ > 1) {
     const uint32_t ones = ~0u;
     glClearNamedBufferData(fallback_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
@@ -264,11 +264,11 @@ std::string IzbState::status() const {
   if (!error_.empty()) return error_;
   if (!counters_) return "";
   const uint32_t overflow = overflowCount();
-  std::string s = views_ > 1 ? std::to_string(listedCount()) + " listings of samples in " + std::to_string(views_) +
-                                   " views of " + std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) +
-                                   " rows of large triangles queued in the last"
-                             : std::to_string(listedCount()) + " samples in " + std::to_string(grid_) + "² cells, " +
-                                   std::to_string(counter(2)) + " rows of large triangles queued";
+  const bool several = views_ > 1;
+  std::string s = std::to_string(listedCount()) +
+                  (several ? " listings of samples in " + std::to_string(views_) + " views of " : " samples in ") +
+                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) + " rows of large triangles queued" +
+                  (several ? " in the last" : "");
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +
          " samples use the shadow-map test (raise izb.capacity)";
