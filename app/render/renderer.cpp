@@ -199,7 +199,8 @@ void Renderer::ensureViewportTargets(Viewport& vp, int w, int h) {
 std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // Per-technique and per-scene constants become defines, not uniform branches: a software
   // rasterizer executes both sides of every branch. Representations reconstruct visibility per
-  // fragment; vertex stages only need the layout.
+  // fragment; vertex stages only need the layout. A compute pass that reconstructs (the forward
+  // splat) asks for the representation too with SL_REPRESENTATION_IN_COMPUTE.
   const Technique& t = vp.technique;
   std::string defines = enumDefines(t.params);  // SL_BIAS_MODE_IS_SLOPE, ...
   defines += lightDefines(lightOf(vp));
@@ -208,7 +209,8 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";
   defines += "#define SL_LIGHT_VIEWS " + std::to_string(vp.lightSpace.views.size()) + "\n";
   defines += vp.layout->defines() + vp.representation->defines() + vp.accumulation->defines();
-  return defines + "#include \"" + t.layout->glslModule() + "\"\n#ifdef SL_FRAGMENT\n#include \"" +
+  return defines + "#include \"" + t.layout->glslModule() +
+         "\"\n#if defined(SL_FRAGMENT) || defined(SL_REPRESENTATION_IN_COMPUTE)\n#include \"" +
          t.representation->glslModule() + "\"\n#endif\n";
 }
 

@@ -5,7 +5,8 @@
 
 // Facet normal from screen derivatives of the world position, turned to the side of the shading
 // normal N (the side the camera sees). Call it before any discard: derivatives are undefined
-// after one.
+// after one. Fragment stages only (screen derivatives).
+#ifdef SL_FRAGMENT
 vec3 facetNormalFromDerivatives(vec3 worldPos, vec3 N) {
   vec3 f = cross(dFdx(worldPos), dFdy(worldPos));
   float len = length(f);
@@ -13,6 +14,7 @@ vec3 facetNormalFromDerivatives(vec3 worldPos, vec3 N) {
   f /= len;
   return dot(f, N) < 0.0 ? -f : f;
 }
+#endif
 
 // Octahedral mapping of a unit vector to [-1,1]^2 (one snorm16 pair: about 5e-5 rad).
 vec2 facetOctEncode(vec3 n) {
@@ -30,3 +32,14 @@ vec3 facetOctDecode(vec2 e) {
 
 uint packFacet(vec3 n) { return packSnorm2x16(facetOctEncode(n)); }
 vec3 unpackFacet(uint bits) { return facetOctDecode(unpackSnorm2x16(bits)); }
+
+#ifdef SL_DEFERRED
+// The facet normal the G-buffer stored for this pixel (passes/gbuffer.frag), on N's side.
+uniform usampler2D u_gSurface;
+vec3 gbufferFacetNormal(ivec2 pixel, vec3 N) {
+  uvec4 s = texelFetch(u_gSurface, pixel, 0);
+  if (s.x == 0u) return N;
+  vec3 f = unpackFacet(s.z);
+  return dot(f, N) < 0.0 ? -f : f;
+}
+#endif

@@ -54,15 +54,8 @@ vec2 visibilityTerm(vec3 P, vec3 N, vec3 F) {
 }
 
 #ifdef SL_DEFERRED
+// gbufferFacetNormal
 #include "common/facet.glsl"
-// The facet normal the G-buffer stored for this pixel (passes/gbuffer.frag), on N's side.
-uniform usampler2D u_gSurface;
-vec3 gbufferFacetNormal(ivec2 pixel, vec3 N) {
-  uvec4 s = texelFetch(u_gSurface, pixel, 0);
-  if (s.x == 0u) return N;
-  vec3 f = unpackFacet(s.z);
-  return dot(f, N) < 0.0 ? -f : f;
-}
 #endif
 
 // True when the test gives `f` at the four shadow-map positions one texel diagonally around

@@ -8,6 +8,7 @@
 // of every vertex it spans. A texel that needs more nodes doubles its tolerance and tries again
 // (counted in deepOverflow[1]). Needs the technique prelude (the light views).
 #include "common/volume_density.glsl"
+#include "common/light_ray.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430) readonly buffer DeepCounts { uint deepCount[]; };
 layout(std430) readonly buffer DeepFragments { vec2 deepFragment[]; };
@@ -30,18 +31,6 @@ vec2 nodes[SL_DEEP_NODES];
 void pushRaw(float z, float t) {
   if (rawCount > 0) z = max(z, raw[rawCount - 1].x + kStep);  // strictly increasing depth
   if (rawCount < kRaw) raw[rawCount++] = vec2(z, clamp(t, 0.0, 1.0));
-}
-
-// World point at stored depth d on the ray of map position uv in `view`: linear in d for
-// orthographic and perspective views alike.
-vec3 lightRayPoint(vec2 uv, float d, int view) {
-  mat4 invView = inverse(lightViewMatrix[view]);
-  mat4 invProj = inverse(lightViewProjMatrix[view] * invView);
-  vec4 q = invProj * vec4(uv * 2.0 - 1.0, 0.0, 1.0);
-  q /= q.w;
-  float dist = mix(lightViewRange[view].x, lightViewRange[view].y, d);
-  vec3 p = lightViewRange[view].w > 0.5 ? q.xyz * (dist / max(-q.z, 1e-12)) : vec3(q.xy, -dist);
-  return (invView * vec4(p, 1.0)).xyz;
 }
 
 // Sorted fragments merged with the volume march into raw vertices (depth, transmittance).

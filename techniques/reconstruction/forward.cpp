@@ -5,7 +5,8 @@
 //
 // As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
 // is the eye view's depth buffer; one pass draws a point per light texel (its world position
-// rebuilt from the depth it stores), sized forward.splat pixels, into the visibility target.
+// rebuilt from the depth it stores), sized forward.splat pixels, into the visibility target:
+// a compute scatter, one invocation per texel testing the pixels its splat covers.
 // The renderer's visibility test (the backward nearest test) runs only for the `forward-holes`
 // view, which compares the two; the deferred shade pass lights the G-buffer with the splats.
 #include "reconstruction/reconstruction.h"
@@ -38,17 +39,12 @@ class ForwardState : public AccumulationState {
 };
 
 void ForwardState::splat(const AccumulationContext& c) {
-  ProgramSpec spec{
-      "forward splat",
-      {{GL_VERTEX_SHADER, "accumulation/forward_splat.vert"}, {GL_FRAGMENT_SHADER, "accumulation/forward_splat.frag"}},
-      "#define SL_DEFERRED\n" + c.techniquePrelude};
+  ProgramSpec spec{"forward splat",
+                   {{GL_COMPUTE_SHADER, "accumulation/forward_splat.comp"}},
+                   "#define SL_DEFERRED\n#define SL_REPRESENTATION_IN_COMPUTE\n" + c.techniquePrelude};
   Program& p = c.shaders->get(spec);
-  Framebuffer fbo("forward splats");
-  fbo.attach({c.finalVisibilityTex}, nullptr);
-  fbo.bind();
-  glViewport(0, 0, c.width, c.height);
   const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};  // no sample reached it: unlit
-  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, dark);
+  glClearTexImage(c.finalVisibilityTex->id(), 0, GL_RG, GL_FLOAT, dark);
   if (!p.valid()) return;
   p.use();
   TextureUnits units;
@@ -57,14 +53,12 @@ void ForwardState::splat(const AccumulationContext& c) {
   p.set("u_eyeViewProj", c.proj * c.view);
   p.set("u_mapSize", size);
   p.set("u_screenSize", glm::vec2(c.width, c.height));
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindVertexArray(vao_);
+  glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+  p.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
+  const GLuint groups = static_cast<GLuint>((size + 7) / 8);
+  glDispatchCompute(groups, groups, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   points_ = static_cast<long long>(size) * size;
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_));
-  glBindVertexArray(0);
-  glDisable(GL_PROGRAM_POINT_SIZE);
 }
 
 AccumulationOutput ForwardState::addPasses(FrameGraph& graph, const AccumulationContext& ctx) {
@@ -121,8 +115,8 @@ class ForwardAccumulation : public Accumulation {
              .max = 16,
              .defaultValue = 4,
              .unit = "pixels",
-             .help = "side of the square each light sample lights in the eye view (Zhang's splat; with "
-                     "forward.grow the smallest side)"},
+             .help = "side of the square each light sample lights in the eye view (Zhang's fixed splat, with "
+                     "forward.grow off; grown splats are at least a pixel)"},
             {.key = "forward.grow",
              .type = ParamType::Bool,
              .defaultValue = 1,

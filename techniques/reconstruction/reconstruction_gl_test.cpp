@@ -118,8 +118,8 @@ TEST(Forward, HolesShrinkAsSplatsGrow) {
   std::printf("basic 256^2: forward splat 1 %.2f %%, splat 8 %.2f %%, standard %.2f %%\n", ws, wl, wstd);
   EXPECT_GT(ws, 5.0) << "one-pixel splats of a coarse map leave holes";
   EXPECT_LT(wl, 0.5 * ws);
-  // Large splats cover nearly every pixel: what is left is the backward map's own error, plus the
-  // frame's border (a GL point whose centre is off screen is clipped whole) and grazing slopes.
+  // Large splats cover nearly every pixel: what is left is the backward map's own error, plus
+  // grazing slopes.
   EXPECT_LT(wl, wstd + 1.0);
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
@@ -127,7 +127,7 @@ TEST(Forward, HolesShrinkAsSplatsGrow) {
 // Issue #23: under a grazing light one light texel spans a long stretch of eye pixels, and
 // fixed splats left most of the frame dark (columns 64 % wrong, low-sun 87 %). Splats grown to
 // the texel's footprint keep them lit; the 0.05 degree sun, where a texel spans more than the
-// largest point, is the method's limit (techniques/reconstruction/README.md).
+// largest splat, is the method's limit (techniques/reconstruction/README.md).
 TEST(Forward, GrownSplatsCoverGrazingTexels) {
   test::GlHarness h;
   for (const std::string id : {"columns", "low-sun"}) {
@@ -136,7 +136,9 @@ TEST(Forward, GrownSplatsCoverGrazingTexels) {
     const test::Frame standard = test::renderOnce(h, scene, "standard", {}, 160, 90);
     expectSane(forward, "forward on " + id);
     const double wf = wrongPct(scene, forward), wstd = wrongPct(scene, standard);
-    EXPECT_LE(wf, std::max(5.0, 3.0 * wstd)) << id << ": standard " << wstd << " %";
+    // Splats clipped to the screen, not culled with their centre: low-sun 1.6 % (11.5 % when a
+    // splat whose sample is off screen was dropped), columns 0.9 % (2.8 %).
+    EXPECT_LE(wf, std::max(2.0, wstd)) << id << ": standard " << wstd << " %";
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
