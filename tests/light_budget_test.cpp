@@ -104,5 +104,42 @@ TEST(LightBudget, RandomDemandsStayWithinTheBudgetAndFollowTheFootprint) {
   }
 }
 
+TEST(LightBudget, HeldFootprintMovesOnlyBeyondItsBand) {
+  EXPECT_EQ(heldFootprint(0.0, 0.2), 0.2);    // first measure: at once
+  EXPECT_EQ(heldFootprint(0.2, 0.0), 0.0);    // reaching nothing in view: at once (not drawn)
+  EXPECT_EQ(heldFootprint(0.2, 0.25), 0.2);   // within 1.5x: held
+  EXPECT_EQ(heldFootprint(0.2, 0.14), 0.2);   // within 1/1.5
+  EXPECT_EQ(heldFootprint(0.2, 0.31), 0.31);  // beyond: the new one
+  EXPECT_EQ(heldFootprint(0.2, 0.13), 0.13);
+}
+
+// A camera hovering where the allocation steps: the footprint of one lamp swings by 3 % either
+// side of the value where its maps change size. Without the hold the sizes switch every frame
+// (each switch re-allocates the lamp's maps); held, they stay.
+TEST(LightBudget, AFootprintHoveringAtAStepDoesNotSwitchTheSizesEveryFrame) {
+  const double budget = 6.0 * (256 * 256 + 128 * 128);
+  auto sizesAt = [&](double a) { return budgetMapSizes({{a, 6}, {0.3, 6}}, budget, 1024, 64); };
+  double step = 0.0;  // a footprint where the sizes differ 3 % below and above it
+  for (double a = 0.05; a < 1.0 && step == 0.0; a += 0.001)
+    if (sizesAt(a * 0.97) != sizesAt(a * 1.03)) step = a;
+  ASSERT_GT(step, 0.0) << "no step in the allocation to hover at";
+  int switchesRaw = 0, switchesHeld = 0;
+  double held = 0.0;
+  std::vector<int> lastRaw, lastHeld;
+  for (int frame = 0; frame < 20; ++frame) {
+    const double now = step * (frame % 2 ? 1.03 : 0.97);
+    held = heldFootprint(held, now);
+    const std::vector<int> raw = sizesAt(now), kept = sizesAt(held);
+    if (frame > 0) {
+      switchesRaw += raw != lastRaw;
+      switchesHeld += kept != lastHeld;
+    }
+    lastRaw = raw;
+    lastHeld = kept;
+  }
+  EXPECT_EQ(switchesRaw, 19);
+  EXPECT_EQ(switchesHeld, 0);
+}
+
 }  // namespace
 }  // namespace sl

@@ -77,6 +77,11 @@ glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int widt
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
+double heldFootprint(double held, double now, double band) {
+  if (!(held > 0.0) || !(now > 0.0)) return now;
+  return now <= held * band && now * band >= held ? held : now;
+}
+
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes) {
   double sum = 0.0;
   for (size_t k = 0; k < lights.size() && k < sizes.size(); ++k)

@@ -27,6 +27,13 @@ double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::
 // for a light of unlimited reach.
 glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int width, int height);
 
+// The footprint a light's budget uses this frame, given the one it used last frame (`held`)
+// and the one measured now: the held one while now stays within a factor `band` of it, so a
+// camera hovering where the allocation steps does not switch a lamp's maps back and forth every
+// frame (each switch re-allocates them). 0 (reaching nothing in view: not drawn, which must be
+// exact) and the first measure after 0 pass at once.
+double heldFootprint(double held, double now, double band = 1.5);
+
 struct LightDemand {
   double footprint = 1.0;  // lightFootprint; 0 = not drawn
   int views = 1;           // layers of the light's maps (a cube: 6)

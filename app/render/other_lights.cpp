@@ -74,7 +74,9 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
     // Scene::light is always drawn whole: its visibility is what the views and the metrics show.
     glm::vec4 ndc;
     const double footprint = lightFootprint(*sources[k], bounds, view_, proj_, &ndc);
-    demand[k].footprint = k == 0 ? std::max(footprint, 1e-6) : footprint;
+    lights[k]->heldFootprint_ =
+        heldFootprint(lights[k]->heldFootprint_, k == 0 ? std::max(footprint, 1e-6) : footprint);
+    demand[k].footprint = lights[k]->heldFootprint_;
     lights[k]->scissor_ = k == 0 ? glm::ivec4(0) : lightScissor(*sources[k], ndc, in.width, in.height);
     demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightViewCount(*lights[k], in) : 1;
   }

@@ -89,14 +89,15 @@ class Viewport {
   // this light (render/light_budget.h; mapSize_ 0 = the technique's own shadowmap.size).
   ParamSet frameParams_;
   int mapSize_ = 0;
-  bool drawn_ = true;          // an other light: false when no visible point is in its reach
+  bool drawn_ = true;  // an other light: false when no visible point is in its reach
   // An other light of limited reach: the pixels its range can light (x, y, width, height); its
   // visibility test and direct term run there only (the rest is beyond its range: unlit).
   // Width 0: the whole frame.
   glm::ivec4 scissor_{0};
-  bool laidOut_ = false;       // lightSpace is its technique's layout's (not a default, nor a former technique's)
-  double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
-  int sizeRange_[2] = {0, 0};  // and their smallest and largest map size
+  double heldFootprint_ = 0.0;  // what the texel budget last gave this light (light_budget.h)
+  bool laidOut_ = false;        // lightSpace is its technique's layout's (not a default, nor a former technique's)
+  double budgetTexels_ = 0.0;   // the user's viewport: texels the budget gave its lights this frame
+  int sizeRange_[2] = {0, 0};   // and their smallest and largest map size
   // Scene::otherLights' shadowed entries: the same technique with its own part states and
   // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.
   std::vector<std::unique_ptr<Viewport>> otherLights_;
