@@ -6,10 +6,9 @@
 // of the fitted criterion's grid).
 #include "common/light_views.glsl"
 uniform float u_virtual_lod_bias;
-// The index of virtual.criterion's choice; SL_VIRTUAL_CRITERION_<CHOICE> (the layout state's
-// defines, from the parameter's declared choices) name them.
-uniform float u_virtual_criterion;
-bool virtualCriterionIs(int choice) { return abs(u_virtual_criterion - float(choice)) < 0.5; }
+// SL_VIRTUAL_CRITERION: the index of virtual.criterion's choice; SL_VIRTUAL_CRITERION_<CHOICE>
+// (the layout state's defines, from the parameter's declared choices) name them.
+bool virtualCriterionIs(int choice) { return choice == SL_VIRTUAL_CRITERION; }
 
 uniform usampler2D u_pageTable;  // the layout's page table (PageAllocator::table())
 
