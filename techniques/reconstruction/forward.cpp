@@ -4,9 +4,9 @@
 // forward mapping where one light texel spans more than a splat of eye pixels.
 //
 // As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
-// is the eye view's depth buffer; one pass draws a point per light texel (its world position
-// rebuilt from the depth it stores), sized forward.splat pixels, into the visibility target:
-// a compute scatter, one invocation per texel testing the pixels its splat covers.
+// is the eye view's depth buffer; one compute pass sends every light texel (its world position
+// rebuilt from the depth it stores) into the eye view and tests the pixels of its splat
+// (forward.splat pixels, or its footprint with forward.grow), writing the visibility target.
 // The renderer's visibility test (the backward nearest test) runs only for the `forward-holes`
 // view, which compares the two; the deferred shade pass lights the G-buffer with the splats.
 #include "reconstruction/reconstruction.h"
