@@ -56,6 +56,10 @@ class LayoutState : public PartState {
   // Adds passes after the shadow pass, reading this frame's map (ctx.shadowMap): the layout's
   // debug views of what was drawn.
   virtual void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) {}
+  // Adds passes after the shading, reading what the accumulation left (`shaded`: its visibility
+  // and the depth the camera's surfaces were drawn with): a reduction whose result a later frame
+  // uses can read this frame's depth instead of asking for a G-buffer.
+  virtual void addPassesAfterShading(FrameGraph& graph, const PartContext& ctx, const AccumulationOutput& shaded) {}
   // How the shadow pass draws each light view's layer (one entry per view, whole layers by
   // default). A layout that rasterizes layers piecewise (paged virtual maps) asks for tiles;
   // `keepsLayers`: the representation keeps a layer's content when bound for tiles

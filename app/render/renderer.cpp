@@ -434,6 +434,7 @@ std::string Renderer::addLightPasses(FrameGraph& g, Viewport& vp, const std::str
   // The accumulation adds the test, its own passes and the shading.
   const AccumulationContext ctx = accumulationContext(g, vp, tag, in, cameraMoved, prelude, sm, part.bindGBuffer);
   vp.output_ = vp.accumulation->addPasses(g, ctx);
+  vp.layout->addPassesAfterShading(g, part, vp.output_);
   return prelude;
 }
 

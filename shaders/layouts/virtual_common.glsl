@@ -6,9 +6,18 @@
 // of the fitted criterion's grid).
 #include "common/light_views.glsl"
 uniform float u_virtual_lod_bias;
-// SL_VIRTUAL_CRITERION: the index of virtual.criterion's choice; SL_VIRTUAL_CRITERION_<CHOICE>
-// (the layout state's defines, from the parameter's declared choices) name them.
-bool virtualCriterionIs(int choice) { return choice == SL_VIRTUAL_CRITERION; }
+// virtual.criterion's choice, a constant (the layout state's defines: SL_VIRTUAL_CRITERION_<CHOICE>
+// the index of each declared choice, SL_VIRTUAL_CRITERION_IS_<CHOICE> the chosen one's flag).
+#if defined(SL_VIRTUAL_CRITERION_IS_DISTANCE)
+const int kVirtualCriterion = SL_VIRTUAL_CRITERION_DISTANCE;
+#elif defined(SL_VIRTUAL_CRITERION_IS_EDGES)
+const int kVirtualCriterion = SL_VIRTUAL_CRITERION_EDGES;
+#elif defined(SL_VIRTUAL_CRITERION_IS_FITTED)
+const int kVirtualCriterion = SL_VIRTUAL_CRITERION_FITTED;
+#else
+const int kVirtualCriterion = SL_VIRTUAL_CRITERION_FOOTPRINT;
+#endif
+bool virtualCriterionIs(int choice) { return choice == kVirtualCriterion; }
 
 uniform usampler2D u_pageTable;  // the layout's page table (PageAllocator::table())
 

@@ -261,17 +261,19 @@ class VirtualState : public LayoutState {
     const size_t g = static_cast<size_t>(fitGridSide(pages_.pagesPerSide()));
     return 2u * g * g;
   }
-  // SL_VIRTUAL_CRITERION_<CHOICE> <index> for each declared choice of virtual.criterion, and
-  // SL_VIRTUAL_CRITERION the chosen one's: a constant, not a uniform, since llvmpipe runs every
-  // side of a uniform branch (the page marking took 41 ms at 1280x720 against 20 ms).
+  // SL_VIRTUAL_CRITERION_<CHOICE> <index> for each declared choice of virtual.criterion, and the
+  // chosen one's flag SL_VIRTUAL_CRITERION_IS_<CHOICE>: a constant, not a uniform, since llvmpipe
+  // runs every side of a uniform branch (the page marking took 41 ms at 1280x720 against 20 ms).
   std::string criterionDefines() const {
-    std::string out = "#define SL_VIRTUAL_CRITERION " + std::to_string(criterion_) + "\n";
+    std::string out;
     for (const ParamDecl& d : layout_.params())
       if (d.key == "virtual.criterion")
         for (size_t i = 0; i < d.choices.size(); ++i) {
-          std::string name = d.choices[i];
-          for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(c) : '_';
-          out += "#define SL_VIRTUAL_CRITERION_" + name + " " + std::to_string(i) + "\n";
+          out += "#define " + choiceDefineName(d.key, d.choices[i]) + " " + std::to_string(i) + "\n";
+          if (static_cast<int>(i) != criterion_) continue;
+          // The chosen one's flag, as enumDefines names it (the technique prelude has it too).
+          const std::string flag = choiceDefineName(d.key, "is." + d.choices[i]);
+          out += "#ifndef " + flag + "\n#define " + flag + "\n#endif\n";
         }
     return out;
   }

@@ -96,35 +96,60 @@ LightSpace SdsmState::compute(const LayoutInput& in) {
   return layout_.compute(withBounds);
 }
 
+// fit.sdsm_latency 0: the reduction runs before the shadow pass over the G-buffer, and this
+// frame's fit waits for it. 1-3: a later frame reads it, so it runs after the shading over the
+// depth the camera's surfaces were drawn with (addPassesAfterShading): no G-buffer for it,
+// which a forward-shaded frame would otherwise draw for this pass alone.
 std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   if (!ctx.params->b("fit.sdsm")) return {};
   if (!gpu_) gpu_ = std::make_unique<Gpu>();
+  slot_ = frames_ % kRing;
+  ++frames_;
+  if (ctx.params->i("fit.sdsm_latency") > 0) return {};
   const std::string res = "sdsm.bounds" + ctx.viewportTag;
-  const int slot = frames_ % kRing;
+  const int slot = slot_;
   graph.add({"sdsm.reduce" + ctx.viewportTag, {"gbuffer"}, {res}, [this, ctx, slot] {
-               ProgramSpec spec{"sdsm reduce", {{GL_COMPUTE_SHADER, "passes/depth_bounds.comp"}}, ""};
-               Program& p = ctx.shaders->get(spec);
-               if (!p.valid()) return;
-               const uint32_t init[8] = {~0u, 0u, ~0u, 0u, ~0u, 0u, ~0u, 0u};
-               glNamedBufferSubData(gpu_->buffers[slot], 0, sizeof(init), init);
-               p.use();
-               TextureUnits units;
-               ctx.bindGBuffer(p, units);
-               p.set("u_cameraView", ctx.view);
-               p.set("u_lightView", lightViewMatrix(ctx.shadowedLight(), 0.0f));
-               bindStorage("DepthBounds", gpu_->buffers[slot]);
-               // 16x16 invocations of 4x4 pixels each (passes/depth_bounds.comp).
-               glDispatchCompute((ctx.width + 63) / 64, (ctx.height + 63) / 64, 1);
-               glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-               if (ctx.params->i("fit.sdsm_latency") > 0) return;
+               reduce(ctx, slot, nullptr);
                // No latency: wait for the result and refit this frame's light space with it.
                latest_ = gpu_->read(slot);
                LayoutInput in = lastInput_;
                in.visible = latest_;
                ctx.replaceLightSpace(layout_.compute(in));
              }});
-  ++frames_;
   return {res};
+}
+
+void SdsmState::addPassesAfterShading(FrameGraph& graph, const PartContext& ctx, const AccumulationOutput& shaded) {
+  if (!gpu_ || !ctx.params->b("fit.sdsm") || ctx.params->i("fit.sdsm_latency") == 0 || !shaded.depthTex) return;
+  const std::string res = "sdsm.bounds" + ctx.viewportTag;
+  const int slot = slot_;
+  const Texture2D* depth = shaded.depthTex;
+  graph.add(
+      {"sdsm.reduce" + ctx.viewportTag, {shaded.depth}, {res}, [this, ctx, slot, depth] { reduce(ctx, slot, depth); }});
+  graph.requestSink(res);  // read by a later frame, not by a pass of this one
+}
+
+void SdsmState::reduce(const PartContext& ctx, int slot, const Texture2D* depth) {
+  ProgramSpec spec{
+      "sdsm reduce", {{GL_COMPUTE_SHADER, "passes/depth_bounds.comp"}}, depth ? "#define SL_BOUNDS_FROM_DEPTH\n" : ""};
+  Program& p = ctx.shaders->get(spec);
+  if (!p.valid()) return;
+  const uint32_t init[8] = {~0u, 0u, ~0u, 0u, ~0u, 0u, ~0u, 0u};
+  glNamedBufferSubData(gpu_->buffers[slot], 0, sizeof(init), init);
+  p.use();
+  TextureUnits units;
+  // From a depth target the points are in the camera's clip space (passes/depth_bounds.comp).
+  const glm::mat4 fromPoint = depth ? glm::inverse(ctx.proj * ctx.view) : glm::mat4(1.0f);
+  if (depth)
+    units.bind(p, "u_depth", depth->id());
+  else
+    ctx.bindGBuffer(p, units);
+  p.set("u_cameraView", ctx.view * fromPoint);
+  p.set("u_lightView", lightViewMatrix(ctx.shadowedLight(), 0.0f) * fromPoint);
+  bindStorage("DepthBounds", gpu_->buffers[slot]);
+  // 16x16 invocations of 4x4 pixels each (passes/depth_bounds.comp).
+  glDispatchCompute((ctx.width + 63) / 64, (ctx.height + 63) / 64, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 }  // namespace sl

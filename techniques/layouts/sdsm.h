@@ -26,13 +26,18 @@ class SdsmState : public LayoutState {
   void reset() override;
   LightSpace compute(const LayoutInput& in) override;
   std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) override;
+  void addPassesAfterShading(FrameGraph& graph, const PartContext& ctx, const AccumulationOutput& shaded) override;
 
  private:
   struct Gpu;
+  // Dispatches the reduction into ring slot `slot`: over the G-buffer's positions, or with
+  // `depth` over that depth target rebuilt to world positions with the camera of `ctx`.
+  void reduce(const PartContext& ctx, int slot, const Texture2D* depth);
   std::unique_ptr<Gpu> gpu_;
   VisibleBounds latest_;  // the newest bounds read back
   LayoutInput lastInput_;
   int frames_ = 0;  // reductions dispatched since the last reset
+  int slot_ = 0;    // this frame's ring slot
 };
 
 }  // namespace sl

@@ -83,5 +83,38 @@ TEST(SdsmGl, FocusedFitsTheVisiblePixelsLightSpaceBox) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// With a latency the reduction reads the shaded frame's depth after the shading, so a forward-
+// shaded frame draws no G-buffer for it; without one it must run before the shadow pass, over
+// the G-buffer. Both keep the bounds (the test above checks their values at every latency).
+TEST(SdsmGl, ALaterFramesFitReadsTheShadedDepthNotAGBuffer) {
+  test::GlHarness h;
+  Scene scene = loadScene("terrain", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  h.renderer.keepGBuffer = false;  // as the window and the bench draw: nothing reads it back
+  auto passes = [&] {
+    std::vector<std::string> n;
+    for (const auto& p : h.renderer.stats().passes) n.push_back(p.name);
+    return n;
+  };
+  auto has = [](const std::vector<std::string>& n, const std::string& name) {
+    return std::find(n.begin(), n.end(), name) != n.end();
+  };
+  const Camera& cam = scene.cameras.front();
+  Viewport later(makeTechnique("sdsm", {"shadowmap.size=256", "fit.sdsm_latency=1"}));
+  Viewport plain(makeTechnique("cascaded", {"shadowmap.size=256"}));
+  for (int f = 0; f < 2; ++f) h.renderer.render(frame(cam, f == 0), {&later});
+  const std::vector<std::string> n = passes();
+  EXPECT_FALSE(has(n, "gbuffer"));
+  EXPECT_TRUE(has(n, "sdsm.reduce[0]"));
+  EXPECT_LT(std::find(n.begin(), n.end(), "shade[0]"), std::find(n.begin(), n.end(), "sdsm.reduce[0]"));
+  h.renderer.render(frame(cam, true), {&plain});
+  EXPECT_GT(later.lightSpace.views.front().splitNear, plain.lightSpace.views.front().splitNear * 5.0f)
+      << "the bounds of the first frame arrived in the second";
+  Viewport now(makeTechnique("sdsm", {"shadowmap.size=256", "fit.sdsm_latency=0"}));
+  h.renderer.render(frame(cam, true), {&now});
+  EXPECT_TRUE(has(passes(), "gbuffer"));
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 }  // namespace
 }  // namespace sl
