@@ -6,101 +6,36 @@
 // rectangle of pixels its splat covers there (pixel centres inside it) tested one by one. A
 // compute scatter rather than GL points: no rasterizer setup of 4 M point primitives a frame,
 // and a splat whose centre is off screen still lights the pixels it covers on screen. Every
-// write is the same "lit", so invocations need no atomics.
+// write is the same "lit", so invocations need no atomics. Splats of more than kInlinePixels
+// go to a list the rasterizer draws (accumulation/forward_large.glsl).
 //
-// The splat is as large as the texel's footprint in the eye view (forward.grow, beyond Zhang's
-// fixed square of forward.splat pixels): the box around where its neighbouring texels' samples
-// land, so a texel stretched over many pixels still covers them; at least one pixel, at most
-// kMaxSplat a side. The per-pixel test keeps the light inside the
-// texel's own light-space square, so a larger splat cannot spread light across an edge.
-// Needs the technique prelude with SL_DEFERRED (the G-buffer's facet) and
-// SL_REPRESENTATION_IN_COMPUTE (the representation: u_shadowMap, its filter radius in the bias).
-#include "common/light.glsl"
-#include "common/bias.glsl"
-#include "common/facet.glsl"
-#include "common/light_ray.glsl"
+// Splat sizes, the test and the shared declarations: accumulation/forward_splat.glsl.
+#include "accumulation/forward_splat.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rg16f, binding = 0) uniform writeonly image2D u_visibilityOut;
-uniform sampler2D u_gPosition;
-uniform sampler2D u_gNormal;
-uniform mat4 u_eyeViewProj;
-uniform int u_mapSize;
-uniform vec2 u_screenSize;
-uniform float u_forward_splat;
-uniform float u_forward_footprint;
-uniform float u_forward_grow;  // off: Zhang's fixed forward.splat
-
-const float kMaxSplat = 255.0;  // pixels: beyond it a texel spans so much of the view that holes are the method's
-
-// The world position of the sample of texel t (texel units) with stored depth d, in view 0.
-vec3 sampleWorld(vec2 texel, float d) { return lightRayPoint(texel / float(u_mapSize), d, 0); }
-
-// The window offset, in pixels, from the sample to where a neighbour one texel along `step`
-// lands (its own stored depth, or this one's where it is empty); behind the eye: as far as
-// allowed.
-vec2 offsetTo(ivec2 t, ivec2 step, float d, vec2 here) {
-  ivec2 n = clamp(t + step, ivec2(0), ivec2(u_mapSize - 1));
-  float dn = texelFetch(u_shadowMap, ivec3(n, 0), 0).r;
-  vec4 c = u_eyeViewProj * vec4(sampleWorld(vec2(t + step) + 0.5, dn < 1.0 ? dn : d), 1.0);
-  if (c.w <= 1e-6) return vec2(kMaxSplat);
-  return c.xy / c.w * 0.5 * u_screenSize - here;
-}
-
-// The splat's half sides in pixels for the sample of texel t at window position `window`.
-// Zhang's fixed square (forward.splat), or with forward.grow the bounding box of the texel's
-// footprint: the pixels whose surface falls within forward.footprint / 2 texels of the sample
-// lie in the parallelogram spanned by that fraction of the steps to the neighbours' landings,
-// whose half-extent along x is the sum of the two steps' |x| (a square of the longest step
-// misses its corners where the texel grid runs diagonally across the screen). At least half a
-// pixel, at most kMaxSplat / 2.
-vec2 splatHalfSides(ivec2 t, float d, vec2 window) {
-  if (u_forward_grow < 0.5) return vec2(0.5 * u_forward_splat);
-  vec2 here = window - 0.5 * u_screenSize;  // the centred window position offsetTo measures from
-  vec2 alongU = max(abs(offsetTo(t, ivec2(1, 0), d, here)), abs(offsetTo(t, ivec2(-1, 0), d, here)));
-  vec2 alongV = max(abs(offsetTo(t, ivec2(0, 1), d, here)), abs(offsetTo(t, ivec2(0, -1), d, here)));
-  vec2 half_ = 0.5 * (alongU + alongV) * u_forward_footprint + 0.5;
-  return clamp(mix(half_, vec2(0.5 * kMaxSplat), isnan(half_)), vec2(0.5), vec2(0.5 * kMaxSplat));
-}
-
-// Zhang compares the sample with the eye's depth buffer; here the pixel's surface point
-// (G-buffer) is taken to the light view, where "the same surface" is exact on slopes too: the
-// point falls in the sample's texel (forward.footprint texels) and is not behind the stored
-// depth beyond the technique's bias, the test a backward map makes. Facing away: unlit.
-bool lightsPixel(ivec2 pixel, vec3 sampleAt, vec2 texel) {
-  vec4 P = texelFetch(u_gPosition, pixel, 0);
-  if (P.w < 0.5) return false;
-  vec3 N = normalize(texelFetch(u_gNormal, pixel, 0).xyz);
-  vec3 F = gbufferFacetNormal(pixel, N);
-  vec3 L = directionToLight(P.xyz);
-  float cosTheta = dot(N, L);
-  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P.xyz) == 0.0) return false;
-  ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P.xyz, N, cosTheta, 0), 0);
-  if (sc.view < 0) return false;
-  vec2 texelPos = sc.uv * float(u_mapSize);
-  if (any(greaterThan(abs(texelPos - texel), vec2(0.5 * u_forward_footprint)))) return false;
-  return sc.depth - biasDepth(P.xyz, cosTheta, 0) <= layoutDepthIn(sampleAt, 0);
-}
 
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(t, ivec2(u_mapSize)))) return;
   float d = texelFetch(u_shadowMap, ivec3(t, 0), 0).r;
   if (!(d < 1.0)) return;  // empty texel: nothing was rasterized there, nothing to send
-  vec2 texel = vec2(t) + 0.5;
-  vec3 sampleAt = sampleWorld(texel, d);
-  vec4 clip = u_eyeViewProj * vec4(sampleAt, 1.0);
-  // The splat is clipped to the screen, not culled with its centre as GL culls a point: a
-  // texel stretched over hundreds of pixels can have its sample off screen while its splat
-  // still covers the view (beyond Zhang; low-sun 12.7 % -> 3.9 % wrong at 320x180).
-  if (!(clip.w > 1e-6)) return;  // behind the eye: it lands nowhere
-  vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * u_screenSize;
-  if (any(isnan(window)) || any(isinf(window))) return;
+  vec3 sampleAt;
+  vec2 window;
+  if (!sampleLands(t, d, sampleAt, window)) return;
   vec2 half_ = splatHalfSides(t, d, window);
   // Pixels whose centres lie in [window - half, window + half), the splat's rectangle, on screen
   // (clamped as floats: a sample far off screen must not overflow the integer conversion).
   ivec2 lo = ivec2(clamp(ceil(window - half_ - 0.5), vec2(0.0), u_screenSize));
   ivec2 hi = ivec2(clamp(ceil(window + half_ - 0.5) - 1.0, vec2(-1.0), u_screenSize - 1.0));
+  if (any(greaterThan(lo, hi))) return;
+  ivec2 size = hi - lo + 1;
+  vec2 texel = vec2(t) + 0.5;
+  if (size.x * size.y > kInlinePixels) {
+    uint i = atomicAdd(forwardLargeCount, 1u);
+    if (i < uint(u_largeCapacity)) {
+      forwardLarge[i] = ForwardLarge(uvec4(packPair(t), packPair(lo), packPair(hi), 0u), vec4(sampleAt, 1.0));
+      return;
+    }
+  }
   for (int y = lo.y; y <= hi.y; ++y)
-    for (int x = lo.x; x <= hi.x; ++x)
-      if (lightsPixel(ivec2(x, y), sampleAt, texel)) imageStore(u_visibilityOut, ivec2(x, y), vec4(1.0, 1.0, 0.0, 0.0));
+    for (int x = lo.x; x <= hi.x; ++x) lightIfSameSurface(ivec2(x, y), sampleAt, texel);
 }

@@ -12,6 +12,7 @@
 #include "reconstruction/reconstruction.h"
 
 #include "gl/gl_util.h"
+#include "gl/storage_blocks.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "part/frame_graph.h"
@@ -27,6 +28,7 @@ class ForwardState : public AccumulationState {
  public:
   ~ForwardState() override {
     if (vao_) glDeleteVertexArrays(1, &vao_);
+    if (large_) glDeleteBuffers(1, &large_);
   }
   std::vector<std::string> views() const override { return {"forward-holes"}; }
   AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) override;
@@ -34,31 +36,82 @@ class ForwardState : public AccumulationState {
 
  private:
   void splat(const AccumulationContext& c);
+  void ensureLargeSplats();
+  void drawLargeSplats(const AccumulationContext& c, Program& quads);
+  // Large splats (accumulation/forward_large.glsl: a count and the draw's command in 32 bytes,
+  // then 32 bytes a splat): 8 MB; a splat that does not fit is tested in the texel pass.
+  static constexpr int kLargeCapacity = 1 << 18;
   GLuint vao_ = 0;
+  GLuint large_ = 0;
   long long points_ = 0;
 };
 
+void ForwardState::ensureLargeSplats() {
+  if (large_) return;
+  glCreateBuffers(1, &large_);
+  glNamedBufferData(large_, 32 + GLsizeiptr(kLargeCapacity) * 32, nullptr, GL_DYNAMIC_DRAW);
+  label(GL_BUFFER, large_, "forward large splats");
+}
+
+// Small splats are tested in the texel pass; large ones (more than kInlinePixels pixels) are
+// appended and drawn as rectangles, one instance each, sized on the GPU: no read-back.
 void ForwardState::splat(const AccumulationContext& c) {
-  ProgramSpec spec{"forward splat",
-                   {{GL_COMPUTE_SHADER, "accumulation/forward_splat.comp"}},
-                   "#define SL_DEFERRED\n#define SL_REPRESENTATION_IN_COMPUTE\n" + c.techniquePrelude};
-  Program& p = c.shaders->get(spec);
+  const std::string prelude = "#define SL_DEFERRED\n#define SL_REPRESENTATION_IN_COMPUTE\n" + c.techniquePrelude;
+  Program& texels =
+      c.shaders->get({"forward splat", {{GL_COMPUTE_SHADER, "accumulation/forward_splat.comp"}}, prelude});
+  Program& args =
+      c.shaders->get({"forward splat args", {{GL_COMPUTE_SHADER, "accumulation/forward_splat_args.comp"}}, ""});
+  Program& quads = c.shaders->get({"forward splat quads",
+                                   {{GL_VERTEX_SHADER, "accumulation/forward_splat_quad.vert"},
+                                    {GL_FRAGMENT_SHADER, "accumulation/forward_splat_quad.frag"}},
+                                   prelude});
   const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};  // no sample reached it: unlit
   glClearTexImage(c.finalVisibilityTex->id(), 0, GL_RG, GL_FLOAT, dark);
-  if (!p.valid()) return;
-  p.use();
-  TextureUnits units;
-  c.bindTechniqueInputs(p, units);  // depth map, light views, G-buffer, parameters
-  const int size = static_cast<int>(c.params->i("shadowmap.size"));
-  p.set("u_eyeViewProj", c.proj * c.view);
-  p.set("u_mapSize", size);
-  p.set("u_screenSize", glm::vec2(c.width, c.height));
+  if (!texels.valid() || !args.valid() || !quads.valid()) return;
+  ensureLargeSplats();
+  const GLuint zero = 0;
+  glNamedBufferSubData(large_, 0, sizeof(zero), &zero);
+  bindStorage("ForwardLargeSplats", large_);
   glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-  p.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
+  const int size = static_cast<int>(c.params->i("shadowmap.size"));
+  texels.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(texels, units);  // depth map, light views, G-buffer, parameters
+  texels.set("u_eyeViewProj", c.proj * c.view);
+  texels.set("u_mapSize", size);
+  texels.set("u_screenSize", glm::vec2(c.width, c.height));
+  texels.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
+  texels.set("u_largeCapacity", kLargeCapacity);
   const GLuint groups = static_cast<GLuint>((size + 7) / 8);
   glDispatchCompute(groups, groups, 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  args.use();
+  args.set("u_largeCapacity", kLargeCapacity);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  drawLargeSplats(c, quads);
   points_ = static_cast<long long>(size) * size;
+}
+
+void ForwardState::drawLargeSplats(const AccumulationContext& c, Program& quads) {
+  Framebuffer fbo("forward large splats");
+  fbo.attach({c.finalVisibilityTex}, nullptr);
+  fbo.bind();
+  glViewport(0, 0, c.width, c.height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  quads.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(quads, units);
+  quads.set("u_mapSize", static_cast<int>(c.params->i("shadowmap.size")));
+  quads.set("u_screenSize", glm::vec2(c.width, c.height));
+  quads.set("u_largeCapacity", kLargeCapacity);
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, large_);
+  glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(4));  // forwardLargeDraw, after the count
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  glBindVertexArray(0);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 AccumulationOutput ForwardState::addPasses(FrameGraph& graph, const AccumulationContext& ctx) {
