@@ -120,12 +120,15 @@ std::vector<std::string> SdsmState::addPasses(FrameGraph& graph, const PartConte
 }
 
 void SdsmState::addPassesAfterShading(FrameGraph& graph, const PartContext& ctx, const AccumulationOutput& shaded) {
-  if (!gpu_ || !ctx.params->b("fit.sdsm") || ctx.params->i("fit.sdsm_latency") == 0 || !shaded.depthTex) return;
+  if (!gpu_ || !ctx.params->b("fit.sdsm") || ctx.params->i("fit.sdsm_latency") == 0) return;
   const std::string res = "sdsm.bounds" + ctx.viewportTag;
   const int slot = slot_;
+  // An accumulation that left no depth target: the G-buffer's positions, so the slot is filled.
   const Texture2D* depth = shaded.depthTex;
-  graph.add(
-      {"sdsm.reduce" + ctx.viewportTag, {shaded.depth}, {res}, [this, ctx, slot, depth] { reduce(ctx, slot, depth); }});
+  graph.add({"sdsm.reduce" + ctx.viewportTag,
+             {depth ? shaded.depth : std::string("gbuffer")},
+             {res},
+             [this, ctx, slot, depth] { reduce(ctx, slot, depth); }});
   graph.requestSink(res);  // read by a later frame, not by a pass of this one
 }
 

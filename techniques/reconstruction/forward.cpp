@@ -6,7 +6,8 @@
 // As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
 // is the eye view's depth buffer; one compute pass sends every light texel (its world position
 // rebuilt from the depth it stores) into the eye view and tests the pixels of its splat
-// (forward.splat pixels, or its footprint with forward.grow), writing the visibility target.
+// (forward.splat pixels, or its footprint with forward.grow), writing the visibility target;
+// splats of many pixels are drawn as rectangles instead, by the rasterizer.
 // The renderer's visibility test (the backward nearest test) runs only for the `forward-holes`
 // view, which compares the two; the deferred shade pass lights the G-buffer with the splats.
 #include "reconstruction/reconstruction.h"
@@ -105,7 +106,6 @@ void ForwardState::drawLargeSplats(const AccumulationContext& c, Program& quads)
   c.bindTechniqueInputs(quads, units);
   quads.set("u_mapSize", static_cast<int>(c.params->i("shadowmap.size")));
   quads.set("u_screenSize", glm::vec2(c.width, c.height));
-  quads.set("u_largeCapacity", kLargeCapacity);
   glBindVertexArray(vao_);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, large_);
   glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(4));  // forwardLargeDraw, after the count
