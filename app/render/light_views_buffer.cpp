@@ -14,9 +14,10 @@ namespace {
 struct LightViewsBlock {
   float view[kMaxLightViews][16];
   float viewProj[kMaxLightViews][16];
-  float range[kMaxLightViews][4];  // near, far, texel world size, perspective (0/1)
-  float split[kMaxLightViews][4];  // camera view depth: from, to, blend band, unused
-  float info[4];                   // views, texels per side, unused, unused
+  float range[kMaxLightViews][4];   // near, far, texel world size, perspective (0/1)
+  float split[kMaxLightViews][4];   // camera view depth: from, to, blend band, LogPSM delta
+  float window[kMaxLightViews][4];  // a paraboloid's fitted window: centre xy, zoom, unused
+  float info[4];                    // views, texels per side, unused, unused
 };
 
 }  // namespace
@@ -40,6 +41,8 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     const float split[4] = {v.splitNear, v.splitFar, v.blendBand, v.logDelta};
     std::memcpy(block.range[i], range, sizeof(range));
     std::memcpy(block.split[i], split, sizeof(split));
+    const float window[4] = {v.paraboloidWindow.x, v.paraboloidWindow.y, v.paraboloidWindow.z, 0.0f};
+    std::memcpy(block.window[i], window, sizeof(window));
   }
   block.info[0] = static_cast<float>(n);
   block.info[1] = static_cast<float>(ls.size);

@@ -2,7 +2,9 @@
 // Seidel 2002): two views from the light, one per hemisphere, each a layer. A direction d in a
 // view's frame (the hemisphere's axis is the view's -z) maps to d.xy / (1 - d.z), the paraboloid
 // (stereographic) image: the hemisphere fills the unit disk, scaled by 1 / kParaboloidWindow so
-// that filter taps just past the rim read drawn texels. Stored depth is the radial distance from
+// that filter taps just past the rim read drawn texels, then cropped to the view's fitted window
+// (lightViewWindow: the part of the disk where the camera sees receivers, zoomed to fill the
+// map; the whole disk when paraboloid.fit is off). Stored depth is the radial distance from
 // the light over [near, far]. Casters are tessellated (passes/shadow_paraboloid.tesc) because the
 // map bends straight edges into circle arcs. Under a directional or spot light the layout is
 // one focused matrix view (lightViewInfo.x == 1) and this module reads it as single_matrix.glsl does.
@@ -17,6 +19,9 @@ const float kParaboloidMargin = 0.1;   // casters drawn down to this (cos) behin
 
 bool paraboloidViews() { return lightViewInfo.x > 1.5; }
 
+// How many times the view's fitted window magnifies the whole disk (1: the whole disk).
+float paraboloidZoom(int view) { return lightViewWindow[view].z; }
+
 vec4 layoutClipIn(vec3 worldPos, int view) {
   if (!paraboloidViews()) return lightViewProjMatrix[view] * vec4(worldPos, 1.0);
   vec3 v = (lightViewMatrix[view] * vec4(worldPos, 1.0)).xyz;
@@ -26,7 +31,8 @@ vec4 layoutClipIn(vec3 worldPos, int view) {
   vec3 d = v / r;
   // 1 - d.z is 0 only at the opposite pole, whose image is at infinity; clamped there (such a
   // point is behind the hemisphere and culled, passes/shadow*.frag).
-  vec2 uv = d.xy / max(1.0 - d.z, 1e-4) / kParaboloidWindow;
+  vec2 disk = d.xy / max(1.0 - d.z, 1e-4) / kParaboloidWindow;
+  vec2 uv = (disk - lightViewWindow[view].xy) * paraboloidZoom(view);
   float depth = (r - lightViewRange[view].x) / (lightViewRange[view].y - lightViewRange[view].x);
   return vec4(uv, depth * 2.0 - 1.0, 1.0);
 }
@@ -65,7 +71,7 @@ ShadowCoord layoutShadowCoord(vec3 worldPos) {
 
 // World size of one texel at this point, across the ray from the light. A direction theta off the
 // axis lands at radius tan(theta / 2) of the disk, which turns by 1 / (1 + cos theta) per
-// radian; a texel is 2 kParaboloidWindow / size of that radius. (Steps along the view's own x and
+// radian; a texel is 2 kParaboloidWindow / size of that radius, over the window's zoom. (Steps along the view's own x and
 // y, as single_matrix.glsl measures perspective maps, both run along the ray for a receiver near
 // the rim: the size came out tens of times too large and the slope bias lit the shadows there.)
 float layoutTexelWorldSize(vec3 worldPos, int view) {
@@ -80,7 +86,7 @@ float layoutTexelWorldSize(vec3 worldPos, int view) {
   }
   vec3 v = (lightViewMatrix[view] * vec4(worldPos, 1.0)).xyz;
   float r = length(v);
-  float size = r * 2.0 * kParaboloidWindow / u_shadowMapSize * (1.0 - v.z / max(r, 1e-20));
+  float size = r * 2.0 * kParaboloidWindow / (u_shadowMapSize * paraboloidZoom(view)) * (1.0 - v.z / max(r, 1e-20));
   return isnan(size) || isinf(size) || !(size > 0.0) ? unitTexel : size;
 }
 

@@ -4,7 +4,8 @@
 // a great circle, whose image is a circle of radius at least 1 (it meets the rim, the unit
 // circle, at two opposite points), 1 / kParaboloidWindow in the map's [-1, 1] units. A piece of
 // length l of a circle of curvature k errs by k l^2 / 8 at most, so a line of image length L
-// needs L sqrt(k / (8 e)) pieces for an error e. The bound holds for every line, those inside the
+// needs L sqrt(k / (8 e)) pieces for an error e. A fitted window magnifies the disk by its zoom:
+// image lengths grow by it and curvatures shrink by it (layouts/dual_paraboloid.glsl). The bound holds for every line, those inside the
 // patch too (whose images the inner level splits); a tighter per-edge one (k = |n.z| for the
 // plane's normal n) does not hold for the lines inside, and with a rigorous bound for those it
 // saved no time on street (docs: techniques/point/README.md).
@@ -23,7 +24,7 @@ float edgeLevel(vec3 a, vec3 b) {
   vec2 ia = image(a), ib = image(b), im = image(0.5 * (a + b));
   float len = length(im - ia) + length(ib - im);
   float errorNdc = 2.0 * u_paraboloid_max_error / u_shadowMapSize;
-  float pieces = len * sqrt(kParaboloidWindow / (8.0 * errorNdc));
+  float pieces = len * sqrt(kParaboloidWindow / (paraboloidZoom(u_shadowView) * 8.0 * errorNdc));
   return isnan(pieces) ? 64.0 : clamp(ceil(pieces), 1.0, 64.0);
 }
 

@@ -5,9 +5,81 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace sl {
+
+namespace {
+
+constexpr float kMaxZoom = 64.0f;
+
+// Whether the directions lie within one closed hemisphere: the drawn one's (their view frame's
+// -z; the receivers were clipped to it) or a cap of less than 90 degrees around their mean.
+// Then what lies between them is bounded by great-circle arcs between pairs of them.
+bool withinOneHemisphere(const std::vector<glm::vec3>& dirs, const glm::vec3& mean) {
+  bool drawnSide = true;
+  float minCos = 1.0f;
+  for (const glm::vec3& d : dirs) {
+    drawnSide = drawnSide && d.z <= 1e-5f;
+    minCos = std::min(minCos, glm::dot(d, mean));
+  }
+  return drawnSide || minCos > std::cos(glm::radians(89.0f));
+}
+
+// A direction's place on the whole disk, in map units (layouts/dual_paraboloid.glsl).
+glm::vec2 diskImage(const glm::vec3& d) { return glm::vec2(d) / std::max(1.0f - d.z, 1e-4f) / kParaboloidWindow; }
+
+// The box (min, max corners, map units) around the image of every direction between `dirs`:
+// what lies between them on the sphere is bounded by great-circle arcs between pairs of them, so
+// the box around the images of every pair's arc (sampled finely: an arc's image is a circle arc)
+// holds it. A handful of receivers' corners make a few hundred short arcs.
+void arcsImageBox(const std::vector<glm::vec3>& dirs, glm::vec2& lo, glm::vec2& hi) {
+  constexpr int kPieces = 32;
+  lo = glm::vec2(1e30f);
+  hi = glm::vec2(-1e30f);
+  for (size_t i = 0; i < dirs.size(); ++i)
+    for (size_t j = i; j < dirs.size(); ++j)
+      for (int k = 0; k <= (i == j ? 0 : kPieces); ++k) {
+        const glm::vec3 m = glm::mix(dirs[i], dirs[j], float(k) / kPieces);
+        if (!(glm::length(m) > 1e-3f)) {  // opposite directions: no one arc between them
+          lo = glm::vec2(-1.0f);
+          hi = glm::vec2(1.0f);
+          return;
+        }
+        lo = glm::min(lo, diskImage(glm::normalize(m)));
+        hi = glm::max(hi, diskImage(glm::normalize(m)));
+      }
+  lo = glm::max(lo, glm::vec2(-1.0f));
+  hi = glm::min(hi, glm::vec2(1.0f));
+}
+
+}  // namespace
+
+glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap) {
+  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+  glm::vec3 sum(0.0f);
+  for (const glm::vec3& d : dirs) sum += d;
+  if (dirs.empty() || !(glm::length(sum) > 1e-6f)) return whole;
+  if (!withinOneHemisphere(dirs, glm::normalize(sum))) return whole;
+  glm::vec2 lo, hi;
+  arcsImageBox(dirs, lo, hi);
+  const float side = std::max(hi.x - lo.x, hi.y - lo.y);
+  // 5 % on each side, then 4 texels of the map this zoom makes: side' = 1.1 side + 8 texels of
+  // 2 / (zoom size) with zoom = 2 / side'.
+  const float texelsLeft = 1.0f - 8.0f / float(std::max(size, 16));
+  float zoom = 2.0f * texelsLeft / (1.1f * side);
+  if (!(zoom > 1.0f)) return whole;  // NaN too
+  zoom = std::min(zoom, kMaxZoom);
+  glm::vec2 centre = 0.5f * (lo + hi);
+  if (snap) {
+    zoom = std::max(1.0f, std::exp2(std::floor(std::log2(zoom) * 4.0f) / 4.0f));
+    const float texel = 2.0f / (zoom * float(size));
+    centre = glm::round(centre / texel) * texel;
+  }
+  return {centre, zoom};
+}
 
 FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
   const Bounds bounds = in.scene->boundsAt(in.time);
@@ -15,7 +87,11 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
   const float far = pointLightFar(light, bounds);
   const float near = far * 1e-4f;  // as the cube's: linear depth, casters touching the light kept
   const std::vector<glm::vec3> box = boxCorners(bounds);
-  const std::vector<glm::vec4> seen = frustumPlanes(in.cameraProj * in.cameraView);
+  std::vector<glm::vec4> seen = frustumPlanes(in.cameraProj * in.cameraView);
+  // Receivers beyond the light's reach are not lit: the fit need not hold them.
+  const std::vector<glm::vec4> reach = boxPlanes({light.position - glm::vec3(far), light.position + glm::vec3(far)});
+  seen.insert(seen.end(), reach.begin(), reach.end());
+  const bool fit = in.params->b("paraboloid.fit"), snap = in.params->b("layout.snap");
   FaceViews out;
   out.space.views.clear();
   out.space.size = size;
@@ -40,7 +116,23 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
     // behind it: a hemisphere is needed when a visible receiver lies on its side.
     std::vector<glm::vec4> planes = seen;
     planes.push_back(glm::vec4(axes[h], -glm::dot(axes[h], light.position)));
-    out.needed.push_back(!clipCornersToPlanes(box, planes).empty());
+    const std::vector<glm::vec3> receivers = clipCornersToPlanes(box, planes);
+    out.needed.push_back(!receivers.empty());
+    if (fit && !receivers.empty()) {
+      std::vector<glm::vec3> dirs;
+      const glm::mat3 toView(v.view);
+      for (const glm::vec3& p : receivers) {
+        const glm::vec3 d = toView * (p - light.position);
+        // A receiver at the light: it sees every direction, so the window is the whole disk.
+        if (!(glm::length(d) > 1e-6f * far)) {
+          dirs.clear();
+          break;
+        }
+        dirs.push_back(glm::normalize(d));
+      }
+      out.space.views.back().paraboloidWindow = fitParaboloidWindow(dirs, size, snap);
+      out.space.views.back().texelWorldSize /= out.space.views.back().paraboloidWindow.z;
+    }
   }
   return out;
 }
@@ -60,7 +152,13 @@ std::unique_ptr<Layout> makeDualParaboloidLayout() {
                    .unit = "texels",
                    .help = "largest distance between a tessellated caster edge and its true (circle-arc) image in a "
                            "paraboloid map; smaller = more tessellation",
-                   .logScale = true}},
+                   .logScale = true},
+                  {.key = "paraboloid.fit",
+                   .type = ParamType::Bool,
+                   .defaultValue = 1,
+                   .help = "fit each hemisphere's map to the directions of the receivers the camera sees in it (the "
+                           "survey's focusing, beyond Brabec et al.): the part of the disk they fill is zoomed to the "
+                           "whole map; off: the whole hemisphere"}},
        .views = paraboloidViews});
 }
 

@@ -10,7 +10,21 @@ namespace sl {
 
 // The hemispheres' views (view 0 looks straight down, a lamp's ground in one disk; view 1 up;
 // the seam, the equator, is level with the light) and which hold a visible receiver.
+// With paraboloid.fit on, each drawn hemisphere's window is fitted to the directions of its visible
+// receivers (fitParaboloidWindow); off, or where they cannot be bounded, the whole disk.
 FaceViews paraboloidViews(const Light& light, const LayoutInput& in);
+
+// The window (LightView::paraboloidWindow: centre, zoom) of a size-texel paraboloid map that holds
+// the images of the directions `dirs` (unit vectors in the view's frame, the hemisphere's axis -z)
+// with a margin of 5 % and 4 texels on each side, for filter taps and the snapping. Beyond the
+// paper (Brabec et al. draw the whole hemisphere): the survey's focusing applied to a paraboloid.
+// Everything between the directions on the sphere is bounded by great-circle arcs between pairs
+// of them, whose images are circle arcs (the map is the stereographic projection of the
+// directions): the window is the square around those images, cut to the disk's, when the
+// directions lie in one closed hemisphere (the drawn one, or within 89 degrees of their mean);
+// (0, 0, 1), the whole disk, when there are none, they do not, or two are opposite. snap: the zoom on a ladder of
+// quarter octaves and the centre on whole texels, so the texel grid stands still while the camera moves within a step.
+glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap);
 
 std::unique_ptr<Layout> makeDualParaboloidLayout();
 

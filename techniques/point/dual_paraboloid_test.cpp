@@ -29,7 +29,7 @@ LayoutInput paraboloidInput(const Scene& scene, const Camera& cam, const ParamSe
 // azimuths, for both hemispheres.
 TEST(DualParaboloid, MapsDirectionsToTheStereographicDisk) {
   const Scene scene = loadScene("street", test::kAssets);
-  const ParamSet params = makeTechnique("dual-paraboloid", {}).params;
+  const ParamSet params = makeTechnique("dual-paraboloid", {"paraboloid.fit=off"}).params;
   const FaceViews v = paraboloidViews(scene.light, paraboloidInput(scene, scene.cameras.front(), params));
   ASSERT_EQ(v.space.views.size(), 2u);
   const glm::vec3 axes[2] = {{0, -1, 0}, {0, 1, 0}};
@@ -74,6 +74,111 @@ TEST(DualParaboloid, DrawsOnlyTheHemispheresAViewNeeds) {
         if (glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max)))
           ASSERT_LT(p.y, scene.light.position.y) << cam.name << ": a visible point above the lamp, upper undrawn";
       }
+    }
+  }
+}
+
+// Directions within `spread` radians of `axis`, from a fixed sequence.
+std::vector<glm::vec3> directionsAround(const glm::vec3& axis, float spread, int count, int seed) {
+  const glm::vec3 t1 =
+      glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+  const glm::vec3 t2 = glm::cross(axis, t1);
+  std::vector<glm::vec3> out;
+  for (int i = 0; i < count; ++i) {
+    const float a = 6.2831853f * std::fmod((seed + i) * 0.618034f, 1.0f);
+    const float r = spread * std::sqrt(std::fmod((seed + i) * 0.754878f, 1.0f));
+    out.push_back(glm::normalize(std::cos(r) * axis + std::sin(r) * (std::cos(a) * t1 + std::sin(a) * t2)));
+  }
+  return out;
+}
+
+// The fitted window holds every direction between its inputs (normalized mixes of them, which lie
+// on the sphere between them) at least 3 texels inside the map, zooms in, and with snapping keeps
+// its zoom on the quarter-octave ladder and its centre on whole texels.
+TEST(DualParaboloid, FittedWindowHoldsEveryDirectionBetweenItsInputs) {
+  const int size = 512;
+  for (int seed = 0; seed < 40; ++seed) {
+    const float tilt = glm::radians(2.0f * seed), azimuth = 0.7f * seed;  // up to 78 degrees off the axis
+    const glm::vec3 axis(std::sin(tilt) * std::cos(azimuth), std::sin(tilt) * std::sin(azimuth), -std::cos(tilt));
+    const float spread = glm::radians(4.0f + 0.4f * seed);
+    const std::vector<glm::vec3> dirs = directionsAround(axis, spread, 3 + seed % 6, seed);
+    for (bool snap : {false, true}) {
+      const glm::vec3 w = fitParaboloidWindow(dirs, size, snap);
+      ASSERT_GT(w.z, 1.0f) << "seed " << seed << ": directions within " << glm::degrees(spread) << " degrees";
+      LightView view;
+      view.projection = LightView::Projection::Paraboloid;
+      view.paraboloidWindow = w;
+      const float inside = 1.0f - 3.0f * 2.0f / size;
+      // The inputs, the arcs between pairs of them (the border of what lies between) and mixes
+      // of all of them (the inside).
+      std::vector<glm::vec3> between;
+      for (size_t i = 0; i < dirs.size(); ++i)
+        for (size_t j = i; j < dirs.size(); ++j)
+          for (int k = 0; k <= 16; ++k) between.push_back(glm::mix(dirs[i], dirs[j], k / 16.0f));
+      for (int k = 0; k < 300; ++k) {
+        glm::vec3 d(0.0f);
+        for (size_t i = 0; i < dirs.size(); ++i) d += std::fmod((k + 1) * (i + 2) * 0.5698403f, 1.0f) * dirs[i];
+        between.push_back(d);
+      }
+      float largest = 0.0f;
+      for (const glm::vec3& d : between) {
+        const glm::vec4 c = lightViewClip(view, glm::normalize(d));
+        largest = std::max({largest, std::abs(c.x), std::abs(c.y)});
+      }
+      EXPECT_LE(largest, inside) << "seed " << seed;
+      // Fitted, not merely inside: what lies between reaches most of the way to the border
+      // (the margins leave 1 / 1.1 less 4 texels; the snapped zoom steps down by up to 2^(1/4)),
+      // unless the zoom stopped at its largest.
+      if (w.z < 64.0f) EXPECT_GT(largest, snap ? 0.72f : 0.85f) << "seed " << seed;
+      if (snap) {
+        const float quarterOctaves = std::log2(w.z) * 4.0f;
+        EXPECT_NEAR(quarterOctaves, std::round(quarterOctaves), 1e-3f) << "seed " << seed;
+        const float texel = 2.0f / (w.z * size);
+        EXPECT_NEAR(w.x / texel, std::round(w.x / texel), 1e-2f) << "seed " << seed;
+        EXPECT_NEAR(w.y / texel, std::round(w.y / texel), 1e-2f) << "seed " << seed;
+      }
+    }
+  }
+}
+
+// No directions, directions all around (the light inside what is seen), or two opposite ones:
+// the whole disk.
+TEST(DualParaboloid, AWindowThatCannotBeBoundedIsTheWholeDisk) {
+  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+  EXPECT_EQ(fitParaboloidWindow({}, 512, true), whole);
+  EXPECT_EQ(fitParaboloidWindow({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}, 512, true),
+            whole);
+  EXPECT_EQ(fitParaboloidWindow({{1, 0, 0}, {-1, 0, 0}, {0, 0, -1}}, 512, false), whole);
+  // The whole lower hemisphere's rim and pole: the window is the whole disk (no zoom).
+  EXPECT_EQ(fitParaboloidWindow({{1, 0, 0}, {0, 1, 0}, {-0.7071f, -0.7071f, 0}, {0, 0, -1}}, 512, false).z, 1.0f);
+}
+
+// Every camera of street, fitted: points sampled in its frustum, the scene's bounds and the
+// lamp's reach fall inside the window of the hemisphere that serves them, 3 texels from its
+// border; the south-bench close-up, which looks away from the lamp, is zoomed in.
+TEST(DualParaboloid, FittedWindowsHoldWhatEachCameraSees) {
+  const Scene scene = loadScene("street", test::kAssets);
+  const ParamSet params = makeTechnique("dual-paraboloid", {"shadowmap.size=512"}).params;
+  const Bounds b = scene.boundsAt(0.0);
+  for (const Camera& cam : scene.cameras) {
+    const FaceViews v = paraboloidViews(scene.light, paraboloidInput(scene, cam, params));
+    if (cam.name == "south-bench") EXPECT_GT(v.space.views[0].paraboloidWindow.z, 1.1f) << cam.name;
+    const glm::mat4 inv = glm::inverse(cameraProjection(cam, 16.0f / 9.0f) * cameraView(cam));
+    const float inside = 1.0f - 3.0f * 2.0f / v.space.size;
+    for (int i = 0; i < 4000; ++i) {
+      const glm::vec3 ndc(std::fmod(i * 0.618034f, 1.0f) * 2 - 1, std::fmod(i * 0.754878f, 1.0f) * 2 - 1,
+                          std::fmod(i * 0.569840f, 1.0f) * 2 - 1);
+      const glm::vec4 w = inv * glm::vec4(ndc, 1.0f);
+      const glm::vec3 p = glm::vec3(w) / w.w;
+      const glm::vec3 d = p - scene.light.position;
+      const float far = v.space.views[0].farPlane;
+      if (glm::any(glm::lessThan(p, b.min)) || glm::any(glm::greaterThan(p, b.max)) ||
+          std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}) > far)
+        continue;
+      const int h = -(v.space.views[0].view * glm::vec4(p, 1.0f)).z >= 0.0f ? 0 : 1;
+      ASSERT_TRUE(v.needed[h]) << cam.name;
+      const glm::vec4 c = lightViewClip(v.space.views[h], p);
+      ASSERT_LE(std::max(std::abs(c.x), std::abs(c.y)), inside) << cam.name << " hemisphere " << h << " point " << i;
     }
   }
 }

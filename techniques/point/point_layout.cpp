@@ -9,6 +9,7 @@
 #include "point/dual_paraboloid.h"
 #include "point/face_cache.h"
 
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -66,7 +67,8 @@ class PointLayoutState : public LayoutState {
       content_.push_back({.viewProj = view.viewProj,
                           .sceneGeneration = in.sceneGeneration,
                           .size = v.space.size,
-                          .projective = view.projection == LightView::Projection::Matrix});
+                          .projective = view.projection == LightView::Projection::Matrix,
+                          .paraboloidWindow = view.paraboloidWindow});
     status_ = statusLine(v.neededCount(), 0);
     return v.space;
   }
@@ -102,7 +104,18 @@ class PointLayoutState : public LayoutState {
     std::string s = spec_.id + ": " + std::to_string(needed) + " of " + std::to_string(needed_.size()) + " " +
                     spec_.unit + " drawn";
     if (kept > 0) s += ", " + std::to_string(kept) + " kept from an earlier frame";
-    return s;
+    return s + fittedZooms();
+  }
+  // The paraboloids' fitted windows as magnifications of the whole disk (paraboloid.fit).
+  std::string fittedZooms() const {
+    std::string zooms;
+    for (size_t v = 0; v < content_.size(); ++v) {
+      if (content_[v].projective || !needed_[v]) continue;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%s%.2fx", zooms.empty() ? "" : ", ", content_[v].paraboloidWindow.z);
+      zooms += buf;
+    }
+    return zooms.empty() ? "" : "; windows " + zooms + " the disk";
   }
   const PointLayoutSpec& spec_;
   std::vector<bool> needed_;

@@ -187,7 +187,7 @@ LayoutInput inputFor(const Scene& scene, const Camera& cam, const ParamSet& para
 std::vector<glm::vec3> visibleSamples(const LayoutInput& in, const Bounds& b) {
   std::vector<glm::vec3> out;
   const glm::mat4 inv = glm::inverse(in.cameraProj * in.cameraView);
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < 20000; ++i) {
     const glm::vec3 ndc(std::fmod(i * 0.6180339f, 1.0f) * 2 - 1, std::fmod(i * 0.7548776f, 1.0f) * 2 - 1,
                         std::fmod(i * 0.5698403f, 1.0f) * 2 - 1);
     const glm::vec4 w = inv * glm::vec4(ndc, 1.0f);

@@ -10,13 +10,13 @@ namespace {
 glm::vec3 viewAxis(const LightView& v) { return -glm::vec3(v.view[0][2], v.view[1][2], v.view[2][2]); }
 
 // World size of one texel of `v` across the ray at p: perspective faces scale with the distance
-// along the axis; a paraboloid's texel turns 2 * 1.05 / size * (1 + cos theta) radians
-// (layouts/dual_paraboloid.glsl, layoutTexelWorldSize).
+// along the axis; a paraboloid's texel turns 2 * 1.05 / (size * zoom) * (1 + cos theta) radians
+// (layouts/dual_paraboloid.glsl, layoutTexelWorldSize; zoom: its fitted window's).
 float texelAt(const LightView& v, const glm::vec3& toPoint, int size) {
   const float along = glm::dot(toPoint, viewAxis(v));
   if (v.projection == LightView::Projection::Paraboloid) {
     const float r = glm::length(toPoint);
-    return r * 2.0f * kParaboloidWindow / float(size) * (1.0f + along / std::max(r, 1e-20f));
+    return r * 2.0f * kParaboloidWindow / (float(size) * v.paraboloidWindow.z) * (1.0f + along / std::max(r, 1e-20f));
   }
   return v.perspective ? v.texelWorldSize * along : v.texelWorldSize;
 }
