@@ -332,10 +332,6 @@ bool pointLightThroughOneFrustum(const Scene& scene, const std::string& preset) 
   return scene.light.type == Light::Type::Point && p &&
          std::find(pointLayouts.begin(), pointLayouts.end(), p->layout) == pointLayouts.end();
 }
-bool methodHoles(const std::string& scene, const std::string& preset) {
-  return preset == "forward" && (scene == "grazing" || scene == "terrain");
-}
-
 // Issue #23's bar: with its defaults, every preset is finite and at most max(5 %, 3x standard's)
 // wrong pixels against the ray-traced reference, on every builtin scene (first camera,
 // 320x180, two frames from a cut), except the measured cases above.
@@ -349,9 +345,11 @@ TEST_P(EveryPreset, WithinThreeTimesStandardsWrongPixels) {
   const ErrorMetrics m = viewportErrorMetrics(vp, t.reference);
   EXPECT_EQ(m.nonfinite, 0) << id << " " << preset;
   double bar = std::max(5.0, 3.0 * t.standardWrongPct);
-  if (methodHoles(id, preset)) return;
   if (pointLightThroughOneFrustum(*s, preset))
     bar = std::max(id == "sponza-lamps" ? kPointAsSpotInSponzaBar : kPointAsSpotBar, bar);
+  // Forward mapping under a sun 0.06 degrees up: a ground texel spans more pixels than the
+  // largest splat (255 pixels a side), the method's limit (techniques/reconstruction/README.md).
+  if (preset == "forward" && id == "grazing") return;
   if (heldToTheImage(id, preset)) {
     const ImageErrorMetrics image = viewportImageError(harness_->renderer, t.in, vp, t.reference.visibility,
                                                        t.reference.valid, t.reference.otherLights);

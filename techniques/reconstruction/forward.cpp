@@ -38,6 +38,7 @@ class ForwardState : public AccumulationState {
  private:
   void splat(const AccumulationContext& c);
   void ensureLargeSplats();
+  void markOffMap(const AccumulationContext& c, Program& offMap);
   void drawLargeSplats(const AccumulationContext& c, Program& quads);
   // Large splats (accumulation/forward_large.glsl: a count and the draw's command in 32 bytes,
   // then 32 bytes a splat): 8 MB; a splat that does not fit is tested in the texel pass.
@@ -62,19 +63,22 @@ void ForwardState::splat(const AccumulationContext& c) {
       c.shaders->get({"forward splat", {{GL_COMPUTE_SHADER, "accumulation/forward_splat.comp"}}, prelude});
   Program& args =
       c.shaders->get({"forward splat args", {{GL_COMPUTE_SHADER, "accumulation/forward_splat_args.comp"}}, ""});
+  Program& offMap =
+      c.shaders->get({"forward off map", {{GL_COMPUTE_SHADER, "accumulation/forward_off_map.comp"}}, prelude});
   Program& quads = c.shaders->get({"forward splat quads",
                                    {{GL_VERTEX_SHADER, "accumulation/forward_splat_quad.vert"},
                                     {GL_FRAGMENT_SHADER, "accumulation/forward_splat_quad.frag"}},
                                    prelude});
   const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};  // no sample reached it: unlit
   glClearTexImage(c.finalVisibilityTex->id(), 0, GL_RG, GL_FLOAT, dark);
-  if (!texels.valid() || !args.valid() || !quads.valid()) return;
+  if (!texels.valid() || !args.valid() || !quads.valid() || !offMap.valid()) return;
   ensureLargeSplats();
   const GLuint zero = 0;
   glNamedBufferSubData(large_, 0, sizeof(zero), &zero);
   bindStorage("ForwardLargeSplats", large_);
   glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
   const int size = static_cast<int>(c.params->i("shadowmap.size"));
+  markOffMap(c, offMap);
   texels.use();
   TextureUnits units;
   c.bindTechniqueInputs(texels, units);  // depth map, light views, G-buffer, parameters
@@ -92,6 +96,18 @@ void ForwardState::splat(const AccumulationContext& c) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   drawLargeSplats(c, quads);
   points_ = static_cast<long long>(size) * size;
+}
+
+// Pixels outside the light view's map are lit, as the backward test has them
+// (accumulation/forward_off_map.comp): no texel can reach them.
+void ForwardState::markOffMap(const AccumulationContext& c, Program& offMap) {
+  offMap.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(offMap, units);
+  offMap.set("u_screenSize", glm::vec2(c.width, c.height));
+  offMap.set("u_visibilityOut", 0);
+  glDispatchCompute(static_cast<GLuint>((c.width + 7) / 8), static_cast<GLuint>((c.height + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void ForwardState::drawLargeSplats(const AccumulationContext& c, Program& quads) {
