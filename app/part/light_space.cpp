@@ -23,7 +23,7 @@ glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
     const float r = glm::length(v);
     if (!(r > 1e-20f)) return glm::vec4(0.0f);  // the light itself (or NaN): w = 0, not in the map
     const glm::vec3 d = v / r;
-    const glm::vec2 disk = glm::vec2(d) / std::max(1.0f - d.z, 1e-4f) / kParaboloidWindow;
+    const glm::vec2 disk = paraboloidDiskImage(d);
     const glm::vec2 uv = (disk - glm::vec2(view.paraboloidWindow)) * view.paraboloidWindow.z;
     const float depth = (r - view.nearPlane) / (view.farPlane - view.nearPlane);
     return {uv, depth * 2.0f - 1.0f, 1.0f};

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,6 +59,12 @@ struct LightView {
 // disk, scaled by 1 / kParaboloidWindow so filter taps just past the rim read drawn texels. Its
 // depth is the radial distance over [nearPlane, farPlane] (layouts/dual_paraboloid.glsl).
 inline constexpr float kParaboloidWindow = 1.05f;
+
+// The whole hemisphere's image of a unit direction d in a paraboloid view's frame (axis -z):
+// d.xy / (1 - d.z) / kParaboloidWindow, before a fitted window zooms it.
+inline glm::vec2 paraboloidDiskImage(const glm::vec3& d) {
+  return glm::vec2(d) / std::max(1.0f - d.z, 1e-4f) / kParaboloidWindow;
+}
 
 // δ above this: the log warp is the identity to float precision (LightView::logDelta).
 inline constexpr float kNoWarpDelta = 1e6f;

@@ -16,9 +16,8 @@ void main() {
   vec3 F = gbufferFacetNormal(pixel, N);
   vec3 L = directionToLight(P.xyz);
   float cosTheta = dot(N, L);
-  // Facing away or outside a spot's cone: unlit, as the splats leave it.
-  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P.xyz) == 0.0) return;
+  if (!surfaceFacesLight(P.xyz, N, F, L)) return;  // unlit, as the splats leave it
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P.xyz, N, cosTheta, 0), 0);
-  if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0))))
+  if (shadowCoordOffMap(sc))
     imageStore(u_visibilityOut, pixel, vec4(1.0, 1.0, 0.0, 0.0));
 }

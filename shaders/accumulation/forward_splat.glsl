@@ -72,7 +72,7 @@ bool lightsPixel(ivec2 pixel, vec3 sampleAt, vec2 texel) {
   vec3 F = gbufferFacetNormal(pixel, N);
   vec3 L = directionToLight(P.xyz);
   float cosTheta = dot(N, L);
-  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P.xyz) == 0.0) return false;
+  if (!surfaceFacesLight(P.xyz, N, F, L)) return false;
 #ifdef SL_BIAS_MODE_IS_NORMAL_OFFSET
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P.xyz, N, cosTheta, 0), 0);
   if (!inSampleTexel(sc, texel)) return false;

@@ -25,3 +25,11 @@ float spotFactor(vec3 p) {
   return 1.0;
 #endif
 }
+
+// True where the light can reach the surface at all: the shading normal N and the triangle's own
+// normal F face L (the shadow terminator, where a surface shadows itself, is unlit) and p is inside
+// a spot's cone and a point light's range. Every visibility test calls the rest unlit, whatever
+// a map says, as the reference does.
+bool surfaceFacesLight(vec3 p, vec3 N, vec3 F, vec3 L) {
+  return dot(N, L) > 0.0 && dot(F, L) > 0.0 && spotFactor(p) != 0.0;
+}

@@ -21,3 +21,9 @@ struct ShadowCoord {
 };
 
 ShadowCoord shadowCoordNone() { return ShadowCoord(vec2(0.0), 0.0, -1, -1, 0.0); }
+
+// No texel of the map holds the point (no view sees it, or it falls outside the view's layer):
+// nothing was drawn there as a caster, so the tests call it lit.
+bool shadowCoordOffMap(ShadowCoord sc) {
+  return sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)));
+}

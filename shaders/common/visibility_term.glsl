@@ -11,7 +11,7 @@
 vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coord) {
   coord = vec4(0.0, 0.0, -2.0, -1.0);
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, cosTheta, view), view);
-  if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return vec2(1.0, 0.0);
+  if (shadowCoordOffMap(sc)) return vec2(1.0, 0.0);
   coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
 #if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P, F, view, sc));
@@ -34,9 +34,7 @@ vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {
   coord = vec4(0.0, 0.0, -2.0, -1.0);
   vec3 L = directionToLight(P);
   float cosTheta = dot(N, L);
-  // Facing away (the shading normal, or the triangle itself: the shadow terminator, where the
-  // surface shadows itself) or outside the cone: unlit whatever the map says, as the reference.
-  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P) == 0.0) return vec2(0.0, 1.0);
+  if (!surfaceFacesLight(P, N, F, L)) return vec2(0.0, 1.0);
   // The layout picks the view(s) at the surface point; the bias is applied within each view.
   ShadowCoord pick = layoutShadowCoord(P);
   if (pick.view < 0) return vec2(1.0, 0.0);

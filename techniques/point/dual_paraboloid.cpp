@@ -28,9 +28,6 @@ bool withinOneHemisphere(const std::vector<glm::vec3>& dirs, const glm::vec3& me
   return drawnSide || minCos > std::cos(glm::radians(89.0f));
 }
 
-// A direction's place on the whole disk, in map units (layouts/dual_paraboloid.glsl).
-glm::vec2 diskImage(const glm::vec3& d) { return glm::vec2(d) / std::max(1.0f - d.z, 1e-4f) / kParaboloidWindow; }
-
 // The box (min, max corners, map units) around the image of every direction between `dirs`:
 // what lies between them on the sphere is bounded by great-circle arcs between pairs of them, so
 // the box around the images of every pair's arc (sampled finely: an arc's image is a circle arc)
@@ -48,8 +45,9 @@ void arcsImageBox(const std::vector<glm::vec3>& dirs, glm::vec2& lo, glm::vec2& 
           hi = glm::vec2(1.0f);
           return;
         }
-        lo = glm::min(lo, diskImage(glm::normalize(m)));
-        hi = glm::max(hi, diskImage(glm::normalize(m)));
+        const glm::vec2 image = paraboloidDiskImage(glm::normalize(m));
+        lo = glm::min(lo, image);
+        hi = glm::max(hi, image);
       }
   lo = glm::max(lo, glm::vec2(-1.0f));
   hi = glm::min(hi, glm::vec2(1.0f));

@@ -15,12 +15,12 @@ bool receiverShadowCoord(ivec2 pixel, out vec3 uvLayer, out float depth) {
   vec3 F = gbufferFacetNormal(pixel, N);
   vec3 L = directionToLight(P.xyz);
   float cosTheta = dot(N, L);
-  if (cosTheta <= 0.0 || dot(F, L) <= 0.0 || spotFactor(P.xyz) == 0.0) return false;
+  if (!surfaceFacesLight(P.xyz, N, F, L)) return false;
   ShadowCoord pick = layoutShadowCoord(P.xyz);
   if (pick.view < 0) return false;
   int view = pick.view;
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P.xyz, N, cosTheta, view), view);
-  if (sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)))) return false;
+  if (shadowCoordOffMap(sc)) return false;
   depth = sc.depth - biasDepth(P.xyz, cosTheta, view);
 #if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P.xyz, F, view, sc));
