@@ -49,8 +49,6 @@ void arcsImageBox(const std::vector<glm::vec3>& dirs, glm::vec2& lo, glm::vec2& 
         lo = glm::min(lo, image);
         hi = glm::max(hi, image);
       }
-  lo = glm::max(lo, glm::vec2(-1.0f));
-  hi = glm::min(hi, glm::vec2(1.0f));
 }
 
 }  // namespace
@@ -63,6 +61,14 @@ glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool
   if (!withinOneHemisphere(dirs, glm::normalize(sum))) return whole;
   glm::vec2 lo, hi;
   arcsImageBox(dirs, lo, hi);
+  return paraboloidWindowAround(lo, hi, size, snap);
+}
+
+glm::vec3 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap) {
+  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+  lo = glm::max(lo, glm::vec2(-1.0f));
+  hi = glm::min(hi, glm::vec2(1.0f));
+  if (!(lo.x <= hi.x && lo.y <= hi.y)) return whole;
   const float side = std::max(hi.x - lo.x, hi.y - lo.y);
   // 5 % on each side, then 4 texels of the map this zoom makes: side' = 1.1 side + 8 texels of
   // 2 / (zoom size) with zoom = 2 / side'.
@@ -79,16 +85,16 @@ glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool
   return {centre, zoom};
 }
 
-FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
+FaceViews paraboloidViews(const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
   const Bounds bounds = in.scene->boundsAt(in.time);
   const int size = in.params->i("shadowmap.size");
   const float far = pointLightFar(light, bounds);
   const float near = far * 1e-4f;  // as the cube's: linear depth, casters touching the light kept
   const std::vector<glm::vec3> box = boxCorners(bounds);
-  std::vector<glm::vec4> seen = frustumPlanes(in.cameraProj * in.cameraView);
+  std::vector<glm::vec4> frustum = frustumPlanes(in.cameraProj * in.cameraView);
   // Receivers beyond the light's reach are not lit: the fit need not hold them.
   const std::vector<glm::vec4> reach = boxPlanes({light.position - glm::vec3(far), light.position + glm::vec3(far)});
-  seen.insert(seen.end(), reach.begin(), reach.end());
+  frustum.insert(frustum.end(), reach.begin(), reach.end());
   const bool fit = in.params->b("paraboloid.fit"), snap = in.params->b("layout.snap");
   FaceViews out;
   out.space.views.clear();
@@ -112,9 +118,18 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in) {
     out.space.views.push_back(v);
     // The lookup reads hemisphere 0 in front of the plane through the light across its axis, 1
     // behind it: a hemisphere is needed when a visible receiver lies on its side.
-    std::vector<glm::vec4> planes = seen;
+    std::vector<glm::vec4> planes = frustum;
     planes.push_back(glm::vec4(axes[h], -glm::dot(axes[h], light.position)));
     const std::vector<glm::vec3> receivers = clipCornersToPlanes(box, planes);
+    if (seen && size_t(h) < seen->size()) {  // point.fit_visible: the pixels' own images
+      const ViewPixelBounds& b = (*seen)[size_t(h)];
+      out.needed.push_back(b.valid);
+      if (fit && b.valid) {
+        out.space.views.back().paraboloidWindow = paraboloidWindowAround(b.lo, b.hi, size, snap);
+        out.space.views.back().texelWorldSize /= out.space.views.back().paraboloidWindow.z;
+      }
+      continue;
+    }
     out.needed.push_back(!receivers.empty());
     if (fit && !receivers.empty()) {
       std::vector<glm::vec3> dirs;

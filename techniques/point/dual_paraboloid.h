@@ -12,7 +12,10 @@ namespace sl {
 // the seam, the equator, is level with the light) and which hold a visible receiver.
 // With paraboloid.fit on, each drawn hemisphere's window is fitted to the directions of its visible
 // receivers (fitParaboloidWindow); off, or where they cannot be bounded, the whole disk.
-FaceViews paraboloidViews(const Light& light, const LayoutInput& in);
+// With `seen` (point.fit_visible) a hemisphere is needed when a visible pixel reads it and its
+// window holds those pixels' images (paraboloidWindowAround) instead.
+FaceViews paraboloidViews(const Light& light, const LayoutInput& in,
+                          const std::vector<ViewPixelBounds>* seen = nullptr);
 
 // The window (LightView::paraboloidWindow: centre, zoom) of a size-texel paraboloid map that holds
 // the images of the directions `dirs` (unit vectors in the view's frame, the hemisphere's axis -z)
@@ -25,6 +28,10 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in);
 // (0, 0, 1), the whole disk, when there are none, they do not, or two are opposite. snap: the zoom on a ladder of
 // quarter octaves and the centre on whole texels, so the texel grid stands still while the camera moves within a step.
 glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap);
+// The window around the box [lo, hi] of images on the whole disk (paraboloidDiskImage), with the
+// same margins and snapping, cut to the disk's square; the whole disk where it magnifies by less
+// than 1 or the box is empty.
+glm::vec3 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap);
 
 std::unique_ptr<Layout> makeDualParaboloidLayout();
 

@@ -96,7 +96,8 @@ int nearestFace(const FaceSet& set, const glm::vec3& d) {
 
 int FaceViews::neededCount() const { return static_cast<int>(std::count(needed.begin(), needed.end(), true)); }
 
-FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in) {
+FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in,
+                    const std::vector<ViewPixelBounds>* seen) {
   const Bounds bounds = in.scene->boundsAt(in.time);
   const int size = in.params->i("shadowmap.size");
   const bool snap = in.params->b("layout.snap");
@@ -104,22 +105,25 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
   // A near plane this close keeps casters touching the light in the map; stored depth is linear,
   // so it costs no precision.
   const float near = far * 1e-4f;
-  std::vector<glm::vec4> seen = frustumPlanes(in.cameraProj * in.cameraView);
+  std::vector<glm::vec4> frustum = frustumPlanes(in.cameraProj * in.cameraView);
   const std::vector<glm::vec4> box = boxPlanes(bounds);
-  seen.insert(seen.end(), box.begin(), box.end());
+  frustum.insert(frustum.end(), box.begin(), box.end());
   Light faceLight = light;
   faceLight.type = Light::Type::Spot;
   FaceViews out;
   out.space.views.clear();  // a LightSpace starts with one view
   out.space.size = size;
-  for (const LightFace& face : set.faces) {
+  for (size_t f = 0; f < set.faces.size(); ++f) {
+    const LightFace& face = set.faces[f];
     faceLight.direction = face.axis;
     glm::mat4 view = glm::lookAt(light.position, light.position + face.axis, face.up);
     if (in.jitter.rotationRad != 0.0f)
       view = glm::rotate(glm::mat4(1.0f), in.jitter.rotationRad, glm::vec3(0, 0, 1)) * view;
     faceLight.fovDeg = enclosingFovDeg(face, view);
     const std::vector<glm::vec3> region = faceRegion(face, light.position, near, far);
-    const std::vector<glm::vec3> receivers = clipCornersToPlanes(region, seen);
+    std::vector<glm::vec3> receivers = clipCornersToPlanes(region, frustum);
+    if (seen && f < seen->size())
+      receivers = (*seen)[f].valid ? pixelBoundsCorners((*seen)[f], view, size) : std::vector<glm::vec3>{};
     std::vector<glm::vec3> casters = clipCornersToPlanes(region, box);
     const bool needed = !receivers.empty();
     out.needed.push_back(needed);

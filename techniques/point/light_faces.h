@@ -5,6 +5,7 @@
 #pragma once
 
 #include "part/part.h"
+#include "point/visible_fit.h"
 
 #include <memory>
 #include <string>
@@ -39,8 +40,11 @@ struct FaceViews {
 };
 // The faces' views for the light (a point light at `light.position`); a face is needed when
 // view frustum ∩ scene bounds ∩ its region is not empty. Every face has a view; an undrawn
-// face's is its whole region.
-FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in);
+// face's is its whole region. With `seen` (point.fit_visible: the bounds of the pixels that read
+// each face, measured in these same views) a face is needed when a pixel reads it and is cropped
+// to those pixels instead.
+FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in,
+                    const std::vector<ViewPixelBounds>* seen = nullptr);
 
 // The far plane of a point light's views: the farthest corner of the scene's bounds, or the
 // light's range if nearer.

@@ -4,6 +4,7 @@
 
 #include "gl/shader_library.h"
 #include "part/contexts.h"
+#include "part/frame_graph.h"
 #include "part/light_frame.h"
 #include "point/directions_view.h"
 #include "point/dual_paraboloid.h"
@@ -17,10 +18,11 @@ namespace sl {
 namespace {
 
 // The views under a point light; under any other light one focused map (every view needed).
-FaceViews viewsOrFocused(const PointLayoutSpec& spec, const LayoutInput& in, bool& pointLight) {
+FaceViews viewsOrFocused(const PointLayoutSpec& spec, const LayoutInput& in, bool& pointLight,
+                         const std::vector<ViewPixelBounds>* seen = nullptr) {
   const Light light = sampledLight(in.shadowedLight(), in.jitter.lightSample);
   pointLight = light.type == Light::Type::Point;
-  if (pointLight) return spec.views(light, in);
+  if (pointLight) return spec.views(light, in, seen);
   FaceViews focused;
   focused.space = focusedMap(in, focusBody(in));
   focused.needed.assign(focused.space.views.size(), true);
@@ -57,29 +59,24 @@ class PointLayoutState : public LayoutState {
   LightSpace compute(const LayoutInput& in) override {
     bool pointLight = false;
     FaceViews v = viewsOrFocused(spec_, in, pointLight);
-    needed_ = v.needed;
     pointLight_ = pointLight;
-    scene_ = in.scene;
-    time_ = in.time;
+    input_ = in;
     keepOn_ = in.params && in.params->has("point.keep_faces") && in.params->b("point.keep_faces");
-    content_.clear();
-    for (const LightView& view : v.space.views)
-      content_.push_back({.viewProj = view.viewProj,
-                          .sceneGeneration = in.sceneGeneration,
-                          .size = v.space.size,
-                          .projective = view.projection == LightView::Projection::Matrix,
-                          .paraboloidWindow = view.paraboloidWindow});
-    status_ = statusLine(v.neededCount(), 0);
+    adopt(v);
     return v.space;
   }
-  std::vector<std::string> addPasses(FrameGraph&, const PartContext& ctx) override {
-    const uint64_t stamp = techniqueStamp(*ctx.params, ctx.shaders);
-    for (FaceContent& c : content_) c.techniqueStamp = stamp;
-    return {};
+  std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) override {
+    stamp_ = techniqueStamp(*ctx.params, ctx.shaders);
+    for (FaceContent& c : content_) c.techniqueStamp = stamp_;
+    if (!pointLight_ || !ctx.params->has("point.fit_visible") || !ctx.params->b("point.fit_visible")) return {};
+    if (!reduction_) reduction_ = std::make_unique<ViewPixelReduction>();
+    const std::string res = "point.pixel_bounds" + ctx.viewportTag;
+    graph.add({"point.fit_visible" + ctx.viewportTag, {"gbuffer"}, {res}, [this, ctx] { refitToPixels(ctx); }});
+    return {res};
   }
   void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {
     std::vector<bool> kept(layers.size(), false);
-    if (keepOn_ && keepsLayers && scene_) kept = cache_.keep(content_, needed_, *scene_, time_);
+    if (keepOn_ && keepsLayers && input_.scene) kept = cache_.keep(content_, needed_, *input_.scene, input_.time);
     std::vector<bool> drawn(layers.size(), false);
     int keptCount = 0, neededCount = 0;
     for (size_t f = 0; f < layers.size() && f < needed_.size(); ++f) {
@@ -90,15 +87,38 @@ class PointLayoutState : public LayoutState {
       // was when the representation keeps its layers).
       if (!drawn[f]) layers[f] = ShadowLayerDraw{.tiled = true, .tiles = {}};
     }
-    cache_.record(content_, drawn, keepsLayers, time_);
+    cache_.record(content_, drawn, keepsLayers, input_.time);
     status_ = statusLine(neededCount, keptCount);
   }
   void reset() override { cache_.clear(); }
+  // point.fit_visible: the views refitted to the bounds of the pixels that read them, measured in
+  // the views compute() made (the same input gives the same rolled views), before the shadow pass.
+  void refitToPixels(const PartContext& ctx) {
+    const std::vector<ViewPixelBounds> seen = reduction_->reduce(ctx, space_, ctx.shadowedLight());
+    bool pointLight = false;
+    FaceViews v = viewsOrFocused(spec_, input_, pointLight, &seen);
+    adopt(v);
+    ctx.replaceLightSpace(v.space);
+  }
   std::string status() const override { return status_; }
   std::vector<std::string> views() const override { return {"directions"}; }
   void addPassesAfterShadow(FrameGraph& graph, const PartContext& ctx) override { addDirectionsViewPass(graph, ctx); }
 
  private:
+  // This frame's views: what the shadow pass draws and the face cache compares.
+  void adopt(const FaceViews& v) {
+    needed_ = v.needed;
+    space_ = v.space;
+    content_.clear();
+    for (const LightView& view : v.space.views)
+      content_.push_back({.viewProj = view.viewProj,
+                          .sceneGeneration = input_.sceneGeneration,
+                          .techniqueStamp = stamp_,
+                          .size = v.space.size,
+                          .projective = view.projection == LightView::Projection::Matrix,
+                          .paraboloidWindow = view.paraboloidWindow});
+    status_ = statusLine(v.neededCount(), 0);
+  }
   std::string statusLine(int needed, int kept) const {
     if (!pointLight_) return spec_.id + ": the scene's light is not a point light; one focused map";
     std::string s = spec_.id + ": " + std::to_string(needed) + " of " + std::to_string(needed_.size()) + " " +
@@ -106,23 +126,31 @@ class PointLayoutState : public LayoutState {
     if (kept > 0) s += ", " + std::to_string(kept) + " kept from an earlier frame";
     return s + fittedZooms();
   }
-  // The paraboloids' fitted windows as magnifications of the whole disk (paraboloid.fit).
+  // The drawn views' fitted windows as magnifications: of the whole disk for a paraboloid
+  // (paraboloid.fit), of the square that holds the face's region for a face.
   std::string fittedZooms() const {
     std::string zooms;
-    for (size_t v = 0; v < content_.size(); ++v) {
-      if (content_[v].projective || !needed_[v]) continue;
+    bool paraboloid = false;
+    for (size_t v = 0; v < space_.views.size() && v < needed_.size(); ++v) {
+      if (!needed_[v]) continue;
+      const LightView& view = space_.views[v];
+      paraboloid = view.projection == LightView::Projection::Paraboloid;
+      const float zoom = paraboloid ? view.paraboloidWindow.z : 2.0f / (view.windowMax.x - view.windowMin.x);
       char buf[32];
-      std::snprintf(buf, sizeof buf, "%s%.2fx", zooms.empty() ? "" : ", ", content_[v].paraboloidWindow.z);
+      std::snprintf(buf, sizeof buf, "%s%.2fx", zooms.empty() ? "" : ", ", zoom);
       zooms += buf;
     }
-    return zooms.empty() ? "" : "; windows " + zooms + " the disk";
+    if (zooms.empty()) return "";
+    return "; windows " + zooms + (paraboloid ? " the disk" : " the face");
   }
   const PointLayoutSpec& spec_;
   std::vector<bool> needed_;
   std::vector<FaceContent> content_;
   FaceCache cache_;
-  const Scene* scene_ = nullptr;
-  double time_ = 0;
+  LayoutInput input_;
+  LightSpace space_;
+  uint64_t stamp_ = 0;
+  std::unique_ptr<ViewPixelReduction> reduction_;
   bool pointLight_ = false, keepOn_ = false;
   std::string status_;
 };
@@ -136,6 +164,7 @@ class PointLayout : public Layout {
   std::vector<ParamDecl> params() const override {
     std::vector<ParamDecl> decls = spec_.params;
     decls.push_back(keepFacesParam());
+    decls.push_back(fitVisibleParam());
     return decls;
   }
   LightSpace compute(const LayoutInput& in) const override {
@@ -160,7 +189,9 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .glslModule = "layouts/light_faces.glsl",
        .unit = "faces",
        .params = {},
-       .views = [](const Light& light, const LayoutInput& in) { return faceViews(cubeFaceSet(), light, in); }}));
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
+         return faceViews(cubeFaceSet(), light, in, seen);
+       }}));
   out.push_back(makePointLayout(
       {.id = "tetrahedron",
        .help = "point light: four faces of a tetrahedron (Liao 2010), one layer each, each fitted to what the camera "
@@ -168,7 +199,9 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .glslModule = "layouts/light_faces.glsl",
        .unit = "faces",
        .params = {},
-       .views = [](const Light& light, const LayoutInput& in) { return faceViews(tetrahedronFaceSet(), light, in); }}));
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
+         return faceViews(tetrahedronFaceSet(), light, in, seen);
+       }}));
   out.push_back(makeDualParaboloidLayout());
 }
 

@@ -15,7 +15,9 @@ struct PointLayoutSpec {
   std::string id, help, glslModule;
   std::string unit;  // what its views are called in the status line: "faces", "hemispheres"
   std::vector<ParamDecl> params;
-  std::function<FaceViews(const Light& pointLight, const LayoutInput& in)> views;
+  // seen: null, or the bounds of the pixels that read each view (point.fit_visible).
+  std::function<FaceViews(const Light& pointLight, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen)>
+      views;
 };
 std::unique_ptr<Layout> makePointLayout(PointLayoutSpec spec);
 

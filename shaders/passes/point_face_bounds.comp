@@ -1,0 +1,88 @@
+// The visible pixels' bounds in each view of a point light (techniques/point/visible_fit.cpp;
+// sample-distribution fitting, Lauritzen et al. 2011, applied per face: beyond the papers). A pixel
+// counts in the view whose axis is nearest its direction from the light (the largest distance
+// along the view's axis: the face the lookup reads; for the paraboloids, the hemisphere on its
+// side of the plane through the light). Per view: min/max of its image coordinates (a face's
+// tangent coordinates x/-z, y/-z; a paraboloid's whole-disk image, app/part/light_space.h
+// paraboloidDiskImage) and of its distance (-z; the paraboloid's radial distance). Points
+// beyond the light's range are unlit whatever the map says and are left out. As
+// depth_bounds.comp: 4x4 pixels per invocation in registers, shared atomics per group, global
+// atomics once per group, floats as order-preserving uints.
+layout(local_size_x = 16, local_size_y = 16) in;
+const int kMaxViews = 6;
+const int kBlock = 8;
+uniform sampler2D u_gPosition;
+uniform int u_viewCount;
+uniform bool u_paraboloid;
+uniform vec3 u_lightPos;
+uniform float u_lightRange;
+uniform mat4 u_faceView[kMaxViews];
+layout(std430) buffer PointFaceBounds {
+  uint bounds[kMaxViews * 6];  // per view: x min, max; y min, max; distance min, max
+};
+shared uint groupBounds[kMaxViews * 6];
+
+uint orderedBits(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+
+// The view a point reads, and its image coordinates and distance there (xy, z).
+int viewOf(vec3 P, out vec3 image) {
+  int best = 0;
+  vec3 v = (u_faceView[0] * vec4(P, 1.0)).xyz;
+  for (int f = 1; f < u_viewCount; ++f) {
+    vec3 w = (u_faceView[f] * vec4(P, 1.0)).xyz;
+    if (-w.z > -v.z) {
+      best = f;
+      v = w;
+    }
+  }
+  if (u_paraboloid) {
+    float r = length(v);
+    vec3 d = v / max(r, 1e-30);
+    image = vec3(d.xy / max(1.0 - d.z, 1e-4) / 1.05, r);  // kParaboloidWindow
+  } else {
+    image = vec3(v.xy / max(-v.z, 1e-30), -v.z);
+  }
+  return best;
+}
+
+void main() {
+  uint i = gl_LocalInvocationIndex;
+  if (i < uint(kMaxViews * 6)) groupBounds[i] = (i & 1u) == 0u ? 0xffffffffu : 0u;
+  barrier();
+  ivec2 size = textureSize(u_gPosition, 0);
+  vec3 lo[kMaxViews], hi[kMaxViews];
+  for (int f = 0; f < kMaxViews; ++f) {
+    lo[f] = vec3(1.0 / 0.0);
+    hi[f] = vec3(-1.0 / 0.0);
+  }
+  for (int j = 0; j < kBlock; ++j)
+    for (int k = 0; k < kBlock; ++k) {
+      ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * kBlock + ivec2(k, j);
+      if (any(greaterThanEqual(pixel, size))) continue;
+      vec4 P = texelFetch(u_gPosition, pixel, 0);
+      if (!(P.w > 0.5) || any(isnan(P.xyz)) || any(isinf(P.xyz))) continue;
+      if (length(P.xyz - u_lightPos) > u_lightRange) continue;
+      vec3 image;
+      int f = viewOf(P.xyz, image);
+      if (any(isnan(image)) || any(isinf(image))) continue;  // the light's own position
+      lo[f] = min(lo[f], image);
+      hi[f] = max(hi[f], image);
+    }
+  for (int f = 0; f < u_viewCount; ++f) {
+    if (!(lo[f].x <= hi[f].x)) continue;
+    for (int c = 0; c < 3; ++c) {
+      atomicMin(groupBounds[f * 6 + 2 * c], orderedBits(lo[f][c]));
+      atomicMax(groupBounds[f * 6 + 2 * c + 1], orderedBits(hi[f][c]));
+    }
+  }
+  barrier();
+  if (i < uint(u_viewCount * 6)) {
+    if ((i & 1u) == 0u)
+      atomicMin(bounds[i], groupBounds[i]);
+    else
+      atomicMax(bounds[i], groupBounds[i]);
+  }
+}
