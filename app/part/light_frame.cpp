@@ -199,7 +199,7 @@ LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec
 
 LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
-                         const LayoutJitter& jitter) {
+                         const LayoutJitter& jitter, bool squareTexels) {
   float zNear = 1e30f, zFar = 0.0f;
   for (const auto* set : {&receivers, &casters})
     for (const auto& p : *set) {
@@ -231,29 +231,30 @@ LightView fitPerspective(const Light& light, const glm::mat4& lightView, const s
       hi = glm::min(chi, glm::vec2(1.0f));
     }
   }
-  float extent = std::max(std::max(hi.x - lo.x, hi.y - lo.y), 1e-4f);
-  float texel = extent / size;  // in NDC units
+  glm::vec2 extent = glm::max(hi - lo, glm::vec2(1e-4f));
+  if (squareTexels) extent = glm::vec2(std::max(extent.x, extent.y));
+  glm::vec2 texel = extent / float(size);  // in NDC units
   if (snap) {
-    texel = quantizeTexelSize(texel);
+    texel = {quantizeTexelSize(texel.x), quantizeTexelSize(texel.y)};
     lo = glm::floor(lo / texel) * texel;
   } else {
-    lo = (lo + hi) * 0.5f - glm::vec2(texel * size * 0.5f);
+    lo = (lo + hi) * 0.5f - texel * float(size) * 0.5f;
   }
   lo += jitter.offsetTexels * texel;
-  float span = texel * size;
+  const glm::vec2 span = texel * float(size);
   // Crop: map NDC [lo, lo+span] to [-1, 1].
   glm::mat4 cropM(1.0f);
-  cropM[0][0] = 2.0f / span;
-  cropM[1][1] = 2.0f / span;
-  cropM[3][0] = -1.0f - 2.0f * lo.x / span;
-  cropM[3][1] = -1.0f - 2.0f * lo.y / span;
+  cropM[0][0] = 2.0f / span.x;
+  cropM[1][1] = 2.0f / span.y;
+  cropM[3][0] = -1.0f - 2.0f * lo.x / span.x;
+  cropM[3][1] = -1.0f - 2.0f * lo.y / span.y;
   LightView ls;
   ls.perspective = true;
   ls.nearPlane = zNear;
   ls.farPlane = zFar;
   ls.windowMin = lo;
-  ls.windowMax = lo + glm::vec2(span);
-  ls.texelWorldSize = halfTan * texel;  // world size per texel at unit distance
+  ls.windowMax = lo + span;
+  ls.texelWorldSize = halfTan * std::max(texel.x, texel.y);  // world size per texel at unit distance
   ls.view = lightView;
   ls.proj = cropM * proj;
   ls.viewProj = ls.proj * ls.view;

@@ -47,9 +47,11 @@ LightView fitOrthographic(const glm::mat4& lightView, const std::vector<glm::vec
                           const std::vector<glm::vec3>& casters, int size, bool snap, const LayoutJitter& jitter);
 
 // Perspective (spot) fit: the cone, optionally cropped to the receivers' projection.
+// squareTexels false: the crop's window fits each axis on its own (texels longer along one axis
+// where the receivers' projection is longer along it; texelWorldSize is the longer side's).
 LightView fitPerspective(const Light& light, const glm::mat4& lightView, const std::vector<glm::vec3>& receivers,
                          const std::vector<glm::vec3>& casters, int size, bool crop, bool snap,
-                         const LayoutJitter& jitter);
+                         const LayoutJitter& jitter, bool squareTexels = true);
 
 // What the fitted layouts start from: the scene's bounds and corners (the casters), the visible
 // receivers (view frustum ∩ bounds; the corners when the view misses the scene), the light view

@@ -24,7 +24,8 @@ glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world) {
     if (!(r > 1e-20f)) return glm::vec4(0.0f);  // the light itself (or NaN): w = 0, not in the map
     const glm::vec3 d = v / r;
     const glm::vec2 disk = paraboloidDiskImage(d);
-    const glm::vec2 uv = (disk - glm::vec2(view.paraboloidWindow)) * view.paraboloidWindow.z;
+    const glm::vec2 uv =
+        (disk - glm::vec2(view.paraboloidWindow)) * glm::vec2(view.paraboloidWindow.z, view.paraboloidWindow.w);
     const float depth = (r - view.nearPlane) / (view.farPlane - view.nearPlane);
     return {uv, depth * 2.0f - 1.0f, 1.0f};
   }

@@ -49,9 +49,10 @@ struct LightView {
   enum class Projection { Matrix, LogWarp, Paraboloid };
   Projection projection = Projection::Matrix;
   // A paraboloid view's window fitted to what the camera sees of its hemisphere: map xy = (disk
-  // xy - .xy) * .z, disk xy the hemisphere's image scaled by 1 / kParaboloidWindow (below).
-  // (0, 0, 1): the whole disk.
-  glm::vec3 paraboloidWindow{0.0f, 0.0f, 1.0f};
+  // xy - .xy) * .zw, disk xy the hemisphere's image scaled by 1 / kParaboloidWindow (below); .zw
+  // the zoom along x and y, equal unless point.fit_visible fits the axes apart.
+  // (0, 0, 1, 1): the whole disk.
+  glm::vec4 paraboloidWindow{0.0f, 0.0f, 1.0f, 1.0f};
 };
 
 // A paraboloid view (Brabec, Annen & Seidel 2002) maps the direction d from the light, in its

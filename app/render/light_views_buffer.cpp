@@ -41,7 +41,7 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     const float split[4] = {v.splitNear, v.splitFar, v.blendBand, v.logDelta};
     std::memcpy(block.range[i], range, sizeof(range));
     std::memcpy(block.split[i], split, sizeof(split));
-    const float window[4] = {v.paraboloidWindow.x, v.paraboloidWindow.y, v.paraboloidWindow.z, 0.0f};
+    const float window[4] = {v.paraboloidWindow.x, v.paraboloidWindow.y, v.paraboloidWindow.z, v.paraboloidWindow.w};
     std::memcpy(block.window[i], window, sizeof(window));
   }
   block.info[0] = static_cast<float>(n);

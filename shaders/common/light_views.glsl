@@ -7,7 +7,7 @@ layout(std140, binding = 1) uniform LightViews {
   mat4 lightViewProjMatrix[SL_MAX_LIGHT_VIEWS];
   vec4 lightViewRange[SL_MAX_LIGHT_VIEWS];  // near, far (light-view distances), texel world size, perspective
   vec4 lightViewSplit[SL_MAX_LIGHT_VIEWS];  // camera view depth the view serves: from, to, blend band; w: LogPSM delta
-  vec4 lightViewWindow[SL_MAX_LIGHT_VIEWS];  // a paraboloid's fitted window: map = (disk - xy) * z
+  vec4 lightViewWindow[SL_MAX_LIGHT_VIEWS];  // a paraboloid's fitted window: map = (disk - xy) * zw
   vec4 lightViewInfo;                       // x: number of views, y: texels per side
 };
 

@@ -19,8 +19,11 @@ const float kParaboloidMargin = 0.1;   // casters drawn down to this (cos) behin
 
 bool paraboloidViews() { return lightViewInfo.x > 1.5; }
 
-// How many times the view's fitted window magnifies the whole disk (1: the whole disk).
-float paraboloidZoom(int view) { return lightViewWindow[view].z; }
+// How many times the view's fitted window magnifies the whole disk along x and y (1: the whole
+// disk; the two differ where point.fit_visible fits the axes apart).
+vec2 paraboloidZooms(int view) { return lightViewWindow[view].zw; }
+// The smaller: the map's largest texel, in units of the whole disk's.
+float paraboloidZoom(int view) { return min(lightViewWindow[view].z, lightViewWindow[view].w); }
 
 vec4 layoutClipIn(vec3 worldPos, int view) {
   if (!paraboloidViews()) return lightViewProjMatrix[view] * vec4(worldPos, 1.0);
@@ -32,7 +35,7 @@ vec4 layoutClipIn(vec3 worldPos, int view) {
   // 1 - d.z is 0 only at the opposite pole, whose image is at infinity; clamped there (such a
   // point is behind the hemisphere and culled, passes/shadow*.frag).
   vec2 disk = d.xy / max(1.0 - d.z, 1e-4) / kParaboloidWindow;
-  vec2 uv = (disk - lightViewWindow[view].xy) * paraboloidZoom(view);
+  vec2 uv = (disk - lightViewWindow[view].xy) * paraboloidZooms(view);
   float depth = (r - lightViewRange[view].x) / (lightViewRange[view].y - lightViewRange[view].x);
   return vec4(uv, depth * 2.0 - 1.0, 1.0);
 }

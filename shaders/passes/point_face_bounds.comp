@@ -5,12 +5,15 @@
 // side of the plane through the light). Per view: min/max of its image coordinates (a face's
 // tangent coordinates x/-z, y/-z; a paraboloid's whole-disk image, app/part/light_space.h
 // paraboloidDiskImage) and of its distance (-z; the paraboloid's radial distance). Points
-// beyond the light's range are unlit whatever the map says and are left out. As
-// depth_bounds.comp: 4x4 pixels per invocation in registers, shared atomics per group, global
-// atomics once per group, floats as order-preserving uints.
-layout(local_size_x = 16, local_size_y = 16) in;
+// beyond the light's range are unlit whatever the map says and are left out. Each invocation
+// reduces 16x16 pixels in registers, then writes each view it saw with global atomics on floats
+// stored as order-preserving uints (depth_bounds.comp). Measured on llvmpipe at 640x360: about
+// 6 ms, of which 1.5 ms is the dispatch, the read-back and the refit; 4x4 pixels per invocation
+// with shared atomics per group of 16x16 took 8 ms, and indexing the registers by constants
+// only changed nothing.
+layout(local_size_x = 8, local_size_y = 8) in;
 const int kMaxViews = 6;
-const int kBlock = 8;
+const int kBlock = 16;
 uniform sampler2D u_gPosition;
 uniform int u_viewCount;
 uniform bool u_paraboloid;
@@ -20,7 +23,6 @@ uniform mat4 u_faceView[kMaxViews];
 layout(std430) buffer PointFaceBounds {
   uint bounds[kMaxViews * 6];  // per view: x min, max; y min, max; distance min, max
 };
-shared uint groupBounds[kMaxViews * 6];
 
 uint orderedBits(float f) {
   uint u = floatBitsToUint(f);
@@ -49,9 +51,6 @@ int viewOf(vec3 P, out vec3 image) {
 }
 
 void main() {
-  uint i = gl_LocalInvocationIndex;
-  if (i < uint(kMaxViews * 6)) groupBounds[i] = (i & 1u) == 0u ? 0xffffffffu : 0u;
-  barrier();
   ivec2 size = textureSize(u_gPosition, 0);
   vec3 lo[kMaxViews], hi[kMaxViews];
   for (int f = 0; f < kMaxViews; ++f) {
@@ -74,15 +73,8 @@ void main() {
   for (int f = 0; f < u_viewCount; ++f) {
     if (!(lo[f].x <= hi[f].x)) continue;
     for (int c = 0; c < 3; ++c) {
-      atomicMin(groupBounds[f * 6 + 2 * c], orderedBits(lo[f][c]));
-      atomicMax(groupBounds[f * 6 + 2 * c + 1], orderedBits(hi[f][c]));
+      atomicMin(bounds[f * 6 + 2 * c], orderedBits(lo[f][c]));
+      atomicMax(bounds[f * 6 + 2 * c + 1], orderedBits(hi[f][c]));
     }
-  }
-  barrier();
-  if (i < uint(u_viewCount * 6)) {
-    if ((i & 1u) == 0u)
-      atomicMin(bounds[i], groupBounds[i]);
-    else
-      atomicMax(bounds[i], groupBounds[i]);
   }
 }

@@ -24,7 +24,11 @@ float edgeLevel(vec3 a, vec3 b) {
   vec2 ia = image(a), ib = image(b), im = image(0.5 * (a + b));
   float len = length(im - ia) + length(ib - im);
   float errorNdc = 2.0 * u_paraboloid_max_error / u_shadowMapSize;
-  float pieces = len * sqrt(kParaboloidWindow / (paraboloidZoom(u_shadowView) * 8.0 * errorNdc));
+  // Zoomed unequally (zx > zy), a circle's image is an ellipse of largest curvature zx / zy^2
+  // times the circle's: the bound takes zy^2 / zx for the zoom.
+  vec2 z = paraboloidZooms(u_shadowView);
+  float curvatureZoom = min(z.x, z.y) * min(z.x, z.y) / max(z.x, z.y);
+  float pieces = len * sqrt(kParaboloidWindow / (curvatureZoom * 8.0 * errorNdc));
   return isnan(pieces) ? 64.0 : clamp(ceil(pieces), 1.0, 64.0);
 }
 

@@ -53,33 +53,49 @@ void arcsImageBox(const std::vector<glm::vec3>& dirs, glm::vec2& lo, glm::vec2& 
 
 }  // namespace
 
-glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap) {
-  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+glm::vec4 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap) {
+  const glm::vec4 whole(0.0f, 0.0f, 1.0f, 1.0f);
   glm::vec3 sum(0.0f);
   for (const glm::vec3& d : dirs) sum += d;
   if (dirs.empty() || !(glm::length(sum) > 1e-6f)) return whole;
   if (!withinOneHemisphere(dirs, glm::normalize(sum))) return whole;
   glm::vec2 lo, hi;
   arcsImageBox(dirs, lo, hi);
-  return paraboloidWindowAround(lo, hi, size, snap);
+  return paraboloidWindowAround(lo, hi, size, snap, true);
 }
 
-glm::vec3 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap) {
-  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+namespace {
+
+// The zoom of the window along an axis where the box spans `side`: 5 % on each side, then 4
+// texels of the map this zoom makes: side' = 1.1 side + 8 texels of 2 / (zoom size) with
+// zoom = 2 / side'. 0 where it would not magnify (the whole disk along that axis).
+float windowZoom(float side, int size, bool snap) {
+  const float texelsLeft = 1.0f - 8.0f / float(std::max(size, 16));
+  float zoom = 2.0f * texelsLeft / (1.1f * side);
+  if (!(zoom > 1.0f)) return 0.0f;  // NaN too
+  zoom = std::min(zoom, kMaxZoom);
+  return snap ? std::max(1.0f, std::exp2(std::floor(std::log2(zoom) * 4.0f) / 4.0f)) : zoom;
+}
+
+}  // namespace
+
+glm::vec4 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap, bool square) {
+  const glm::vec4 whole(0.0f, 0.0f, 1.0f, 1.0f);
   lo = glm::max(lo, glm::vec2(-1.0f));
   hi = glm::min(hi, glm::vec2(1.0f));
   if (!(lo.x <= hi.x && lo.y <= hi.y)) return whole;
-  const float side = std::max(hi.x - lo.x, hi.y - lo.y);
-  // 5 % on each side, then 4 texels of the map this zoom makes: side' = 1.1 side + 8 texels of
-  // 2 / (zoom size) with zoom = 2 / side'.
-  const float texelsLeft = 1.0f - 8.0f / float(std::max(size, 16));
-  float zoom = 2.0f * texelsLeft / (1.1f * side);
-  if (!(zoom > 1.0f)) return whole;  // NaN too
-  zoom = std::min(zoom, kMaxZoom);
+  glm::vec2 side = hi - lo;
+  if (square) side = glm::vec2(std::max(side.x, side.y));
+  glm::vec2 zoom(windowZoom(side.x, size, snap), windowZoom(side.y, size, snap));
+  if (zoom.x == 0.0f && zoom.y == 0.0f) return whole;
   glm::vec2 centre = 0.5f * (lo + hi);
+  for (int a = 0; a < 2; ++a)
+    if (zoom[a] == 0.0f) {  // that axis whole
+      zoom[a] = 1.0f;
+      centre[a] = 0.0f;
+    }
   if (snap) {
-    zoom = std::max(1.0f, std::exp2(std::floor(std::log2(zoom) * 4.0f) / 4.0f));
-    const float texel = 2.0f / (zoom * float(size));
+    const glm::vec2 texel = 2.0f / (zoom * float(size));
     centre = glm::round(centre / texel) * texel;
   }
   return {centre, zoom};
@@ -125,8 +141,9 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in, const std::
       const ViewPixelBounds& b = (*seen)[size_t(h)];
       out.needed.push_back(b.valid);
       if (fit && b.valid) {
-        out.space.views.back().paraboloidWindow = paraboloidWindowAround(b.lo, b.hi, size, snap);
-        out.space.views.back().texelWorldSize /= out.space.views.back().paraboloidWindow.z;
+        LightView& fitted = out.space.views.back();
+        fitted.paraboloidWindow = paraboloidWindowAround(b.lo, b.hi, size, snap, false);
+        fitted.texelWorldSize /= std::min(fitted.paraboloidWindow.z, fitted.paraboloidWindow.w);
       }
       continue;
     }
@@ -144,7 +161,7 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in, const std::
         dirs.push_back(glm::normalize(d));
       }
       out.space.views.back().paraboloidWindow = fitParaboloidWindow(dirs, size, snap);
-      out.space.views.back().texelWorldSize /= out.space.views.back().paraboloidWindow.z;
+      out.space.views.back().texelWorldSize /= out.space.views.back().paraboloidWindow.z;  // square
     }
   }
   return out;

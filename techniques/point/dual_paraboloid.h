@@ -25,13 +25,14 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in,
 // of them, whose images are circle arcs (the map is the stereographic projection of the
 // directions): the window is the square around those images, cut to the disk's, when the
 // directions lie in one closed hemisphere (the drawn one, or within 89 degrees of their mean);
-// (0, 0, 1), the whole disk, when there are none, they do not, or two are opposite. snap: the zoom on a ladder of
+// (0, 0, 1, 1), the whole disk, when there are none, they do not, or two are opposite. snap: the zoom on a ladder of
 // quarter octaves and the centre on whole texels, so the texel grid stands still while the camera moves within a step.
-glm::vec3 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap);
+glm::vec4 fitParaboloidWindow(const std::vector<glm::vec3>& dirs, int size, bool snap);
 // The window around the box [lo, hi] of images on the whole disk (paraboloidDiskImage), with the
-// same margins and snapping, cut to the disk's square; the whole disk where it magnifies by less
-// than 1 or the box is empty.
-glm::vec3 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap);
+// same margins and snapping, cut to the disk's square; the whole disk along an axis where it
+// would magnify by less than 1, and where the box is empty. square: one zoom for both axes, from
+// the longer side (fitParaboloidWindow); else each axis its own (point.fit_visible).
+glm::vec4 paraboloidWindowAround(glm::vec2 lo, glm::vec2 hi, int size, bool snap, bool square);
 
 std::unique_ptr<Layout> makeDualParaboloidLayout();
 

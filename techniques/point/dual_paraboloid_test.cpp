@@ -103,7 +103,8 @@ TEST(DualParaboloid, FittedWindowHoldsEveryDirectionBetweenItsInputs) {
     const float spread = glm::radians(4.0f + 0.4f * seed);
     const std::vector<glm::vec3> dirs = directionsAround(axis, spread, 3 + seed % 6, seed);
     for (bool snap : {false, true}) {
-      const glm::vec3 w = fitParaboloidWindow(dirs, size, snap);
+      const glm::vec4 w = fitParaboloidWindow(dirs, size, snap);
+      EXPECT_EQ(w.z, w.w);  // square
       ASSERT_GT(w.z, 1.0f) << "seed " << seed << ": directions within " << glm::degrees(spread) << " degrees";
       LightView view;
       view.projection = LightView::Projection::Paraboloid;
@@ -144,7 +145,7 @@ TEST(DualParaboloid, FittedWindowHoldsEveryDirectionBetweenItsInputs) {
 // No directions, directions all around (the light inside what is seen), or two opposite ones:
 // the whole disk.
 TEST(DualParaboloid, AWindowThatCannotBeBoundedIsTheWholeDisk) {
-  const glm::vec3 whole(0.0f, 0.0f, 1.0f);
+  const glm::vec4 whole(0.0f, 0.0f, 1.0f, 1.0f);
   EXPECT_EQ(fitParaboloidWindow({}, 512, true), whole);
   EXPECT_EQ(fitParaboloidWindow({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}, 512, true),
             whole);
@@ -181,6 +182,24 @@ TEST(DualParaboloid, FittedWindowsHoldWhatEachCameraSees) {
       ASSERT_LE(std::max(std::abs(c.x), std::abs(c.y)), inside) << cam.name << " hemisphere " << h << " point " << i;
     }
   }
+}
+
+// point.fit_visible's windows fit each axis on its own: a box wide along x and flat along y
+// keeps the whole disk along x (no magnification there) and zooms along y, the box inside with
+// its margin; square, both axes take the wide side's zoom (here none: the whole disk).
+TEST(DualParaboloid, AWindowFittedPerAxisZoomsOnlyWhereTheBoxIsNarrow) {
+  const glm::vec2 lo(-0.9f, -0.1f), hi(0.9f, 0.2f);
+  const int size = 512;
+  const glm::vec4 w = paraboloidWindowAround(lo, hi, size, false, false);
+  EXPECT_EQ(w.x, 0.0f);
+  EXPECT_EQ(w.z, 1.0f);
+  // 2 (1 - 8 / 512) / (1.1 * 0.3): the 5 % and the 4 texels on each side.
+  EXPECT_NEAR(w.w, 2.0f * (1.0f - 8.0f / 512.0f) / 0.33f, 1e-3f);
+  for (const glm::vec2 c : {lo, hi}) {
+    const float y = (c.y - w.y) * w.w;
+    EXPECT_LT(std::abs(y), 1.0f - 4.0f * 2.0f / size) << c.y;
+  }
+  EXPECT_EQ(paraboloidWindowAround(lo, hi, size, false, true), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
 }
 
 }  // namespace

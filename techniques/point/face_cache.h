@@ -24,7 +24,8 @@ struct FaceContent {
   // false: a view that is no projective map (a paraboloid's hemisphere), where any moving
   // instance redraws it (its frustum planes would not bound it).
   bool projective = true;
-  glm::vec3 paraboloidWindow{0.0f, 0.0f, 1.0f};  // a paraboloid's fitted window (its viewProj does not move with it)
+  glm::vec4 paraboloidWindow{0.0f, 0.0f, 1.0f,
+                             1.0f};  // a paraboloid's fitted window (its viewProj does not move with it)
   bool operator==(const FaceContent&) const = default;
 };
 

@@ -128,8 +128,9 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
     const bool needed = !receivers.empty();
     out.needed.push_back(needed);
     if (casters.empty()) casters = region;
-    out.space.views.push_back(
-        fitPerspective(faceLight, view, needed ? receivers : region, casters, size, needed, snap, in.jitter));
+    out.space.views.push_back(fitPerspective(faceLight, view, needed ? receivers : region, casters, size, needed, snap,
+                                             in.jitter,
+                                             /*squareTexels=*/seen == nullptr));
   }
   return out;
 }

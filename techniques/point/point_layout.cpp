@@ -10,6 +10,7 @@
 #include "point/dual_paraboloid.h"
 #include "point/face_cache.h"
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -135,9 +136,13 @@ class PointLayoutState : public LayoutState {
       if (!needed_[v]) continue;
       const LightView& view = space_.views[v];
       paraboloid = view.projection == LightView::Projection::Paraboloid;
-      const float zoom = paraboloid ? view.paraboloidWindow.z : 2.0f / (view.windowMax.x - view.windowMin.x);
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%s%.2fx", zooms.empty() ? "" : ", ", zoom);
+      const glm::vec2 zoom = paraboloid ? glm::vec2(view.paraboloidWindow.z, view.paraboloidWindow.w)
+                                        : 2.0f / (view.windowMax - view.windowMin);
+      char buf[48];
+      if (std::abs(zoom.x - zoom.y) < 0.005f * zoom.x)
+        std::snprintf(buf, sizeof buf, "%s%.2fx", zooms.empty() ? "" : ", ", zoom.x);
+      else  // point.fit_visible fits a face's axes apart
+        std::snprintf(buf, sizeof buf, "%s%.2fx%.2f", zooms.empty() ? "" : ", ", zoom.x, zoom.y);
       zooms += buf;
     }
     if (zooms.empty()) return "";

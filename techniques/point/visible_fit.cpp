@@ -25,13 +25,15 @@ float fromOrderedBits(uint32_t u) {
 }  // namespace
 
 ParamDecl fitVisibleParam() {
-  return {.key = "point.fit_visible",
-          .type = ParamType::Bool,
-          .defaultValue = 0,
-          .help =
-              "fit each face (each hemisphere, with paraboloid.fit) to the pixels the camera sees in it, from a "
-              "GPU min/max reduction of the G-buffer before the shadow pass (SDSM per face, beyond the papers); "
-              "off: to the view frustum's part of the scene. A face no visible pixel reads is not drawn"};
+  return {
+      .key = "point.fit_visible",
+      .type = ParamType::Bool,
+      .defaultValue = 0,
+      .help =
+          "fit each face (each hemisphere, with paraboloid.fit) to the pixels the camera sees in it, each axis on its "
+          "own, from a "
+          "GPU min/max reduction of the G-buffer before the shadow pass (SDSM per face, beyond the papers); "
+          "off: to the view frustum's part of the scene. A face no visible pixel reads is not drawn"};
 }
 
 std::vector<glm::vec3> pixelBoundsCorners(const ViewPixelBounds& b, const glm::mat4& view, int size) {
@@ -74,7 +76,7 @@ std::vector<ViewPixelBounds> ViewPixelReduction::reduce(const PartContext& ctx, 
   p.set("u_lightRange", light.range > 0.0f ? light.range : 1e30f);
   for (int v = 0; v < count; ++v) p.set("u_faceView[" + std::to_string(v) + "]", space.views[size_t(v)].view);
   bindStorage("PointFaceBounds", buffer_);
-  glDispatchCompute((ctx.width + 127) / 128, (ctx.height + 127) / 128, 1);  // 16x16 invocations of 8x8 pixels
+  glDispatchCompute((ctx.width + 127) / 128, (ctx.height + 127) / 128, 1);  // 8x8 invocations of 16x16 pixels
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glGetNamedBufferSubData(buffer_, 0, sizeof(raw), raw);
   for (int v = 0; v < count; ++v) {
