@@ -7,6 +7,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,5 +25,14 @@ void bindStorage(const std::string& block, GLuint buffer);
 void assignStorageBindings(GLuint program);
 // The block names assigned so far, in binding order (index = binding point).
 std::vector<std::string> storageBlockNames();
+
+// A float a shader stored with atomicMin/atomicMax as an order-preserving uint (GLSL
+// `orderedBits`: the sign bit set for positives, every bit flipped for negatives), read back.
+inline float floatFromOrderedBits(uint32_t u) {
+  u = (u & 0x80000000u) != 0u ? u & 0x7fffffffu : ~u;
+  float f;
+  std::memcpy(&f, &u, sizeof(f));
+  return f;
+}
 
 }  // namespace sl

@@ -7,20 +7,11 @@
 #include "part/light_frame.h"
 #include "part/frame_graph.h"
 
-#include <cstring>
-
 namespace sl {
 
 namespace {
 
 constexpr int kRing = 4;  // latency 0..3: the buffer of frame k is read in frame k + latency
-
-float fromOrderedBits(uint32_t u) {
-  u = (u & 0x80000000u) != 0u ? u & 0x7fffffffu : ~u;
-  float f;
-  std::memcpy(&f, &u, sizeof(f));
-  return f;
-}
 
 }  // namespace
 
@@ -67,7 +58,7 @@ struct SdsmState::Gpu {
     glGetNamedBufferSubData(buffers[slot], 0, sizeof(raw), raw);
     VisibleBounds v;
     float f[8];
-    for (int i = 0; i < 8; ++i) f[i] = fromOrderedBits(raw[i]);
+    for (int i = 0; i < 8; ++i) f[i] = floatFromOrderedBits(raw[i]);
     v.valid = f[0] <= f[1] && std::isfinite(f[0]) && std::isfinite(f[1]);
     v.depthMin = f[0];
     v.depthMax = f[1];

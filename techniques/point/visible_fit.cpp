@@ -7,20 +7,12 @@
 #include "part/contexts.h"
 
 #include <cmath>
-#include <cstring>
 
 namespace sl {
 
 namespace {
 
 constexpr int kMaxViews = 6;  // passes/point_face_bounds.comp
-
-float fromOrderedBits(uint32_t u) {
-  u = (u & 0x80000000u) != 0u ? u & 0x7fffffffu : ~u;
-  float f;
-  std::memcpy(&f, &u, sizeof(f));
-  return f;
-}
 
 }  // namespace
 
@@ -81,7 +73,7 @@ std::vector<ViewPixelBounds> ViewPixelReduction::reduce(const PartContext& ctx, 
   glGetNamedBufferSubData(buffer_, 0, sizeof(raw), raw);
   for (int v = 0; v < count; ++v) {
     float f[6];
-    for (int k = 0; k < 6; ++k) f[k] = fromOrderedBits(raw[v * 6 + k]);
+    for (int k = 0; k < 6; ++k) f[k] = floatFromOrderedBits(raw[v * 6 + k]);
     ViewPixelBounds& b = out[size_t(v)];
     b.valid = f[0] <= f[1] && f[2] <= f[3] && f[4] <= f[5] && std::isfinite(f[0]) && std::isfinite(f[1]) &&
               std::isfinite(f[2]) && std::isfinite(f[3]) && std::isfinite(f[5]);
