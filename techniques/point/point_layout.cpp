@@ -96,6 +96,7 @@ class PointLayoutState : public LayoutState {
   // the views compute() made (the same input gives the same rolled views), before the shadow pass.
   void refitToPixels(const PartContext& ctx) {
     const std::vector<ViewPixelBounds> seen = reduction_->reduce(ctx, space_, ctx.shadowedLight());
+    if (seen.empty()) return;  // the pass did not run: the frustum fit stays
     bool pointLight = false;
     FaceViews v = viewsOrFocused(spec_, input_, pointLight, &seen);
     adopt(v);

@@ -53,9 +53,9 @@ ViewPixelReduction::~ViewPixelReduction() { glDeleteBuffers(1, &buffer_); }
 std::vector<ViewPixelBounds> ViewPixelReduction::reduce(const PartContext& ctx, const LightSpace& space,
                                                         const Light& light) {
   const int count = std::min(static_cast<int>(space.views.size()), kMaxViews);
-  std::vector<ViewPixelBounds> out(static_cast<size_t>(count));
   Program& p = ctx.shaders->get({"point face bounds", {{GL_COMPUTE_SHADER, "passes/point_face_bounds.comp"}}, ""});
-  if (!p.valid() || count == 0) return out;
+  if (!p.valid() || count == 0) return {};  // no program (a shader error shown): the frustum fit stays
+  std::vector<ViewPixelBounds> out(static_cast<size_t>(count));
   uint32_t raw[kMaxViews * 6];
   for (int i = 0; i < kMaxViews * 6; ++i) raw[i] = (i & 1) == 0 ? ~0u : 0u;
   glNamedBufferSubData(buffer_, 0, sizeof(raw), raw);

@@ -35,7 +35,8 @@ class ViewPixelReduction {
  public:
   ViewPixelReduction();
   ~ViewPixelReduction();
-  // The bounds of every view of `space` (at most 6; paraboloid: the views are hemispheres).
+  // The bounds of every view of `space` (at most 6; paraboloid: the views are hemispheres);
+  // empty when the pass's program does not build.
   std::vector<ViewPixelBounds> reduce(const PartContext& ctx, const LightSpace& space, const Light& light);
 
  private:
