@@ -32,10 +32,7 @@ layout(std430) buffer DepthBounds {
 shared uint groupBounds[8];
 const int kBlock = 4;  // pixels per invocation along each axis (sdsm.cpp dispatches by it)
 
-uint orderedBits(float f) {
-  uint u = floatBitsToUint(f);
-  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
-}
+#include "common/ordered_bits.glsl"
 
 void main() {
   if (gl_LocalInvocationIndex < 8u) groupBounds[gl_LocalInvocationIndex] = (gl_LocalInvocationIndex & 1u) == 0u ? 0xffffffffu : 0u;

@@ -24,10 +24,7 @@ layout(std430) buffer PointFaceBounds {
   uint bounds[kMaxViews * 6];  // per view: x min, max; y min, max; distance min, max
 };
 
-uint orderedBits(float f) {
-  uint u = floatBitsToUint(f);
-  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
-}
+#include "common/ordered_bits.glsl"
 
 // The view a point reads, and its image coordinates and distance there (xy, z).
 int viewOf(vec3 P, out vec3 image) {

@@ -134,9 +134,6 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in, const std::
     out.space.views.push_back(v);
     // The lookup reads hemisphere 0 in front of the plane through the light across its axis, 1
     // behind it: a hemisphere is needed when a visible receiver lies on its side.
-    std::vector<glm::vec4> planes = frustum;
-    planes.push_back(glm::vec4(axes[h], -glm::dot(axes[h], light.position)));
-    const std::vector<glm::vec3> receivers = clipCornersToPlanes(box, planes);
     if (seen && size_t(h) < seen->size()) {  // point.fit_visible: the pixels' own images
       const ViewPixelBounds& b = (*seen)[size_t(h)];
       out.needed.push_back(b.valid);
@@ -147,6 +144,9 @@ FaceViews paraboloidViews(const Light& light, const LayoutInput& in, const std::
       }
       continue;
     }
+    std::vector<glm::vec4> planes = frustum;
+    planes.push_back(glm::vec4(axes[h], -glm::dot(axes[h], light.position)));
+    const std::vector<glm::vec3> receivers = clipCornersToPlanes(box, planes);
     out.needed.push_back(!receivers.empty());
     if (fit && !receivers.empty()) {
       std::vector<glm::vec3> dirs;

@@ -17,15 +17,14 @@ constexpr int kMaxViews = 6;  // passes/point_face_bounds.comp
 }  // namespace
 
 ParamDecl fitVisibleParam() {
-  return {
-      .key = "point.fit_visible",
-      .type = ParamType::Bool,
-      .defaultValue = 0,
-      .help =
-          "fit each face (each hemisphere, with paraboloid.fit) to the pixels the camera sees in it, each axis on its "
-          "own, from a "
-          "GPU min/max reduction of the G-buffer before the shadow pass (SDSM per face, beyond the papers); "
-          "off: to the view frustum's part of the scene. A face no visible pixel reads is not drawn"};
+  return {.key = "point.fit_visible",
+          .type = ParamType::Bool,
+          .defaultValue = 0,
+          .help =
+              "fit each face (each hemisphere, with paraboloid.fit) to the pixels the camera sees in it, each axis "
+              "on its own, from a GPU min/max reduction of the G-buffer before the shadow pass (SDSM per face, "
+              "beyond the papers); off: to the view frustum's part of the scene. A face no visible pixel reads is "
+              "not drawn"};
 }
 
 std::vector<glm::vec3> pixelBoundsCorners(const ViewPixelBounds& b, const glm::mat4& view, int size) {
