@@ -19,7 +19,7 @@ inline StreetTruth streetTruth(GlHarness& h, int width, int height) { return sce
 inline std::string presetTestName(const ::testing::TestParamInfo<std::string>& info) {
   std::string name = info.param;
   for (char& ch : name)
-    if (ch == '-') ch = '_';
+    if (ch == '-' || ch == '@') ch = '_';
   return name;
 }
 
