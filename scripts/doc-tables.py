@@ -26,7 +26,7 @@ BEGIN, END = "<!-- generated:", "<!-- end generated -->"
 
 
 def docs():
-    for pattern in ("*.md", "docs/*.md", "techniques/*/README.md"):
+    for pattern in ("*.md", "docs/*.md", "techniques/*/*.md"):
         yield from sorted(ROOT.glob(pattern))
 
 

@@ -297,4 +297,54 @@ glm::vec3 lightRayPoint(const LightView& view, glm::vec2 uv, float d) {
   return glm::vec3(invView * glm::vec4(p, 1.0f));
 }
 
+std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points) {
+  // Andrew's monotone chain.
+  std::sort(points.begin(), points.end(),
+            [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  std::vector<glm::vec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vector<glm::vec3>& receivers) {
+  if (view.projection != LightView::Projection::Matrix || receivers.empty()) return {};
+  // A perspective view (or a warp's) sees the body's part in front of the light (w > 0; behind
+  // it nothing reads the map): the body's points there and, between each point in front and
+  // each behind, where the segment crosses w = wMin (the hull of those holds the clipped body).
+  const float wMin = 1e-6f * std::max(view.farPlane, 1e-3f);
+  std::vector<glm::vec4> clip;
+  for (const glm::vec3& p : receivers) clip.push_back(view.viewProj * glm::vec4(p, 1.0f));
+  std::vector<glm::vec4> front;
+  for (const glm::vec4& a : clip) {
+    if (a.w >= wMin) {
+      front.push_back(a);
+      continue;
+    }
+    for (const glm::vec4& b : clip)
+      if (b.w >= wMin) front.push_back(glm::mix(a, b, (wMin - a.w) / (b.w - a.w)));
+  }
+  std::vector<glm::vec2> uv;
+  for (const glm::vec4& c : front) {
+    const glm::vec2 q = glm::vec2(c) / c.w * 0.5f + 0.5f;
+    if (!std::isfinite(q.x) || !std::isfinite(q.y)) return {};
+    uv.push_back(q);
+  }
+  if (uv.empty()) return {};
+  return convexHull(uv);
+}
+
 }  // namespace sl

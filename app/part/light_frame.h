@@ -67,6 +67,14 @@ FocusBody focusBody(const LayoutInput& in);
 // to for spot lights and degenerate views.
 LightSpace focusedMap(const LayoutInput& in, const FocusBody& body);
 
+// The convex hull, in `view`'s map uv, of the convex body with corners `receivers`
+// (LightView::receiverHull), clipped to its part in front of the light; empty when all of it is
+// behind, or the view bends its projection (LogPSM, paraboloid), where a hull of the corners
+// would not hold the body.
+std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vector<glm::vec3>& receivers);
+// The convex hull of points (counter-clockwise, no repeated or collinear vertices).
+std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points);
+
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.
 float quantizeTexelSize(float texel);

@@ -53,6 +53,10 @@ struct LightView {
   // the zoom along x and y, equal unless point.fit_visible fits the axes apart.
   // (0, 0, 1, 1): the whole disk.
   glm::vec4 paraboloidWindow{0.0f, 0.0f, 1.0f, 1.0f};
+  // A convex polygon in map uv (layer 0) holding every receiver this view serves (the focused
+  // fit's body, projected), so that a pass over the map may skip texels no visible pixel reads
+  // (the moment maps' blur). Empty: not known, every texel may be read.
+  std::vector<glm::vec2> receiverHull;
 };
 
 // A paraboloid view (Brabec, Annen & Seidel 2002) maps the direction d from the light, in its

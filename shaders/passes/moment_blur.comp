@@ -71,6 +71,17 @@ layout(SL_BLUR_FORMAT6, binding = 6) writeonly uniform image2DArray u_dst6;
 layout(SL_BLUR_FORMAT7, binding = 7) writeonly uniform image2DArray u_dst7;
 #endif
 
+#ifdef SL_BLUR_GROUPS
+// Only the work groups a visible receiver's lookups need run (techniques/prefiltered/
+// blur_spans.h): the dispatch is a list, group k makes the runs of group tiles[u_groupOffset +
+// k]. A group skipped by a branch would cost as much on llvmpipe, which runs every lane's side.
+layout(std430) readonly buffer SlBlurGroups { uvec2 tiles[]; };
+uniform int u_groupOffset;
+uvec2 groupOrigin() { return tiles[u_groupOffset + int(gl_WorkGroupID.x)] * gl_WorkGroupSize.xy; }
+#else
+uvec2 groupOrigin() { return gl_WorkGroupID.xy * gl_WorkGroupSize.xy; }
+#endif
+
 // Every target's window: target t's texel i at g_window[t * kWindow + i].
 vec4 g_window[SL_MOMENT_TARGETS * kWindow];
 
@@ -136,8 +147,9 @@ vec4 filtered(int t, int o) {
 
 void main() {
   int last = textureSize(SL_BLUR_SIZE_OF, 0).x - 1;
-  int start = int(gl_GlobalInvocationID.x) * SL_BLUR_RUN;
-  int line = int(gl_GlobalInvocationID.y);
+  uvec2 id = groupOrigin() + gl_LocalInvocationID.xy;
+  int start = int(id.x) * SL_BLUR_RUN;
+  int line = int(id.y);
   if (start > last || line > last) return;
   fetchWindow(start, line, last);
   SL_STORE_RUN(0, u_dst0)

@@ -51,9 +51,11 @@ class FocusedLayout : public Layout {
       receivers = visibleBoxCorners(light, in.visible);
     int size = in.params->i("shadowmap.size");
     bool snap = in.params->b("layout.snap");
-    if (light.type == Light::Type::Spot)
-      return LightSpace::single(fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter), size);
-    return LightSpace::single(fitOrthographic(view, receivers, casters, size, snap, in.jitter), size);
+    LightView fitted = light.type == Light::Type::Spot
+                           ? fitPerspective(light, view, receivers, casters, size, true, snap, in.jitter)
+                           : fitOrthographic(view, receivers, casters, size, snap, in.jitter);
+    fitted.receiverHull = receiverHullInMap(fitted, receivers);
+    return LightSpace::single(fitted, size);
   }
 };
 

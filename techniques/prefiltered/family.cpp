@@ -21,7 +21,8 @@ void addMomentViewKeys(std::map<std::string, ColourKey>& keys) {
                      {{{1.0f, 0.0f, 1.0f}, "magenta: NaN/Inf"},
                       {{0.0f, 0.0f, 0.0f}, "black: value <= 0 (e.g. EVSM's negative warp)"},
                       {{0.08f, 0.08f, 0.10f}, "near-black: outside the layers' tiles"}},
-                     "view.channel picks it: 0 depth (or warp), 1 its square; linear to 1, log above"};
+                     "view.channel picks it: 0 depth (or warp), 1 its square; linear to 1, log above; texels "
+                     "filter.skip_unread leaves (no visible receiver reads them) show an empty texel's"};
   // shaders/views/moments.frag (SL_VIEW_VARIANCE), representationVariance() of each module in
   // shaders/representations/prefiltered/
   keys["variance"] = {"variance of the filtered moments (log, fixed scale)",
@@ -30,7 +31,7 @@ void addMomentViewKeys(std::map<std::string, ColourKey>& keys) {
                        {0.333f, {0.10f, 0.50f, 0.55f}, "2e-6 depth^2"},
                        {0.667f, {0.35f, 0.75f, 0.35f}, "5e-4 depth^2"},
                        {1.0f, {0.98f, 0.90f, 0.20f}, "0.1 depth^2"}},
-                      {{{0.0f, 0.0f, 0.0f}, "black: variance <= 0 (flat box, empty map)"},
+                      {{{0.0f, 0.0f, 0.0f}, "black: variance <= 0 (flat box, empty map, texels the blur skipped)"},
                        {{1.0f, 1.0f, 1.0f}, "white: a notch per decade in the bottom key band"},
                        {{0.08f, 0.08f, 0.10f}, "near-black: outside the layers' tiles"}},
                       "over the filter.width box; EVSM/EWGF/LVSM: of the warped depth; tile per layer"};

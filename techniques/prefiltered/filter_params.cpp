@@ -40,6 +40,12 @@ std::vector<ParamDecl> filterParams(bool withSat) {
        .defaultValue = 5,
        .unit = "texels",
        .help = "width of the box the moments are averaged over (1 = bilinear lookups only)"},
+      {.key = "filter.skip_unread",
+       .type = ParamType::Bool,
+       .defaultValue = 1,
+       .help = "the blur filters only the texels a visible receiver can read (the fitted layouts' receiver "
+               "body in the map, widened by the lookup and the kernel; beyond the papers); the rest hold "
+               "the moments of an empty texel. Off: the whole map"},
       viewChannelParam(),
   };
 }

@@ -3,8 +3,12 @@
 // through a scratch target), or then mip-mapped by 2x2 box downsampling, or summed into a table
 // (moment_sat.cpp). Filters work in log space for ESM (SL_MOMENT_LOG_FILTER) and drop
 // non-finite taps, so one broken texel cannot spread into a lit or black square.
+#include "gl/storage_blocks.h"
 #include "gl/texture_units.h"
+#include "prefiltered/blur_spans.h"
 #include "prefiltered/moment_state.h"
+
+#include <optional>
 
 namespace sl {
 
@@ -27,9 +31,6 @@ std::vector<const Texture2D*> pointers(const std::vector<Texture2D>& v) {
 
 std::vector<const Texture2D*> pointers(const std::vector<Texture2D*>& v) { return {v.begin(), v.end()}; }
 
-// Texels of one row or column a blur invocation filters.
-constexpr int kBlurRun = 8;
-
 }  // namespace
 
 const char* imageFormatName(GLenum format) {
@@ -49,17 +50,53 @@ const char* imageFormatName(GLenum format) {
   }
 }
 
-void MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
-                            const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique) {
+std::optional<BlurGroups> MomentMapState::groupsFor(const std::vector<glm::vec2>& hull) const {
+  if (!skipsUnread() || hull.empty()) return std::nullopt;
+  const int size = depth_.width();
+  return blurGroups(blurSpans(hull, size, kBlurRun, kLookupReach), size, config_.width / 2);
+}
+
+void MomentMapState::uploadGroups(const BlurGroups& groups) {
+  std::vector<glm::uvec2> both = groups.first;
+  both.insert(both.end(), groups.second.begin(), groups.second.end());
+  if (both.empty()) both.push_back(glm::uvec2(0));  // a buffer is never empty
+  if (!groups_) glCreateBuffers(1, &groups_);
+  glNamedBufferData(groups_, static_cast<GLsizeiptr>(both.size() * sizeof(glm::uvec2)), both.data(), GL_STREAM_DRAW);
+  bindStorage("SlBlurGroups", groups_);
+}
+
+void MomentMapState::clearLayer(int layer) {
+  for (size_t t = 0; t < moments_.size(); ++t)
+    glClearTexSubImage(moments_[t].id(), 0, 0, 0, layer, moments_[t].width(), moments_[t].height(), 1, GL_RGBA,
+                       GL_FLOAT, &clear_[4 * t]);
+}
+
+double MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+                              const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
+                              const std::vector<std::vector<glm::vec2>>& hulls, bool clearUnread) {
   const bool blurs = config_.blurs();
+  const int layers = std::max(depth_.layers(), 1);
+  double share = momentsInShadowPass() ? layers : 0.0;  // the soft ones' tables sum every texel
   if (!momentsInShadowPass())
-    for (int l = 0; l < std::max(depth_.layers(), 1); ++l) {
+    for (int l = 0; l < layers; ++l) {
+      const std::optional<BlurGroups> groups =
+          l < static_cast<int>(hulls.size()) ? groupsFor(hulls[static_cast<size_t>(l)]) : std::nullopt;
+      share += groups ? groups->share : 1.0;
+      std::optional<glm::ivec2> first, second;  // (offset, count) in the group list
+      if (groups) {
+        uploadGroups(*groups);
+        first = glm::ivec2(0, groups->first.size());
+        second = glm::ivec2(groups->first.size(), groups->second.size());
+      }
       // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
-      runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false);
-      if (blurs) runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true);
+      runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false, first);
+      if (!blurs) continue;
+      if (groups && clearUnread) clearLayer(l);  // a view shows the texels the blur skips
+      runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true, second);
     }
   if (config_.method == FilterMethod::Sat) buildSat(shaders);
   if (config_.method == FilterMethod::Mipmap) buildMips(shaders, drawFullscreen);
+  return share / layers;
 }
 
 void MomentMapState::buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
@@ -103,13 +140,14 @@ void MomentMapState::buildMips(ShaderLibrary& shaders, const std::function<void(
 // writes depth alone (docs/performance.md has both measured).
 void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
                                  const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst,
-                                 int layer, bool vertical) {
+                                 int layer, bool vertical, std::optional<glm::ivec2> groups) {
   const bool fromDepth = src.front() == &depth_;
   const bool blurs = config_.blurs();
   std::string prelude = fromDepth ? defines() + "#include \"" + module_ + "\"\n#define SL_BLUR_FROM_DEPTH\n"
                                   : filterDefines(config_, spec_.logFilter);
   prelude += "#define SL_BLUR_RUN " + std::to_string(kBlurRun) + "\n#define SL_BLUR_HALF " +
              std::to_string(blurs ? config_.width / 2 : 0) + "\n";
+  if (groups) prelude += "#define SL_BLUR_GROUPS\n";
   for (size_t t = 0; t < dst.size(); ++t)
     prelude += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(dst[t]->format()) + "\n";
   Program& p = shaders.get(
@@ -127,13 +165,17 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
   p.set("u_width", static_cast<float>(blurs ? config_.width : 1));
   p.set("u_layer", layer);
   p.set("u_vertical", vertical ? 1 : 0);
+  if (groups) p.set("u_groupOffset", groups->x);
   for (size_t t = 0; t < dst.size(); ++t) {
     glBindImageTexture(static_cast<GLuint>(t), dst[t]->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, dst[t]->format());
     p.set("u_dst" + std::to_string(t), static_cast<int>(t));
   }
   const GLuint size = static_cast<GLuint>(depth_.width());
   const GLuint runs = (size + kBlurRun - 1) / kBlurRun;
-  glDispatchCompute((runs + 7) / 8, (size + 7) / 8, 1);
+  if (!groups)
+    glDispatchCompute((runs + kBlurGroupSide - 1) / kBlurGroupSide, (size + kBlurGroupSide - 1) / kBlurGroupSide, 1);
+  else if (groups->y > 0)
+    glDispatchCompute(static_cast<GLuint>(groups->y), 1, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   for (size_t t = 0; t < dst.size(); ++t)
     glBindImageTexture(static_cast<GLuint>(t), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);

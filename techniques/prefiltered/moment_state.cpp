@@ -8,6 +8,7 @@
 #include "part/penumbra_params.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace sl {
 
@@ -18,6 +19,13 @@ GLenum formatFor(int channels, int bits) {
   if (channels == 1) return bits == 16 ? GL_R16F : GL_R32F;
   if (channels == 2) return bits == 16 ? GL_RG16F : GL_RG32F;
   return bits == 16 ? GL_RGBA16F : GL_RGBA32F;
+}
+
+// The status line's note of the share of the map the blur filtered (filter.skip_unread).
+std::string filteredNote(double share) {
+  char text[96];
+  std::snprintf(text, sizeof text, "blur over %.0f %% of the map (the texels visible receivers read)", 100.0 * share);
+  return text;
 }
 
 int mipLevels(int size) { return static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) + 1; }
@@ -32,6 +40,7 @@ std::string MomentMapState::statusIn(const SceneEffects& fx, const ParamSet& par
 
 MomentMapState::~MomentMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
+  if (groups_) glDeleteBuffers(1, &groups_);
 }
 
 void MomentMapState::configure(const ParamSet& params) {
@@ -51,6 +60,7 @@ void MomentMapState::configure(const ParamSet& params) {
   clear_.resize(static_cast<size_t>(4 * c.targets()), 0.0f);
   defines_ = spec_.defines ? spec_.defines(params) : "";
   logExponent_ = spec_.logFilter ? params.f(spec_.logExponentKey) : 0.0f;
+  skipUnread_ = !soft && params.b("filter.skip_unread");
 }
 
 void MomentMapState::allocate(int size, int layers) {
@@ -116,10 +126,25 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
     graph.createTexture(writes.back(), descs[t]);
   }
   const std::vector<std::string> scratch(writes.begin() + 1, writes.end());
-  graph.add({name + ctx.viewportTag, {ctx.shadowMap}, writes, [this, shaders, draw, bindTechnique, &graph, scratch] {
+  // The light space is read when the pass runs: a layout pass may have replaced it since. The
+  // texels the blur skips keep an earlier frame's moments unless a view shows them.
+  const LightSpace* lightSpace = ctx.lightSpace;
+  bool shown = false;
+  for (const std::string& v : views()) {
+    const auto it = ctx.viewTargets.find(v);
+    shown = shown || (it != ctx.viewTargets.end() && it->second);
+  }
+  graph.add({name + ctx.viewportTag,
+             {ctx.shadowMap},
+             writes,
+             [this, shaders, draw, bindTechnique, &graph, scratch, lightSpace, shown] {
                std::vector<Texture2D*> targets;
                for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
-               filter(*shaders, draw, targets, bindTechnique);
+               std::vector<std::vector<glm::vec2>> hulls;
+               if (lightSpace)
+                 for (const LightView& v : lightSpace->views) hulls.push_back(v.receiverHull);
+               const double share = filter(*shaders, draw, targets, bindTechnique, hulls, shown);
+               if (skipsUnread() && share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(share);
              }});
   addMomentViewPasses(graph, ctx, out, views());
   return out;

@@ -8,12 +8,14 @@
 #include "gl/gl_util.h"
 
 #include <glm/glm.hpp>
+#include "prefiltered/blur_spans.h"
 #include "prefiltered/moment_spec.h"
 #include "scene/scene_effects.h"
 #include "part/frame_graph.h"
 #include "part/part.h"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace sl {
@@ -60,8 +62,15 @@ class MomentMapState : public RepresentationState {
   using TechniqueBinder = std::function<void(const Program&, TextureUnits&)>;
   // Runs the passes that make the moments from the depth now (with the blur, mips or table), as
   // the frame graph's pass does. scratch: the targets of scratchTargets() (lent by the graph).
-  void filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
-              const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique);
+  // hulls: per layer, where its visible receivers fall (LightView::receiverHull); with
+  // filter.skip_unread the blur filters only the texels they can read, and clearUnread writes
+  // the moments of an empty texel over the others (a debug view shows them). Returns the share
+  // of the map's texels filtered.
+  double filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+                const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
+                const std::vector<std::vector<glm::vec2>>& hulls = {}, bool clearUnread = true);
+  // The blur skips texels no visible receiver reads (filter.skip_unread, a blur, not the soft ones).
+  bool skipsUnread() const { return skipUnread_ && config_.blurs() && !momentsInShadowPass(); }
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
@@ -79,7 +88,11 @@ class MomentMapState : public RepresentationState {
   void buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
   void runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
                    const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst, int layer,
-                   bool vertical);
+                   bool vertical, std::optional<glm::ivec2> groups);
+  // The work groups the blur runs for a layer's receiver hull (none: every group).
+  std::optional<BlurGroups> groupsFor(const std::vector<glm::vec2>& hull) const;
+  void uploadGroups(const BlurGroups& groups);
+  void clearLayer(int layer);
   const MomentSpec& spec_;
   std::string module_;
   MomentConfig config_;
@@ -88,6 +101,8 @@ class MomentMapState : public RepresentationState {
   std::string status_;
   float logExponent_ = 0.0f;
   GLuint sampler_ = 0;
+  GLuint groups_ = 0;  // storage block SlBlurGroups (passes/moment_blur.comp)
+  bool skipUnread_ = true;
   Texture2D depth_;
   std::vector<Texture2D> moments_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: every moment target + depth

@@ -381,11 +381,17 @@ void addPrefilteredPresets(std::vector<Preset>& out) {
   add("esm", "focused exponential shadow map, log-space 5x5 blur", "esm", {});
   add("evsm2", "focused EVSM, positive warp (2 moments)", "evsm", {"evsm.warps=positive"});
   add("evsm4", "focused EVSM, both warps (4 moments)", "evsm", {"evsm.warps=both"});
-  add("convolution", "focused convolution shadow map, 8 Fourier terms", "convolution", {});
+  // 16-bit coefficients: each is an average of sines and cosines in [-1, 1], which half floats
+  // hold to 5e-4, far below the series' own ringing; the same wrong pixels as 32-bit on basic,
+  // terrain and sponza, the blur a fifth cheaper (techniques/prefiltered/cost.md, "Storage").
+  add("convolution", "focused convolution shadow map, 8 Fourier terms, 16-bit", "convolution",
+      {"filter.format=float16"});
   add("gaussian", "focused Gaussian-filtered shadow map (Gumbau et al.)", "gaussian", {});
   add("ewgf", "focused exponentially warped Gaussian filtering (Gumbau et al.)", "ewgf", {});
   add("msm", "focused moment shadow map, 32-bit moments", "msm", {});
-  add("lvsm", "focused layered VSM, 4 depth layers", "lvsm", {});
+  // 16-bit moments: each layer's moments are of depth warped into that layer, the precision the
+  // layering buys (Lauritzen & McCool 2008); measured as for convolution above.
+  add("lvsm", "focused layered VSM, 4 depth layers, 16-bit", "lvsm", {"filter.format=float16"});
   add("msm16", "focused moment shadow map, 16-bit optimized quantization", "msm",
       // 2e-4, not the paper's 6e-5: 16-bit moments of a long light depth range leaked under a low
       // sun (Sponza 3 degrees: 6.4 % false light); measured in techniques/prefiltered/README.md.

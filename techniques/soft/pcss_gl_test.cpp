@@ -72,10 +72,13 @@ TEST(PcssGl, HardTechniquesSayTheyIgnoreTheRadius) {
     h.renderer.setScene(soft);
     Viewport vp(makeTechnique(preset, {"shadowmap.size=256"}));
     render(h, soft, vp, 32, 20);
-    EXPECT_EQ(vp.representation->status(), "hard: ignores light radius 0.03") << preset;
+    // (vsm's status goes on with the share of the map its blur filtered.)
+    EXPECT_EQ(vp.representation->status().rfind("hard: ignores light radius 0.03", 0), 0u)
+        << preset << ": " << vp.representation->status();
     h.renderer.setScene(basic);
     render(h, basic, vp, 32, 20);
-    EXPECT_EQ(vp.representation->status(), "") << preset;
+    EXPECT_EQ(vp.representation->status().find("radius"), std::string::npos)
+        << preset << ": " << vp.representation->status();
   }
 }
 

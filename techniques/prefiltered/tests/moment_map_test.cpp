@@ -2,6 +2,7 @@
 // to broken texels, the clear value, and every pre-filtered representation rendering finite
 // visibility in [0,1] under every filter method, format, layout and accumulation.
 #include "part/transient_textures.h"
+#include "prefiltered/blur_spans.h"
 #include "prefiltered/tests/moment_probe.h"
 #include "technique.h"
 
@@ -47,7 +48,7 @@ std::vector<float> vsmMoments(const std::vector<float>& depth) {
   return out;
 }
 
-void runFilter(GlHarness& h, const Map& m) {
+void runFilter(GlHarness& h, const Map& m, const std::vector<std::vector<glm::vec2>>& hulls = {}) {
   MomentMapState& s = *m.state;
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
@@ -62,7 +63,8 @@ void runFilter(GlHarness& h, const Map& m) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
       },
-      scratch, [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); });
+      scratch, [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); },
+      hulls);
   glDeleteVertexArrays(1, &vao);
 }
 
@@ -107,6 +109,46 @@ TEST(MomentMap, BoxBlurEqualsTheDirectBoxAverage) {
     for (size_t i = 0; i < got.size(); ++i) worst = std::max(worst, std::abs(got[i] - want[i]));
     EXPECT_LT(worst, 2e-6) << "size " << n << ", width " << width;
   }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// With a receiver hull the blur equals the whole map's wherever a lookup near the hull reads
+// (the spans the work groups are chosen from) and holds the clear value, the moments of an
+// empty texel, where no group ran; a 150² map (no multiple of a group's 64 texels) and a slanted
+// triangle.
+TEST(MomentMap, BlurOverAHullEqualsTheWholeBlurWhereLookupsRead) {
+  GlHarness h;
+  const int n = 150, width = 5;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  Map m = momentMap("vsm", {"filter.width=" + std::to_string(width)}, n);
+  std::vector<float> z(static_cast<size_t>(n) * n);
+  for (float& d : z) d = depth(rng);
+  fillDepth(m, z);
+  const std::vector<glm::vec2> hull = {{0.2f, 0.1f}, {0.9f, 0.3f}, {0.3f, 0.8f}};
+  runFilter(h, m, {hull});
+  const std::vector<float> got = m.state->moments(0).readFloats(2);
+  const std::vector<double> want = boxBlur(vsmMoments(z), n, width, 2, false, 0);
+  const std::vector<glm::ivec2> spans = blurSpans(hull, n, kBlurRun, kLookupReach);
+  const std::vector<float>& clear = m.state->clearValue();
+  long long read = 0, cleared = 0;
+  double worst = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const glm::ivec2 span = spans[static_cast<size_t>(y / kBlurRun)];
+      const size_t i = 2 * (static_cast<size_t>(y) * n + x);
+      if (x >= span.x && x <= span.y) {
+        ++read;
+        worst = std::max({worst, std::abs(got[i] - want[i]), std::abs(got[i + 1] - want[i + 1])});
+      } else if (got[i] == clear[0] && got[i + 1] == clear[1]) {
+        ++cleared;
+      } else {  // a texel of a group that ran: filtered, though nothing reads it
+        EXPECT_NEAR(got[i], want[i], 2e-6) << x << "," << y;
+      }
+    }
+  EXPECT_LT(worst, 2e-6);
+  EXPECT_GT(cleared, n * n / 5) << "the triangle leaves much of the map unread";
+  EXPECT_GT(read, n * n / 4);
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
