@@ -40,6 +40,27 @@ TEST(Cli, ListShowsEveryPresetParameterAndScene) {
     EXPECT_NE(r.output.find(s), std::string::npos) << s;
 }
 
+// Each family's README quotes its parameters from this table: every key its parts declare, each
+// with the values its presets set; an unknown family is an error naming it.
+TEST(Cli, FamilyParameterTableHoldsEveryKeyOfItsParts) {
+  for (const Family& f : allFamilies()) {
+    CliRunResult r = runCli("list --markdown params:" + f.id);
+    ASSERT_EQ(r.code, 0) << f.id << ": " << r.output;
+    auto expectKeys = [&](const std::vector<ParamDecl>& decls) {
+      for (const auto& d : decls)
+        EXPECT_NE(r.output.find("| `" + d.key + "` |"), std::string::npos) << f.id << " " << d.key;
+    };
+    for (const auto& l : f.layouts) expectKeys(l->params());
+    for (const auto& rep : f.representations) expectKeys(rep->params());
+    for (const auto& a : f.accumulations) expectKeys(a->params());
+  }
+  CliRunResult prefiltered = runCli("list --markdown params:prefiltered");
+  EXPECT_NE(prefiltered.output.find("`msm16`: float16"), std::string::npos) << prefiltered.output;
+  CliRunResult unknown = runCli("list --markdown params:no-such-family");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.output.find("no family 'no-such-family'"), std::string::npos) << unknown.output;
+}
+
 TEST(Cli, RenderWritesPngAndStats) {
   std::string png = ::testing::TempDir() + "cli_render.png", stats = ::testing::TempDir() + "cli_render.json";
   CliRunResult r =

@@ -23,7 +23,7 @@ int runListCommand(int argc, char** argv) {
   for (int i = 2; i < argc; ++i)
     if (std::string(argv[i]) == "--markdown") {
       if (i + 1 >= argc) {
-        std::cerr << "shadowlab list --markdown: name a table (families, presets, parts)\n";
+        std::cerr << "shadowlab list --markdown: name a table (families, presets, parts, params:FAMILY)\n";
         return 2;
       }
       return runListMarkdown(argv[i + 1]);

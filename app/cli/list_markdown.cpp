@@ -1,9 +1,11 @@
-// `shadowlab list --markdown TABLE`: the tables the README and docs/architecture.md quote (between
+// `shadowlab list --markdown TABLE`: the tables the README, docs/architecture.md and each family's
+// README quote (between
 // `<!-- generated: shadowlab list --markdown TABLE -->` markers, checked by scripts/doc-tables.py),
 // written from the same declarations as the panel, --set and `list`: nothing typed twice.
 #include "cli/commands.h"
 #include "technique.h"
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -69,9 +71,71 @@ void partsTable() {
   }
 }
 
+// One family's parameters: a row per distinct declaration (a key that two parts declare alike
+// is one row naming both), with the values the family's presets set, so a family's README never
+// types its parameters again. Pipes in ranges ("a|b") become ", " to read as a list.
+struct ParamRow {
+  ParamDecl decl;  // a copy: parts return their declarations by value
+  std::vector<std::string> parts;
+};
+
+bool sameDeclaration(const ParamDecl& a, const ParamDecl& b) {
+  return a.key == b.key && a.type == b.type && describeRange(a) == describeRange(b) &&
+         formatValue(a, a.defaultValue) == formatValue(b, b.defaultValue) && a.unit == b.unit && a.help == b.help;
+}
+
+void addParamRows(std::vector<ParamRow>& rows, const std::string& part, const std::vector<ParamDecl>& decls) {
+  for (const ParamDecl& d : decls) {
+    auto same = std::find_if(rows.begin(), rows.end(), [&](const ParamRow& r) { return sameDeclaration(r.decl, d); });
+    if (same != rows.end())
+      same->parts.push_back("`" + part + "`");
+    else
+      rows.push_back({d, {"`" + part + "`"}});
+  }
+}
+
+std::string presetsSetting(const Family& family, const std::string& key) {
+  std::vector<std::string> set;
+  for (const Preset& p : family.presets)
+    for (const std::string& o : p.overrides)
+      if (o.rfind(key + "=", 0) == 0) set.push_back("`" + p.id + "`: " + o.substr(key.size() + 1));
+  return joined(set);
+}
+
+std::string listedRange(const ParamDecl& d) {
+  std::string r = describeRange(d);
+  std::string out;
+  for (char c : r) out += c == '|' ? std::string(", ") : std::string(1, c);
+  return out;
+}
+
+int familyParamsTable(const std::string& id) {
+  const Family* family = nullptr;
+  for (const Family& f : allFamilies())
+    if (f.id == id) family = &f;
+  if (!family) {
+    std::cerr << "shadowlab list --markdown: no family '" << id << "' (`shadowlab list --markdown families`)\n";
+    return 2;
+  }
+  std::vector<ParamRow> rows;
+  for (const auto& l : family->layouts) addParamRows(rows, l->id(), l->params());
+  for (const auto& r : family->representations) addParamRows(rows, r->id(), r->params());
+  for (const auto& a : family->accumulations) addParamRows(rows, a->id(), a->params());
+  std::cout << "| key | values | default | presets set | parts | meaning |\n|---|---|---|---|---|---|\n";
+  for (const ParamRow& row : rows) {
+    const ParamDecl& d = row.decl;
+    std::cout << "| `" << d.key << "` | " << cell(listedRange(d)) << (d.unit.empty() ? "" : " " + d.unit) << " | "
+              << cell(formatValue(d, d.defaultValue)) << " | " << cell(presetsSetting(*family, d.key)) << " | "
+              << joined(row.parts) << " | " << cell(d.help) << " |\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runListMarkdown(const std::string& table) {
+  const std::string familyParams = "params:";
+  if (table.rfind(familyParams, 0) == 0) return familyParamsTable(table.substr(familyParams.size()));
   if (table == "families")
     familiesTable();
   else if (table == "presets")
@@ -79,7 +143,8 @@ int runListMarkdown(const std::string& table) {
   else if (table == "parts")
     partsTable();
   else {
-    std::cerr << "shadowlab list --markdown: no table '" << table << "' (tables: families, presets, parts)\n";
+    std::cerr << "shadowlab list --markdown: no table '" << table
+              << "' (tables: families, presets, parts, params:FAMILY)\n";
     return 2;
   }
   return 0;
