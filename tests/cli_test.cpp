@@ -54,6 +54,9 @@ TEST(Cli, FamilyParameterTableHoldsEveryKeyOfItsParts) {
     for (const auto& rep : f.representations) expectKeys(rep->params());
     for (const auto& a : f.accumulations) expectKeys(a->params());
   }
+  CliRunResult common = runCli("list --markdown params:common");
+  for (const auto& d : commonParams())
+    EXPECT_NE(common.output.find("| `" + d.key + "` |"), std::string::npos) << "common " << d.key;
   CliRunResult prefiltered = runCli("list --markdown params:prefiltered");
   EXPECT_NE(prefiltered.output.find("`msm16`: float16"), std::string::npos) << prefiltered.output;
   CliRunResult unknown = runCli("list --markdown params:no-such-family");

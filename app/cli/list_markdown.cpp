@@ -109,7 +109,23 @@ std::string listedRange(const ParamDecl& d) {
   return out;
 }
 
+void paramsTable(const std::vector<ParamRow>& rows, const Family* family) {
+  std::cout << "| key | values | default | presets set | parts | meaning |\n|---|---|---|---|---|---|\n";
+  for (const ParamRow& row : rows) {
+    const ParamDecl& d = row.decl;
+    std::cout << "| `" << d.key << "` | " << cell(listedRange(d)) << (d.unit.empty() ? "" : " " + d.unit) << " | "
+              << cell(formatValue(d, d.defaultValue)) << " | " << cell(family ? presetsSetting(*family, d.key) : "")
+              << " | " << joined(row.parts) << " | " << cell(d.help) << " |\n";
+  }
+}
+
 int familyParamsTable(const std::string& id) {
+  if (id == "common") {  // what every technique has (techniques/registry.cpp), in no family
+    std::vector<ParamRow> rows;
+    addParamRows(rows, "every technique", commonParams());
+    paramsTable(rows, nullptr);
+    return 0;
+  }
   const Family* family = nullptr;
   for (const Family& f : allFamilies())
     if (f.id == id) family = &f;
@@ -121,13 +137,7 @@ int familyParamsTable(const std::string& id) {
   for (const auto& l : family->layouts) addParamRows(rows, l->id(), l->params());
   for (const auto& r : family->representations) addParamRows(rows, r->id(), r->params());
   for (const auto& a : family->accumulations) addParamRows(rows, a->id(), a->params());
-  std::cout << "| key | values | default | presets set | parts | meaning |\n|---|---|---|---|---|---|\n";
-  for (const ParamRow& row : rows) {
-    const ParamDecl& d = row.decl;
-    std::cout << "| `" << d.key << "` | " << cell(listedRange(d)) << (d.unit.empty() ? "" : " " + d.unit) << " | "
-              << cell(formatValue(d, d.defaultValue)) << " | " << cell(presetsSetting(*family, d.key)) << " | "
-              << joined(row.parts) << " | " << cell(d.help) << " |\n";
-  }
+  paramsTable(rows, family);
   return 0;
 }
 
