@@ -297,28 +297,34 @@ glm::vec3 lightRayPoint(const LightView& view, glm::vec2 uv, float d) {
   return glm::vec3(invView * glm::vec4(p, 1.0f));
 }
 
-std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points) {
-  // Andrew's monotone chain.
+namespace {
+
+// Andrew's monotone chain, for float and double points.
+template <typename V>
+std::vector<V> monotoneChainHull(std::vector<V> points) {
   std::sort(points.begin(), points.end(),
-            [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+            [](const V& a, const V& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   points.erase(std::unique(points.begin(), points.end()), points.end());
   if (points.size() < 3) return points;
-  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  std::vector<glm::vec2> hull(2 * points.size());
+  auto cross = [](const V& o, const V& a, const V& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<V> hull(2 * points.size());
   size_t k = 0;
   for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
     hull[k++] = points[i];
   }
   for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
     hull[k++] = points[i];
   }
   hull.resize(k - 1);
   return hull;
 }
+
+}  // namespace
+
+std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points) { return monotoneChainHull(std::move(points)); }
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points) { return monotoneChainHull(std::move(points)); }
 
 std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vector<glm::vec3>& receivers) {
   if (view.projection != LightView::Projection::Matrix || receivers.empty()) return {};

@@ -74,6 +74,7 @@ LightSpace focusedMap(const LayoutInput& in, const FocusBody& body);
 std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vector<glm::vec3>& receivers);
 // The convex hull of points (counter-clockwise, no repeated or collinear vertices).
 std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points);
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points);
 
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.

@@ -9,27 +9,16 @@ namespace sl {
 
 namespace {
 
-// Area of the convex hull of 2D points (Andrew's monotone chain).
+// Area of the convex hull of 2D points (part/light_frame.h's hull, shoelace formula).
 double hullArea(std::vector<glm::dvec2> p) {
-  if (p.size() < 3) return 0.0;
-  std::sort(p.begin(), p.end(),
-            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  std::vector<glm::dvec2> hull(2 * p.size());
-  size_t k = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
+  const std::vector<glm::dvec2> hull = convexHull(std::move(p));
   double area = 0.0;
-  for (size_t i = 0; i + 1 < k; ++i) area += hull[i].x * hull[i + 1].y - hull[i + 1].x * hull[i].y;
-  return std::abs(area) * 0.5;
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const glm::dvec2& a = hull[i];
+    const glm::dvec2& b = hull[(i + 1) % hull.size()];
+    area += a.x * b.y - b.x * a.y;
+  }
+  return hull.size() < 3 ? 0.0 : std::abs(area) * 0.5;
 }
 
 Bounds reachOf(const Light& light, const Bounds& scene) {

@@ -65,7 +65,7 @@ TEST(BlurSpans, GroupsHoldTheReadTexelsAndWhatTheSecondDirectionReads) {
 
 TEST(BlurSpans, ConvexHullDropsInteriorAndCollinearPoints) {
   const std::vector<glm::vec2> hull =
-      convexHull({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}, {0.5f, 1.5f}, {0, 0}, {0, 1}});
+      convexHull(std::vector<glm::vec2>{{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}, {0.5f, 1.5f}, {0, 0}, {0, 1}});
   ASSERT_EQ(hull.size(), 4u);
   float area = 0.0f;  // counter-clockwise: positive shoelace area
   for (size_t i = 0; i < hull.size(); ++i) {
