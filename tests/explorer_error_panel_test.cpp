@@ -198,3 +198,22 @@ TEST(ExplorerErrorPanel, MedianIgnoresASpike) {
   EXPECT_EQ(w.count(), 5u);
   EXPECT_DOUBLE_EQ(w.median(), 2.0);
 }
+
+// A scene of several lights: the accuracy CSV has a row per other shadowed light, named by the
+// viewport and the light's number in the Scene section, with that light's own metrics and no
+// image column (the colour sums every light and sits on the viewport's row).
+TEST(ExplorerErrorPanel, OtherLightsGetARowEachWithTheirOwnMetrics) {
+  std::vector<sl::LightVisibilityError> lights(3);
+  lights[0] = {true, sl::ErrorMetrics{}};
+  lights[0].error.wrongPixelPct = 1.25;
+  lights[0].error.falseShadowPct = 1.0;
+  lights[0].error.falseLightPct = 0.25;
+  lights[2] = {true, sl::ErrorMetrics{}};
+  lights[2].error.wrongPixelPct = 0.5;
+  const std::string csv = sl::otherLightsCsvRows(2, "cube, shadowmap.size=512", lights);
+  EXPECT_EQ(csv,
+            "2 light 2,\"cube, shadowmap.size=512\",1.25,,1,0.25,0,0,\n"
+            "2 light 4,\"cube, shadowmap.size=512\",0.5,,0,0,0,0,\n")
+      << csv;
+  EXPECT_EQ(sl::otherLightsCsvRows(1, "cube", {sl::LightVisibilityError{}}), "") << "an unshadowed light has no row";
+}

@@ -67,10 +67,7 @@ struct BenchEntry {
   // A scene of several lights: `error` is the first light's; these are the others' (one per
   // Scene::otherLights entry, against the reference traced toward that light; empty `shadowed`
   // where the technique made no maps for it: unshadowed in the file or beyond lights.shadowed).
-  struct LightError {
-    bool shadowed = false;
-    ErrorMetrics error;
-  };
+  using LightError = LightVisibilityError;
   std::vector<LightError> otherLights;
   std::vector<double> convergence;  // wrong_pixel_pct per measured frame
   bool hasFlicker = false;

@@ -255,19 +255,6 @@ void finishEntry(EntryRun& run, const EntryRun& base, const BenchResult& r, cons
   if (!run.worldFrames.empty()) out.worldFlicker = meanTemporalChange(run.worldFrames, r.worldValid.data());
 }
 
-// Each other light's visibility against the reference traced toward it.
-std::vector<BenchEntry::LightError> otherLightsError(const Viewport& viewport, const ReferenceImage& ref) {
-  std::vector<BenchEntry::LightError> out(ref.otherLights.size());
-  for (size_t k = 0; k < ref.otherLights.size(); ++k) {
-    const Texture2D* tex = viewport.otherLightVisibility(k);
-    if (!tex || ref.otherLights[k].empty()) continue;
-    const std::vector<float> v = visibilityChannel(*tex);
-    if (v.size() != ref.otherLights[k].size()) continue;
-    out[k] = {true, compareVisibility(v.data(), ref.otherLights[k].data(), ref.valid.data(), v.size())};
-  }
-  return out;
-}
-
 }  // namespace
 
 BenchResult runBench(const BenchOptions& o, std::ostream& log) {
@@ -332,7 +319,7 @@ BenchResult runBench(const BenchOptions& o, std::ostream& log) {
     finishEntry(run, runs.front(), r, commonValid);
     run.out.image = viewportImageError(renderer, fr.inputs.back(), *run.viewport, r.lastReference.visibility,
                                        r.lastReference.valid, r.lastReference.otherLights);
-    run.out.otherLights = otherLightsError(*run.viewport, r.lastReference);
+    run.out.otherLights = otherLightsVisibilityError(*run.viewport, r.lastReference.otherLights, r.lastReference.valid);
     r.timer = run.out.timer;
     const BenchEntry& out = run.out;
     log << "bench: [" << e + 1 << "/" << runs.size() << "] " << out.label << ": " << out.msMedian

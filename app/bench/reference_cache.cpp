@@ -261,6 +261,20 @@ std::vector<float> visibilityChannel(const Texture2D& visibility) {
   return v;
 }
 
+std::vector<LightVisibilityError> otherLightsVisibilityError(const Viewport& viewport,
+                                                             const std::vector<std::vector<float>>& referenceOthers,
+                                                             const std::vector<uint8_t>& valid) {
+  std::vector<LightVisibilityError> out(referenceOthers.size());
+  for (size_t k = 0; k < referenceOthers.size(); ++k) {
+    const Texture2D* tex = viewport.otherLightVisibility(k);
+    if (!tex || referenceOthers[k].empty()) continue;
+    const std::vector<float> v = visibilityChannel(*tex);
+    if (v.size() != referenceOthers[k].size() || v.size() != valid.size()) continue;
+    out[k] = {true, compareVisibility(v.data(), referenceOthers[k].data(), valid.data(), v.size())};
+  }
+  return out;
+}
+
 std::vector<float> viewportVisibility(const Viewport& viewport) {
   const Texture2D* tex = viewport.visibilityTexture();
   if (!tex) throw std::runtime_error("viewport has not rendered a frame yet");

@@ -84,6 +84,18 @@ ErrorMetrics viewportErrorMetrics(const Viewport& viewport, const ReferenceImage
 ImageErrorMetrics viewportImageError(Renderer& renderer, const FrameInput& in, const Viewport& viewport,
                                      const std::vector<float>& referenceVisibility, const std::vector<uint8_t>& valid,
                                      const std::vector<std::vector<float>>& otherLights = {});
+// Each other light's visibility in a viewport's last frame against the reference traced toward
+// it: one entry per Scene::otherLights entry (`referenceOthers`, ReferenceImage::otherLights),
+// `shadowed` false where the technique made no maps for that light (unshadowed in the file, or
+// beyond lights.shadowed) or the reference has none. The bench's `other_lights` and the
+// explorer's per-light accuracy rows.
+struct LightVisibilityError {
+  bool shadowed = false;
+  ErrorMetrics error;
+};
+std::vector<LightVisibilityError> otherLightsVisibilityError(const Viewport& viewport,
+                                                             const std::vector<std::vector<float>>& referenceOthers,
+                                                             const std::vector<uint8_t>& valid);
 // The `error` debug view (RGBA8, bottom-up): grey = agree, orange = false shadow, blue = false light.
 std::vector<uint8_t> viewportErrorImage(const Viewport& viewport, const ReferenceImage& reference);
 // Grey RGBA8 (bottom-up) of a visibility buffer, for PNGs.

@@ -285,6 +285,7 @@ void ErrorPanel::measure(ExplorerState& state, Renderer& renderer, const Referen
   }
   if (v.size() != ref.visibility.size()) return;
   va.metrics = compareVisibility(v.data(), ref.visibility.data(), ref.valid.data(), v.size());
+  va.otherLights = otherLightsVisibilityError(vp, ref.otherVisibility, ref.valid);
   // The frame on screen, shaded again with the truth's visibility (the viewports just rendered it).
   FrameInput in;
   in.camera = state.camera.camera();

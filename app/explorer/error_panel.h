@@ -6,6 +6,7 @@
 // front, chart axes, per-viewport cost), tested in tests/explorer_error_panel_test.cpp.
 #pragma once
 
+#include "bench/reference_cache.h"
 #include "metrics/metrics.h"
 #include "part/frame_graph.h"
 #include "scene/scene.h"
@@ -104,6 +105,11 @@ std::string chartPointsSvg(const std::vector<ChartPoint>& points);
 std::string chartPointsCsv(const std::vector<ChartPoint>& points);
 // A CSV field: quoted when it holds a comma, quote or newline.
 std::string csvField(const std::string& text);
+// The accuracy CSV's rows for the other lights of a scene of several (one per shadowed light,
+// "V light K" in the viewport column, the image column empty: the colour sums every light and
+// is on the viewport's own row).
+std::string otherLightsCsvRows(int viewport, const std::string& config,
+                               const std::vector<LightVisibilityError>& lights);
 
 // Cost of viewport v in one frame: its own passes only (names ending in "[v]"; debug views
 // "view.*" excluded: they are display, not the technique). The shared "gbuffer" pass is kept
@@ -185,7 +191,10 @@ class ErrorPanel {
     bool haveMetrics = false;
     ErrorMetrics metrics;
     ImageErrorMetrics image;  // colour vs the same shading with the reference's visibility
-    ViewportCost cost;        // medians at the last measurement
+    // A scene of several lights: each other light's visibility against its own reference (the
+    // columns above are the first light's; `image` sums them all).
+    std::vector<LightVisibilityError> otherLights;
+    ViewportCost cost;  // medians at the last measurement
     double measuredAt = -1e9;
     uint64_t referenceId = 0;
     std::string timedConfig;  // config the timing window belongs to

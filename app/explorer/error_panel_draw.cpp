@@ -319,6 +319,18 @@ void ErrorPanel::drawAccuracyRow(int i) const {
     }
   }
   drawCostCell(va.ownMs, va.gbufferMs, timing_);
+  // A scene of several lights: a row per other shadowed light, its visibility against the
+  // reference traced toward it (the image column, which sums every light, is the row above's).
+  if (!va.haveMetrics) return;
+  for (size_t k = 0; k < va.otherLights.size(); ++k) {
+    if (!va.otherLights[k].shadowed) continue;
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextDisabled("L%zu", k + 2);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("viewport %d, light %zu (Scene section) against the reference traced toward it", i + 1, k + 2);
+    drawMetricCells(va.otherLights[k].error, ImageErrorMetrics{std::numeric_limits<double>::quiet_NaN(), 0}, current);
+  }
 }
 
 // The config each of the 4 viewport slots shows, "" for slots without a viewport.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace sl {
@@ -21,7 +22,24 @@ std::string number(double v, const char* format = "%.4g") {
 
 const char* const kSvgViewportColours[4] = {"#ffcd50", "#5acdff", "#8ce178", "#f082d2"};
 
+// The metric columns of an accuracy row: wrong, image wrong (empty when NaN), false shadow,
+// false light, rmse, non-finite.
+std::string metricCells(const ErrorMetrics& m, double imageWrongPct) {
+  return "," + number(m.wrongPixelPct) + "," + number(imageWrongPct) + "," + number(m.falseShadowPct) + "," +
+         number(m.falseLightPct) + "," + number(m.rmse) + "," + std::to_string(m.nonfinite);
+}
+
 }  // namespace
+
+std::string otherLightsCsvRows(int viewport, const std::string& config,
+                               const std::vector<LightVisibilityError>& lights) {
+  std::string out;
+  for (size_t k = 0; k < lights.size(); ++k)
+    if (lights[k].shadowed)
+      out += std::to_string(viewport) + " light " + std::to_string(k + 2) + "," + csvField(config) +
+             metricCells(lights[k].error, std::numeric_limits<double>::quiet_NaN()) + ",\n";
+  return out;
+}
 
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -99,15 +117,13 @@ std::string ErrorPanel::accuracyCsv(const ExplorerState& state) const {
     if (state.slots.size() <= size_t(i) || !state.slots[size_t(i)].viewport) continue;
     out += std::to_string(i + 1) + "," +
            csvField(va.haveMetrics ? va.config : configString(state.slots[size_t(i)].viewport->technique));
-    if (va.haveMetrics) {
-      const ErrorMetrics& m = va.metrics;
-      out += "," + number(m.wrongPixelPct) + "," + number(va.image.imageWrongPct) + "," + number(m.falseShadowPct) +
-             "," + number(m.falseLightPct) + "," + number(m.rmse) + "," + std::to_string(m.nonfinite);
-    } else {
+    if (va.haveMetrics)
+      out += metricCells(va.metrics, va.image.imageWrongPct);
+    else
       out += ",,,,,,";
-    }
     const double own = va.ownMs.median();
     out += "," + (own >= 0 ? number(own) : std::string()) + "\n";
+    if (va.haveMetrics) out += otherLightsCsvRows(i + 1, va.config, va.otherLights);
   }
   out += "\n" + chartPointsCsv(points_);
   return out;

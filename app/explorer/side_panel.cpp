@@ -81,7 +81,7 @@ void drawOtherLights(ExplorerState& state) {
   if (!state.scene || state.scene->otherLights.empty()) return;
   static const char* const kTypes[] = {"directional", "spot", "point"};
   ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-  ImGui::Text("%zu lights; views, fields and accuracy: light 1 (%s)", state.scene->otherLights.size() + 1,
+  ImGui::Text("%zu lights; views and fields: light 1 (%s)", state.scene->otherLights.size() + 1,
               kTypes[int(state.scene->light.type)]);
   ImGui::PopStyleColor();
   for (size_t k = 0; k < state.scene->otherLights.size(); ++k) {
