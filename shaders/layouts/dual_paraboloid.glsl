@@ -14,7 +14,7 @@
 uniform float u_shadowMapSize;
 uniform int u_shadowView;  // the view the shadow pass rasterizes (passes/shadow.vert)
 
-const float kParaboloidWindow = 1.05;  // app/part/light_space.h, kParaboloidWindow
+#include "layouts/paraboloid_image.glsl"
 const float kParaboloidMargin = 0.1;   // casters drawn down to this (cos) behind the hemisphere's plane
 
 bool paraboloidViews() { return lightViewInfo.x > 1.5; }
@@ -31,10 +31,7 @@ vec4 layoutClipIn(vec3 worldPos, int view) {
   float r = length(v);
   // NaN and the light's own position fail this: w = 0 marks "not in the map".
   if (!(r > 1e-20)) return vec4(0.0, 0.0, 0.0, 0.0);
-  vec3 d = v / r;
-  // 1 - d.z is 0 only at the opposite pole, whose image is at infinity; clamped there (such a
-  // point is behind the hemisphere and culled, passes/shadow*.frag).
-  vec2 disk = d.xy / max(1.0 - d.z, 1e-4) / kParaboloidWindow;
+  vec2 disk = paraboloidDiskImage(v / r);
   vec2 uv = (disk - lightViewWindow[view].xy) * paraboloidZooms(view);
   float depth = (r - lightViewRange[view].x) / (lightViewRange[view].y - lightViewRange[view].x);
   return vec4(uv, depth * 2.0 - 1.0, 1.0);

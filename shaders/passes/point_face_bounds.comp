@@ -25,6 +25,7 @@ layout(std430) buffer PointFaceBounds {
 };
 
 #include "common/ordered_bits.glsl"
+#include "layouts/paraboloid_image.glsl"
 
 // The view a point reads, and its image coordinates and distance there (xy, z).
 int viewOf(vec3 P, out vec3 image) {
@@ -40,7 +41,7 @@ int viewOf(vec3 P, out vec3 image) {
   if (u_paraboloid) {
     float r = length(v);
     vec3 d = v / max(r, 1e-30);
-    image = vec3(d.xy / max(1.0 - d.z, 1e-4) / 1.05, r);  // kParaboloidWindow
+    image = vec3(paraboloidDiskImage(d), r);
   } else {
     image = vec3(v.xy / max(-v.z, 1e-30), -v.z);
   }
