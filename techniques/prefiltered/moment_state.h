@@ -69,8 +69,9 @@ class MomentMapState : public RepresentationState {
   double filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                 const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
                 const std::vector<std::vector<glm::vec2>>& hulls = {}, bool clearUnread = true);
-  // The blur skips texels no visible receiver reads (filter.skip_unread, a blur, not the soft ones).
-  bool skipsUnread() const { return skipUnread_ && config_.blurs() && !momentsInShadowPass(); }
+  // The blur skips texels no visible receiver reads (filter.skip_unread with a blur; skipUnread_
+  // is false for the soft ones, which declare no such parameter).
+  bool skipsUnread() const { return skipUnread_ && config_.blurs(); }
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
