@@ -8,7 +8,7 @@
 // that tessellation shaders subdivide (passes/shadow_warp.tesc/.tese) before every vertex is
 // warped; a rasterizer draws the chords between them. The chords' error is bounded (status),
 // and δ is never smaller than that bound allows for the scene's longest caster edge. See
-// techniques/layouts/README.md for what this is and is not of the paper.
+// techniques/layouts/logpsm.md for what this is and is not of the paper.
 #pragma once
 
 #include "part/part.h"
