@@ -312,6 +312,7 @@ bool heldToTheImage(const std::string& scene, const std::string& preset) {
                                                     "pixel-correct-optimized-pcf",
                                                     "cube-pcf",
                                                     "tetrahedron-pcf",
+                                                    "tetrahedron-packed-pcf",
                                                     "dual-paraboloid-pcf"};
   if (scene == "terrain") return preset == "pcss";
   return scene == "dueling-sunset" && std::find(filtered.begin(), filtered.end(), preset) != filtered.end();
@@ -328,7 +329,7 @@ constexpr double kPointAsSpotBar = 12.0;
 constexpr double kPointAsSpotInSponzaBar = 18.0;
 bool pointLightThroughOneFrustum(const Scene& scene, const std::string& preset) {
   const Preset* p = findPreset(preset);
-  static const std::vector<std::string> pointLayouts = {"cube", "tetrahedron", "dual-paraboloid"};
+  static const std::vector<std::string> pointLayouts = {"cube", "tetrahedron", "tetrahedron-packed", "dual-paraboloid"};
   return scene.light.type == Light::Type::Point && p &&
          std::find(pointLayouts.begin(), pointLayouts.end(), p->layout) == pointLayouts.end();
 }

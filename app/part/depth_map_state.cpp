@@ -27,7 +27,7 @@ DepthMapState::~DepthMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
 }
 
-void DepthMapState::prepare(int size, int layers) {
+void DepthMapState::prepare(int size, int layers, int /*views*/) {
   if (!sampler_) createSampler();
   if (depth_ && depth_.width() == size && depth_.layers() == layers) return;
   depth_ = Texture2D::array(GL_DEPTH_COMPONENT32F, size, size, layers, 1, "shadow map");

@@ -13,11 +13,12 @@ class DepthMapState : public RepresentationState {
  public:
   explicit DepthMapState(bool compare);
   ~DepthMapState() override;
-  void prepare(int size, int layers) override;
+  void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override;
   // Keeps the content: no pass of ours reads the whole layer.
   bool keepsLayers() const override { return true; }
   void bindShadowLayer(int layer) override;
+  void continueShadowLayer(int layer) override { bindShadowLayer(layer); }
   void bind(const Program& p, TextureUnits& units) const override;
   const Texture2D* depthTexture() const override { return &depth_; }
   long long texels() const override;

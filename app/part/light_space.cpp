@@ -11,6 +11,21 @@ bool LightSpace::perspective() const {
   return false;
 }
 
+int LightSpace::layerOf(size_t view) const {
+  const int layer = view < views.size() ? views[view].layer : -1;
+  return layer >= 0 ? layer : static_cast<int>(view);
+}
+
+int LightSpace::layerCount() const {
+  int count = 0;
+  for (size_t v = 0; v < views.size(); ++v) count = std::max(count, layerOf(v) + 1);
+  return std::max(count, 1);
+}
+
+bool LightSpace::packed() const {
+  return std::any_of(views.begin(), views.end(), [](const LightView& v) { return v.packedTriangle >= 0; });
+}
+
 float logWarp(float t, float delta) {
   if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
   const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ

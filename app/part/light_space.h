@@ -57,6 +57,12 @@ struct LightView {
   // fit's body, projected), so that a pass over the map may skip texels no visible pixel reads
   // (the moment maps' blur). Empty: not known, every texel may be read.
   std::vector<glm::vec2> receiverHull;
+  // Views packed into one layer (Liao 2010's tetrahedron): the layer this view is drawn into and
+  // read from (-1: its own index), and which triangle of that layer, split by its diagonals, it
+  // owns (-1: the whole layer; 0 top, 1 right, 2 bottom, 3 left in map uv). The shadow pass clips a
+  // packed view's casters to its triangle, so views sharing a layer do not overwrite each other.
+  int layer = -1;
+  int packedTriangle = -1;
 };
 
 // A paraboloid view (Brabec, Annen & Seidel 2002) maps the direction d from the light, in its
@@ -83,15 +89,18 @@ glm::vec4 lightViewClip(const LightView& view, const glm::vec3& world);
 
 constexpr int kMaxLightViews = 8;
 
-// What a layout computed for one frame: 1..kMaxLightViews views, one shadow-map layer each,
-// all of `size` x `size` texels. The renderer uploads the views as one uniform block
-// (shaders/common/light_views.glsl).
+// What a layout computed for one frame: 1..kMaxLightViews views, one shadow-map layer each
+// (or several views packed into one layer, LightView::layer), all of `size` x `size` texels. The renderer uploads the
+// views as one uniform block (shaders/common/light_views.glsl).
 struct LightSpace {
   std::vector<LightView> views{LightView{}};
   int size = 1024;  // texels per side of every layer
   const LightView& primary() const { return views.front(); }
   bool perspective() const;  // any view perspective: stored depth is written per fragment
   static LightSpace single(const LightView& view, int size) { return LightSpace{{view}, size}; }
+  int layerOf(size_t view) const;  // the layer view `view` is drawn into (LightView::layer)
+  int layerCount() const;          // layers the map needs: one per view unless views are packed
+  bool packed() const;             // some view owns a triangle of a shared layer
 };
 
 // What the visible pixels of an earlier frame covered (sample-distribution fitting, SDSM):

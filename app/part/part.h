@@ -118,10 +118,14 @@ class RepresentationState : public PartState {
   // Called every frame before configure: what the scene calls for (e.g. semi-transparent
   // casters) may decide the passes and defines.
   virtual void setScene(const Scene& scene) {}
-  // Allocates (or keeps) the targets: size x size texels, `layers` layers.
-  virtual void prepare(int size, int layers) = 0;
+  // Allocates (or keeps) the targets: size x size texels, `layers` layers, for `views` light
+  // views (more than layers when views are packed into one layer, LightSpace::layerOf).
+  virtual void prepare(int size, int layers, int views) = 0;
   // Binds one layer of the targets for the shadow pass and clears it.
   virtual void beginShadowLayer(int layer) = 0;
+  // Binds a layer begun earlier in this shadow pass without clearing it: the next view packed
+  // into the same layer draws beside the ones already there.
+  virtual void continueShadowLayer(int layer) = 0;
   // True when a layer may be bound without clearing it for a layout that draws it piecewise
   // (bindShadowLayer), so tiles drawn in earlier frames are reused. Representations whose passes
   // read the whole layer keep the default: cleared every frame.

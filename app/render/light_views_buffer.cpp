@@ -14,10 +14,11 @@ namespace {
 struct LightViewsBlock {
   float view[kMaxLightViews][16];
   float viewProj[kMaxLightViews][16];
-  float range[kMaxLightViews][4];   // near, far, texel world size, perspective (0/1)
-  float split[kMaxLightViews][4];   // camera view depth: from, to, blend band, LogPSM delta
-  float window[kMaxLightViews][4];  // a paraboloid's fitted window: centre xy, zoom, unused
-  float info[4];                    // views, texels per side, unused, unused
+  float range[kMaxLightViews][4];    // near, far, texel world size, perspective (0/1)
+  float split[kMaxLightViews][4];    // camera view depth: from, to, blend band, LogPSM delta
+  float window[kMaxLightViews][4];   // a paraboloid's fitted window: centre xy, zoom, unused
+  float packing[kMaxLightViews][4];  // layer, packed triangle (-1: whole layer), unused, unused
+  float info[4];                     // views, texels per side, unused, unused
 };
 
 }  // namespace
@@ -43,6 +44,8 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     std::memcpy(block.split[i], split, sizeof(split));
     const float window[4] = {v.paraboloidWindow.x, v.paraboloidWindow.y, v.paraboloidWindow.z, v.paraboloidWindow.w};
     std::memcpy(block.window[i], window, sizeof(window));
+    block.packing[i][0] = static_cast<float>(ls.layerOf(i));
+    block.packing[i][1] = static_cast<float>(v.packedTriangle);
   }
   block.info[0] = static_cast<float>(n);
   block.info[1] = static_cast<float>(ls.size);

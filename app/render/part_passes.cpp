@@ -19,37 +19,55 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
   return plan;
 }
 
-// Draws one layer of the plan (whole, or tile by tile into its rectangles).
-void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int layer,
-                               double time) {
+// Binds the layer view `view` is drawn into: the first view of a layer clears it when some view
+// draws it whole (begin), or binds it for tiles (bind: cleared unless the representation keeps
+// its layers); the next views packed into the same layer draw beside it (continue).
+void Renderer::bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int view, std::vector<bool>& begun) {
+  const LightSpace& space = vp.lightSpace;
+  const int layer = space.layerOf(size_t(view));
+  if (begun[size_t(layer)]) {
+    vp.representation->continueShadowLayer(layer);
+    return;
+  }
+  begun[size_t(layer)] = true;
+  bool whole = false;
+  for (size_t v = 0; v < plan.layers.size(); ++v) whole = whole || (space.layerOf(v) == layer && !plan.layers[v].tiled);
+  if (whole)
+    vp.representation->beginShadowLayer(layer);
+  else
+    vp.representation->bindShadowLayer(layer);
+}
+
+// Draws one light view of the plan into its layer (whole, or tile by tile into its rectangles).
+void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int view,
+                               std::vector<bool>& begun, double time) {
   const ParamSet& params = vp.frameParams_;
   static const GLenum culled[] = {GL_BACK, GL_FRONT, 0};  // front faces, back faces, both
   const GLenum cull = culled[params.i("shadowmap.cull")];
   const auto only = plan.casters == CasterSet::Opaque ? GpuScene::Only::Opaque : GpuScene::Only::All;
   const glm::mat4* cullTo =
-      params.b("shadowmap.cull_instances") ? &vp.lightSpace.views[size_t(layer)].viewProj : nullptr;
-  const ShadowLayerDraw& draw = plan.layers[size_t(layer)];
+      params.b("shadowmap.cull_instances") ? &vp.lightSpace.views[size_t(view)].viewProj : nullptr;
+  const ShadowLayerDraw& draw = plan.layers[size_t(view)];
+  bindShadowLayerFor(vp, plan, view, begun);
   if (!draw.tiled) {
-    vp.representation->beginShadowLayer(layer);
-    PassPrograms programs(shaders_, spec, [this, &vp, layer](const Program& p, TextureUnits& units) {
+    PassPrograms programs(shaders_, spec, [this, &vp, view](const Program& p, TextureUnits& units) {
       bindTechnique(p, units, vp);
-      p.set("u_shadowView", layer);
+      p.set("u_shadowView", view);
     });
     gpu_->draw(programs, time, time, cull, only, cullTo);
     return;
   }
-  // A piecewise layer: bound without clearing when the representation keeps its layers (by
-  // default bindShadowLayer clears, as beginShadowLayer does).
-  vp.representation->bindShadowLayer(layer);
+  // A piecewise layer (bound without clearing when the representation keeps its layers):
+  // each tile's rectangle cleared and drawn.
   glEnable(GL_SCISSOR_TEST);
   for (const ShadowTile& tile : draw.tiles) {
     glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glScissor(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glDepthMask(GL_TRUE);
     glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile
-    PassPrograms programs(shaders_, spec, [this, &vp, layer, &tile](const Program& p, TextureUnits& units) {
+    PassPrograms programs(shaders_, spec, [this, &vp, view, &tile](const Program& p, TextureUnits& units) {
       bindTechnique(p, units, vp);
-      p.set("u_shadowView", layer);
+      p.set("u_shadowView", view);
       p.set("u_pageTransform", tile.transform);
     });
     const glm::mat4 tileClip = cullTo ? tile.clip(*cullTo) : glm::mat4(1.0f);
@@ -58,7 +76,7 @@ void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const P
   glDisable(GL_SCISSOR_TEST);
 }
 
-// Layout passes, then the shadow pass (the draw plan, one layer per light view), then the
+// Layout passes, then the shadow pass (the draw plan, one entry per light view), then the
 // representation's passes; the renderer only orders what the parts declare.
 void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                              const FrameInput& in) {
@@ -68,8 +86,13 @@ void Renderer::addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag
            const ShadowDrawPlan plan = shadowDrawPlan(vp);
            const ProgramSpec spec{"shadowmap " + t.layout->id() + "+" + t.representation->id(), plan.stages, prelude};
            glEnable(GL_DEPTH_TEST);
-           for (int layer = 0; layer < static_cast<int>(plan.layers.size()); ++layer)
-             drawShadowLayer(vp, plan, spec, layer, in.time);
+           // Views packed into one layer each keep to their triangle (passes/shadow.vert).
+           const bool packed = vp.lightSpace.packed();
+           for (GLenum clip : {GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE1}) packed ? glEnable(clip) : glDisable(clip);
+           std::vector<bool> begun(size_t(vp.lightSpace.layerCount()), false);
+           for (int view = 0; view < static_cast<int>(plan.layers.size()); ++view)
+             drawShadowLayer(vp, plan, spec, view, begun, in.time);
+           for (GLenum clip : {GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE1}) glDisable(clip);
            glDisable(GL_DEPTH_TEST);
          }});
 }

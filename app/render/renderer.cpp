@@ -207,6 +207,7 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
   // Soft techniques compile their area-light path only where the scene calls for it.
   if (sceneEffects(*scene_, lightOf(vp)).areaLight) defines += "#define SL_AREA_LIGHT\n";
   if (vp.lightSpace.perspective()) defines += "#define SL_PERSPECTIVE_MAP\n";
+  if (vp.lightSpace.packed()) defines += "#define SL_PACKED_VIEWS\n";
   defines += "#define SL_LIGHT_VIEWS " + std::to_string(vp.lightSpace.views.size()) + "\n";
   defines += vp.layout->defines() + vp.representation->defines() + vp.accumulation->defines();
   return defines + "#include \"" + t.layout->glslModule() +
@@ -402,7 +403,8 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
   vp.lightViews_->upload(vp.lightSpace);
   vp.representation->setScene(*scene_);
   vp.representation->configure(vp.frameParams_);
-  vp.representation->prepare(vp.lightSpace.size, static_cast<int>(vp.lightSpace.views.size()));
+  vp.representation->prepare(vp.lightSpace.size, vp.lightSpace.layerCount(),
+                             static_cast<int>(vp.lightSpace.views.size()));
 }
 
 void Renderer::addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in) {

@@ -212,7 +212,9 @@ class Renderer {
   void addShadowPass(FrameGraph& g, Viewport& vp, const std::string& tag, const std::vector<std::string>& reads,
                      const FrameInput& in);
   ShadowDrawPlan shadowDrawPlan(Viewport& vp) const;
-  void drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int layer, double time);
+  void bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int view, std::vector<bool>& begun);
+  void drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int view,
+                       std::vector<bool>& begun, double time);
   void drawFullscreen();
   void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev);
   std::string shadePrelude() const;  // defines of the deferred shade pass

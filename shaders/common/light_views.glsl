@@ -8,14 +8,36 @@ layout(std140, binding = 1) uniform LightViews {
   vec4 lightViewRange[SL_MAX_LIGHT_VIEWS];  // near, far (light-view distances), texel world size, perspective
   vec4 lightViewSplit[SL_MAX_LIGHT_VIEWS];  // camera view depth the view serves: from, to, blend band; w: LogPSM delta
   vec4 lightViewWindow[SL_MAX_LIGHT_VIEWS];  // a paraboloid's fitted window: map = (disk - xy) * zw
+  vec4 lightViewPacking[SL_MAX_LIGHT_VIEWS];  // x: the layer the view is drawn into, y: its packed triangle (-1: none)
   vec4 lightViewInfo;                       // x: number of views, y: texels per side
 };
+
+// The shadow-map layer view `view` reads and writes: its index, unless views share a layer
+// (LightView::layer, Liao's packed tetrahedron).
+float lightViewLayer(int view) { return lightViewPacking[view].x; }
+
+// Which side of a packed view's triangle a point of its layer is on (LightView::packedTriangle):
+// the layer's square split by its diagonals, 0 top, 1 right, 2 bottom, 3 left. ndc: the point in
+// the layer's [-1, 1] square, or a clip position (the tests are linear, so w > 0 may stay). Both
+// >= 0 inside; a view that owns the whole layer is inside everywhere.
+vec2 packedTriangleSides(vec2 ndc, int view) {
+  int triangle = int(lightViewPacking[view].y + 0.5);
+  if (lightViewPacking[view].y < -0.5) return vec2(1.0);
+  // Turned so that the triangle is the top one, y >= |x|.
+  vec2 p = triangle == 1 ? vec2(-ndc.y, ndc.x) : triangle == 2 ? -ndc : triangle == 3 ? vec2(ndc.y, -ndc.x) : ndc;
+  return vec2(p.y - p.x, p.y + p.x);
+}
+
+// The view of the last map lookup the visibility test set up (common/visibility_term.glsl,
+// representations/soft/receiver_coord.glsl): a representation is handed uv and layer, and reads
+// per-view values (depth range, texel size) of this view.
+int sl_view = 0;
 
 // Where a point falls in the shadow map, as a layout's module reports it.
 struct ShadowCoord {
   vec2 uv;        // in [0,1] on the view's layer
   float depth;    // the point's stored-depth value in that view, [0,1]
-  int view;       // layer; -1 when no view can see the point (behind a perspective light)
+  int view;       // the light view (lightViewLayer gives its layer); -1 when no view can see the point (behind a perspective light)
   int view2;      // a second view to blend with (partition borders), -1 = none
   float weight2;  // weight of view2's test, 0..1
 };

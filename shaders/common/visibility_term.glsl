@@ -5,14 +5,15 @@
 #include "common/bias.glsl"
 
 // The test in one light view: x visibility (1 = lit), y confidence in [0,1] (1 = the sample
-// sat on a texel centre). coord: where it read the map (uv, biased receiver depth, view); z < -1
+// sat on a texel centre). coord: where it read the map (uv, biased receiver depth, layer); z < -1
 // when the point is outside the view's map (lit: nothing was rendered as a caster there). F: the
 // triangle's own normal, whose plane is what the map rasterized (receiver-plane bias).
 vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coord) {
   coord = vec4(0.0, 0.0, -2.0, -1.0);
   ShadowCoord sc = layoutShadowCoordIn(biasReceiverPosition(P, N, cosTheta, view), view);
   if (shadowCoordOffMap(sc)) return vec2(1.0, 0.0);
-  coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), float(view));
+  coord = vec4(sc.uv, sc.depth - biasDepth(P, cosTheta, view), lightViewLayer(view));
+  sl_view = view;
 #if defined(SL_BIAS_MODE_IS_RECEIVER_PLANE) || defined(SL_RECEIVER_PLANE_ALWAYS)
   sl_receiverPlane = vec4(sc.uv, receiverPlaneGradient(P, F, view, sc));
 #ifdef SL_HAS_RECEIVER_PLANE
@@ -27,7 +28,7 @@ vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coo
 }
 
 // x: visibility (1 = lit), y: confidence. N: shading normal, F: the triangle's own normal (same
-// side). coord: where the test read the map (uv, biased receiver depth, view; of the first view
+// side). coord: where the test read the map (uv, biased receiver depth, layer; of the first view
 // when two are blended); z < -1 when no map lookup decided it (facing away, outside the cone,
 // outside the map).
 vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {

@@ -10,4 +10,11 @@ void main() {
   v_world = world.xyz;
   v_uv = a_uv;
   gl_Position = layoutClip(world.xyz);
+#ifdef SL_PACKED_VIEWS
+  // Views packed into one layer: each draws only its own triangle of it (the renderer enables
+  // the two clip distances for such a shadow pass).
+  vec2 sides = packedTriangleSides(gl_Position.xy, u_shadowView);
+  gl_ClipDistance[0] = sides.x;
+  gl_ClipDistance[1] = sides.y;
+#endif
 }

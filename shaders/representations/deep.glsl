@@ -26,7 +26,7 @@ float deepTexelTransmittance(ivec2 t, int view, float z) {
 }
 
 float deepTransmittance(vec3 uvLayer, float z) {
-  int view = int(uvLayer.z + 0.5);
+  int view = sl_view;
   vec4 window = u_deepWindow[clamp(view, 0, SL_MAX_LIGHT_VIEWS - 1)];
   vec2 uv = (uvLayer.xy - window.xy) / window.zw;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;  // no deep caster there

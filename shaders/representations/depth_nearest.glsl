@@ -1,4 +1,4 @@
-// Nearest-texel depth test. receiverDepth already includes the bias; uvLayer.z is the view.
+// Nearest-texel depth test. receiverDepth already includes the bias; uvLayer.z is the layer.
 #include "common/receiver_plane.glsl"
 uniform sampler2DArray u_shadowMap;
 

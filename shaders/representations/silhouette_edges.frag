@@ -9,6 +9,9 @@ out vec2 o_point;
 
 void main() {
   vec2 c = floor(gl_FragCoord.xy);
+  // A view packed into a shared layer keeps to its triangle (LightView::packedTriangle).
+  vec2 sides = packedTriangleSides((gl_FragCoord.xy / u_silSize) * 2.0 - 1.0, u_shadowView);
+  if (min(sides.x, sides.y) < 0.0) discard;
   vec2 d = g_b - g_a;
   float t0 = 0.0, t1 = 1.0;
   for (int i = 0; i < 2; ++i) {
@@ -31,7 +34,7 @@ void main() {
   float farthest = 0.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 s = clamp(ic + ivec2(k & 1, k >> 1), ivec2(0), ivec2(size - 1));
-    farthest = max(farthest, texelFetch(u_shadowMap, ivec3(s, u_shadowView), 0).r);
+    farthest = max(farthest, texelFetch(u_shadowMap, ivec3(s, int(lightViewLayer(u_shadowView))), 0).r);
   }
   if (depth > farthest + u_silhouette_hidden_bias) discard;
   o_point = clamp(p - c, vec2(0.0), vec2(1.0));

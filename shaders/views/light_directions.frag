@@ -23,7 +23,7 @@ void main() {
     return;
   }
   vec2 size = vec2(textureSize(u_shadowDepth, 0).xy);
-  float stored = texture(u_shadowDepth, vec3(c.uv, float(c.view))).r;
+  float stored = texture(u_shadowDepth, vec3(c.uv, lightViewLayer(c.view))).r;
   vec3 colour;
   if (stored >= 1.0) {
     float hatch = step(0.5, fract((gl_FragCoord.x + gl_FragCoord.y) / 8.0));

@@ -41,15 +41,15 @@ void DeepState::configure(const ParamSet& params) {
   samplesAsked_ = params.i("deep.samples");
 }
 
-void DeepState::prepare(int size, int layers) {
-  opaque_.prepare(size, layers);
-  layers_ = layers;
+void DeepState::prepare(int size, int layers, int views) {
+  opaque_.prepare(size, layers, views);
+  views_ = views;  // the node lists are per light view, packed or not
   if (!active_) return;
-  if (!nodes_ || nodes_.width() != deepSize_ || nodes_.layers() != layers * nodeCount_) {
-    nodes_ = Texture2D::array(GL_RG32F, deepSize_, deepSize_, layers * nodeCount_, 1, "deep shadow map nodes");
-    counts_ = Texture2D::array(GL_R32F, deepSize_, deepSize_, layers, 1, "deep shadow map node counts");
+  if (!nodes_ || nodes_.width() != deepSize_ || nodes_.layers() != views * nodeCount_) {
+    nodes_ = Texture2D::array(GL_RG32F, deepSize_, deepSize_, views * nodeCount_, 1, "deep shadow map nodes");
+    counts_ = Texture2D::array(GL_R32F, deepSize_, deepSize_, views, 1, "deep shadow map node counts");
   }
-  const size_t texels = static_cast<size_t>(deepSize_) * deepSize_ * layers;
+  const size_t texels = static_cast<size_t>(deepSize_) * deepSize_ * views;
   const size_t fragments = texels * static_cast<size_t>(maxFragments_);
   if (texels != bufferTexels_ || fragments != bufferFragments_) {
     releaseBuffers();
@@ -119,7 +119,7 @@ std::string DeepState::status() const {
 
 long long DeepState::texels() const {
   long long t = opaque_.texels();
-  if (active_ && nodes_) t += static_cast<long long>(nodes_.width()) * nodes_.height() * (nodes_.layers() + layers_);
+  if (active_ && nodes_) t += static_cast<long long>(nodes_.width()) * nodes_.height() * (nodes_.layers() + views_);
   return t;
 }
 
@@ -151,7 +151,7 @@ void DeepState::fragmentsPass(const PartContext& ctx) {
   glEnable(GL_MULTISAMPLE);  // on by default; said here because the samples are the point
   const ProgramSpec spec{"deep fragments", casterStages(*ctx.lightSpace, "passes/deep_fragments.frag"),
                          ctx.techniquePrelude};
-  for (int layer = 0; layer < layers_; ++layer) {
+  for (int layer = 0; layer < views_; ++layer) {
     // The viewport magnifies the layer's window onto the deep map's texels (deep_fit.h).
     const glm::ivec4 vp = deepViewport(windows_[static_cast<size_t>(layer)], deepSize_);
     glViewport(vp.x, vp.y, vp.z, vp.w);
@@ -181,7 +181,7 @@ void DeepState::compressPass(const PartContext& ctx) {
   p.set("u_deepNodesOut", 0);  // image units (the layout bindings say the same)
   p.set("u_deepCountsOut", 1);
   const GLuint groups = static_cast<GLuint>((deepSize_ + 7) / 8);
-  glDispatchCompute(groups, groups, static_cast<GLuint>(layers_));
+  glDispatchCompute(groups, groups, static_cast<GLuint>(views_));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   // Two counters read back for the status line (free on a software rasterizer, which is
   // synchronous; a stall of one frame's work on a GPU).

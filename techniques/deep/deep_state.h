@@ -23,8 +23,9 @@ class DeepState : public RepresentationState {
   ~DeepState() override;
   void setScene(const Scene& scene) override;
   void configure(const ParamSet& params) override;
-  void prepare(int size, int layers) override;
+  void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override { opaque_.beginShadowLayer(layer); }
+  void continueShadowLayer(int layer) override { opaque_.continueShadowLayer(layer); }
   std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
   const Texture2D* depthTexture() const override { return opaque_.depthTexture(); }
   std::string defines() const override;
@@ -55,7 +56,7 @@ class DeepState : public RepresentationState {
 
   DepthMapState opaque_;
   bool active_ = false;
-  int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, layers_ = 1;
+  int nodeCount_ = 8, maxFragments_ = 32, deepSize_ = 512, steps_ = 48, views_ = 1;
   // deep.samples as asked, and as the framebuffer without attachments actually rasterizes.
   int samplesAsked_ = 1;
   Texture2D nodes_, counts_;

@@ -241,6 +241,13 @@ TEST(Irregular, TetrahedronFacesAreListedViewByViewAndMatchTheReference) {
   EXPECT_LE(severalViews(h, "street", "tetrahedron").wrong, 3);
 }
 
+// Liao's packing: the four faces share one layer, each in its own triangle; the lists are still
+// built view by view, so the packing changes nothing of the exact test.
+TEST(Irregular, PackedTetrahedronFacesAreListedViewByViewAndMatchTheReference) {
+  test::GlHarness h;
+  EXPECT_LE(severalViews(h, "street", "tetrahedron-packed").wrong, 3);
+}
+
 // Views no matrix places points in get a clear status and the map test everywhere: a warped view
 // under a sun (LiSPSM) and the paraboloids.
 TEST(Irregular, WarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {

@@ -46,6 +46,20 @@ Family pointFamily() {
        "depth-pcf",
        "none",
        {"pcf.kernel=3", "shadowmap.size=1254", "shadowmap.cull=both"}},
+      // One 2508² layer: exactly the four 1254² layers' texels, each face a quarter of it.
+      {"tetrahedron-packed",
+       "point light: Liao's tetrahedron map, four faces packed into triangles of one 2508² layer (the cube's "
+       "texels), nearest depth test",
+       "tetrahedron-packed",
+       "depth-nearest",
+       "none",
+       {"shadowmap.size=2508", "shadowmap.cull=both"}},
+      {"tetrahedron-packed-pcf",
+       "point light: Liao's packed tetrahedron map (one 2508² layer) with 3x3 box PCF",
+       "tetrahedron-packed",
+       "depth-pcf",
+       "none",
+       {"pcf.kernel=3", "shadowmap.size=2508", "shadowmap.cull=both"}},
       // 2 x 1773²: the cube's texels within 0.07 %.
       {"dual-paraboloid",
        "point light: dual-paraboloid shadow map of 2 x 1773² hemispheres (the cube's texels), casters "

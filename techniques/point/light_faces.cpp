@@ -135,4 +135,94 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
   return out;
 }
 
+namespace {
+
+// The 2D affine map taking triangle `from` onto triangle `to`, as a matrix on clip positions
+// (x and y mixed with w, so it holds after the perspective divide; z and w unchanged).
+glm::mat4 affineOnClip(const std::array<glm::vec2, 3>& from, const std::array<glm::vec2, 3>& to) {
+  const glm::mat3 f(glm::vec3(from[0], 1.0f), glm::vec3(from[1], 1.0f), glm::vec3(from[2], 1.0f));
+  const glm::mat3 t(glm::vec3(to[0], 1.0f), glm::vec3(to[1], 1.0f), glm::vec3(to[2], 1.0f));
+  const glm::mat3 m = t * glm::inverse(f);  // columns: x, y, translation
+  glm::mat4 a(1.0f);
+  a[0][0] = m[0][0];
+  a[0][1] = m[0][1];
+  a[1][0] = m[1][0];
+  a[1][1] = m[1][1];
+  a[3][0] = m[2][0];
+  a[3][1] = m[2][1];
+  return a;
+}
+
+float signedArea(const std::array<glm::vec2, 3>& t) {
+  const glm::vec2 a = t[1] - t[0], b = t[2] - t[0];
+  return a.x * b.y - a.y * b.x;
+}
+
+}  // namespace
+
+std::array<glm::vec2, 3> packedTriangleCorners(int q, float inset) {
+  // The top triangle, y >= |x|: its incircle has radius r = sqrt(2) - 1 about (0, 1 - r); moving
+  // every side in by `inset` scales it about that centre by (r - inset) / r.
+  const float r = std::sqrt(2.0f) - 1.0f;
+  const glm::vec2 centre(0.0f, 1.0f - r);
+  const float scale = std::max(r - inset, 0.05f * r) / r;
+  std::array<glm::vec2, 3> top = {glm::vec2(0.0f, 0.0f), glm::vec2(1.0f, 1.0f), glm::vec2(-1.0f, 1.0f)};
+  for (glm::vec2& c : top) {
+    c = centre + (c - centre) * scale;
+    // Turned from the top onto triangle q (the inverse of shaders/common/light_views.glsl's turn).
+    if (q == 1) c = glm::vec2(c.y, -c.x);
+    if (q == 2) c = -c;
+    if (q == 3) c = glm::vec2(-c.y, c.x);
+  }
+  return top;
+}
+
+FaceViews packedTetrahedronViews(const Light& light, const LayoutInput& in, float guardTexels) {
+  const FaceSet& set = tetrahedronFaceSet();
+  const Bounds bounds = in.scene->boundsAt(in.time);
+  const int size = in.params->i("shadowmap.size");
+  const float far = pointLightFar(light, bounds);
+  const float near = far * 1e-4f;
+  std::vector<glm::vec4> frustum = frustumPlanes(in.cameraProj * in.cameraView);
+  const std::vector<glm::vec4> box = boxPlanes(bounds);
+  frustum.insert(frustum.end(), box.begin(), box.end());
+  Light faceLight = light;
+  faceLight.type = Light::Type::Spot;
+  FaceViews out;
+  out.space.views.clear();
+  out.space.size = size;
+  const float inset = 2.0f * std::max(guardTexels, 0.0f) / float(std::max(size, 1));
+  for (size_t f = 0; f < set.faces.size(); ++f) {
+    const LightFace& face = set.faces[f];
+    faceLight.direction = face.axis;
+    glm::mat4 view = glm::lookAt(light.position, light.position + face.axis, face.up);
+    if (in.jitter.rotationRad != 0.0f)
+      view = glm::rotate(glm::mat4(1.0f), in.jitter.rotationRad, glm::vec3(0, 0, 1)) * view;
+    faceLight.fovDeg = enclosingFovDeg(face, view);
+    const std::vector<glm::vec3> region = faceRegion(face, light.position, near, far);
+    std::vector<glm::vec3> casters = clipCornersToPlanes(region, box);
+    out.needed.push_back(!clipCornersToPlanes(region, frustum).empty());
+    if (casters.empty()) casters = region;
+    LightView v = fitPerspective(faceLight, view, region, casters, size, /*crop=*/false, /*snap=*/false, in.jitter);
+    // The region's corners in the face's image, onto the layer's triangle f, keeping the turn
+    // (a mirrored map would swap the casters' front and back faces).
+    std::array<glm::vec2, 3> from;
+    for (size_t k = 0; k < 3; ++k) {
+      const glm::vec4 c = v.viewProj * glm::vec4(light.position + face.corners[k], 1.0f);
+      from[k] = glm::vec2(c) / c.w;
+    }
+    std::array<glm::vec2, 3> to = packedTriangleCorners(static_cast<int>(f), inset);
+    if ((signedArea(from) > 0.0f) != (signedArea(to) > 0.0f)) std::swap(to[1], to[2]);
+    const glm::mat4 packing = affineOnClip(from, to);
+    v.proj = packing * v.proj;
+    v.viewProj = v.proj * v.view;
+    // Texel size at unit distance: the face's, over the map's linear scale (sqrt of its area ratio).
+    v.texelWorldSize /= std::sqrt(std::abs(signedArea(to) / signedArea(from)));
+    v.layer = 0;
+    v.packedTriangle = static_cast<int>(f);
+    out.space.views.push_back(v);
+  }
+  return out;
+}
+
 }  // namespace sl

@@ -7,6 +7,7 @@
 #include "part/part.h"
 #include "point/visible_fit.h"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,20 @@ struct FaceViews {
 // to those pixels instead.
 FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in,
                     const std::vector<ViewPixelBounds>* seen = nullptr);
+
+// Liao's packing (2010): the four tetrahedron faces drawn into one layer of `size` x `size`
+// texels, each into a triangle of it (the square split by its diagonals; LightView::layer,
+// ::packedTriangle). A face's region is a triangle in its perspective image (its sides are the
+// planes halfway between two face axes), mapped by an affine map onto its triangle of the layer,
+// inset by `guardTexels` on every side: the face also draws into that band (up to the triangle's
+// edge), so filter taps that reach that far past its region still read its own casters. Faces
+// are not fitted to the view (the triangles are fixed); a face with no visible receiver is still
+// not drawn.
+FaceViews packedTetrahedronViews(const Light& light, const LayoutInput& in, float guardTexels);
+
+// The layer triangle's corners in map NDC ([-1, 1]²) for packed triangle q (0 top, 1 right,
+// 2 bottom, 3 left; the centre first), pulled in by `inset` NDC units from every side.
+std::array<glm::vec2, 3> packedTriangleCorners(int q, float inset);
 
 // The far plane of a point light's views: the farthest corner of the scene's bounds, or the
 // light's range if nearer.

@@ -89,6 +89,8 @@ TEST(LightFacesGl, HardPointLightCasesStayFiniteAndNearTheReference) {
   expectHardPointCasesHold(
       {"cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf", "dual-paraboloid", "dual-paraboloid-pcf"},
       {"shadowmap.size=256"});
+  // Liao's packing: one layer with the four faces' texels.
+  expectHardPointCasesHold({"tetrahedron-packed", "tetrahedron-packed-pcf"}, {"shadowmap.size=512"});
 }
 
 // The same with each view fitted to the pixels that read it (point.fit_visible): a light inside a

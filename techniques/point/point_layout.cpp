@@ -78,6 +78,11 @@ class PointLayoutState : public LayoutState {
   void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {
     std::vector<bool> kept(layers.size(), false);
     if (keepOn_ && keepsLayers && input_.scene) kept = cache_.keep(content_, needed_, *input_.scene, input_.time);
+    // Faces packed into one layer: drawing one clears the layer, so either every face is kept or
+    // every needed one is drawn.
+    if (space_.packed())
+      for (size_t f = 0; f < needed_.size() && f < kept.size(); ++f)
+        if (needed_[f] && !kept[f]) kept.assign(kept.size(), false);
     std::vector<bool> drawn(layers.size(), false);
     int keptCount = 0, neededCount = 0;
     for (size_t f = 0; f < layers.size() && f < needed_.size(); ++f) {
@@ -126,6 +131,8 @@ class PointLayoutState : public LayoutState {
     std::string s = spec_.id + ": " + std::to_string(needed) + " of " + std::to_string(needed_.size()) + " " +
                     spec_.unit + " drawn";
     if (kept > 0) s += ", " + std::to_string(kept) + " kept from an earlier frame";
+    if (space_.packed())
+      return s + " into triangles of one " + std::to_string(space_.size) + "² layer (Liao's packing, not fitted)";
     return s + fittedZooms();
   }
   // The drawn views' fitted windows as magnifications: of the whole disk for a paraboloid
@@ -170,7 +177,7 @@ class PointLayout : public Layout {
   std::vector<ParamDecl> params() const override {
     std::vector<ParamDecl> decls = spec_.params;
     decls.push_back(keepFacesParam());
-    decls.push_back(fitVisibleParam());
+    if (spec_.fitsToPixels) decls.push_back(fitVisibleParam());
     return decls;
   }
   LightSpace compute(const LayoutInput& in) const override {
@@ -207,6 +214,26 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .params = {},
        .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
          return faceViews(tetrahedronFaceSet(), light, in, seen);
+       }}));
+  out.push_back(makePointLayout(
+      {.id = "tetrahedron-packed",
+       .help = "point light: Liao's tetrahedron map, the four faces packed into one layer, each drawn into a "
+               "triangle of it (the square split by its diagonals) with a guard band; not fitted to the view; "
+               "faces with no visible receiver are not drawn",
+       .glslModule = "layouts/light_faces.glsl",
+       .unit = "faces",
+       .params = {{.key = "tetrahedron.guard",
+                   .type = ParamType::Float,
+                   .min = 0,
+                   .max = 64,
+                   .defaultValue = 8,
+                   .unit = "texels",
+                   .help = "band inside each face's triangle of the layer that the face draws past its own "
+                           "region, so filter taps reaching this far past a face edge read the same face (Liao's "
+                           "guard band); the regions shrink by it"}},
+       .fitsToPixels = false,
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>*) {
+         return packedTetrahedronViews(light, in, static_cast<float>(in.params->get("tetrahedron.guard")));
        }}));
   out.push_back(makeDualParaboloidLayout());
 }

@@ -15,6 +15,7 @@ struct PointLayoutSpec {
   std::string id, help, glslModule;
   std::string unit;  // what its views are called in the status line: "faces", "hemispheres"
   std::vector<ParamDecl> params;
+  bool fitsToPixels = true;  // declares point.fit_visible (views fitted to the pixels that read them)
   // seen: null, or the bounds of the pixels that read each view (point.fit_visible).
   std::function<FaceViews(const Light& pointLight, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen)>
       views;

@@ -197,6 +197,68 @@ std::vector<glm::vec3> visibleSamples(const LayoutInput& in, const Bounds& b) {
   return out;
 }
 
+// The side of the packed triangle q a map point (uv) is on, as shaders/common/light_views.glsl
+// computes it: both >= 0 inside.
+glm::vec2 packedSides(glm::vec2 uv, int q) {
+  const glm::vec2 n = uv * 2.0f - 1.0f;
+  const glm::vec2 p = q == 1 ? glm::vec2(-n.y, n.x) : q == 2 ? -n : q == 3 ? glm::vec2(n.y, -n.x) : n;
+  return {p.y - p.x, p.y + p.x};
+}
+
+// Liao's packing: every direction lands in its nearest face's triangle of the one layer, at
+// least the guard band inside its sides (the region is mapped onto the inset triangle), and the
+// four triangles tile the layer; a direction a little past a face's edge (into the neighbour's
+// region) still lands in that face's drawn triangle when it is within the guard band. Rolled too.
+TEST(LightFaces, PackedTetrahedronKeepsEachFaceInItsTriangleWithAGuardBand) {
+  const Scene scene = loadScene(test::writeTempFile("packed_faces_" + std::to_string(::getpid()) + ".json", R"({
+    "objects":[{"name":"room","shape":"box","size":[40,40,40]}],
+    "light":{"type":"point","position":[0.3,0.2,0.1]},
+    "cameras":[{"position":[0.3,0.2,15.1],"target":[0.3,0.2,0.1],"fov_deg":10}]})"),
+                                test::kAssets);
+  ParamSet params = makeTechnique("tetrahedron-packed", {}).params;
+  params.set("shadowmap.size", 512);
+  const float guard = 8.0f, guardUv = guard / 512.0f;
+  for (float roll : {0.0f, 0.3f}) {
+    LayoutInput in = inputFor(scene, scene.cameras.front(), params, 1.0f);
+    in.jitter.rotationRad = roll;
+    const FaceViews v = packedTetrahedronViews(scene.light, in, guard);
+    ASSERT_EQ(v.space.views.size(), 4u);
+    EXPECT_EQ(v.space.layerCount(), 1);
+    EXPECT_TRUE(v.space.packed());
+    float nearestSide = 1e9f;
+    for (int i = 0; i < 4000; ++i) {
+      const float z = 1.0f - 2.0f * (i + 0.5f) / 4000.0f, r = std::sqrt(1.0f - z * z), a = 2.39996323f * i;
+      const glm::vec3 d(r * std::cos(a), z, r * std::sin(a));
+      const int f = nearestFace(tetrahedronFaceSet(), d);
+      glm::vec3 uv;
+      float depth = 0.0f;
+      ASSERT_TRUE(mapPointOf(scene.light.position + d * 0.5f, v.space.views[size_t(f)], uv, depth)) << i;
+      EXPECT_EQ(uv.z, 0.0f) << "every face reads layer 0";
+      // Sides in uv units times 1/sqrt(2)... the distance to a diagonal is |side| / sqrt(2) in NDC,
+      // |side| / (2 sqrt(2)) in uv.
+      const glm::vec2 sides = packedSides(glm::vec2(uv), f) / (2.0f * std::sqrt(2.0f));
+      nearestSide = std::min({nearestSide, sides.x, sides.y});
+      EXPECT_GE(std::min(sides.x, sides.y), guardUv * 0.99f) << "roll " << roll << " face " << f << " direction " << i;
+      for (int other = 0; other < 4; ++other)
+        if (other != f)
+          EXPECT_LT(std::min(packedSides(glm::vec2(uv), other).x, packedSides(glm::vec2(uv), other).y), 0.0f);
+    }
+    // The band is used: some direction lies within two guard widths of its triangle's side.
+    EXPECT_LT(nearestSide, 2.0f * guardUv) << "roll " << roll;
+    // Just past face 0's edge toward face 1 (the midpoint of their shared edge, turned 0.2
+    // texels' worth past it): in face 0's view still inside its drawn triangle.
+    const LightFace& f0 = tetrahedronFaceSet().faces[0];
+    const glm::vec3 edgeMid = glm::normalize(f0.corners[0] + f0.corners[1]);
+    const glm::vec3 past =
+        glm::normalize(edgeMid + 0.002f * glm::normalize(tetrahedronFaceSet().faces[1].axis - f0.axis));
+    glm::vec3 uv;
+    float depth = 0.0f;
+    ASSERT_TRUE(mapPointOf(scene.light.position + past * 0.5f, v.space.views[0], uv, depth));
+    const glm::vec2 sides = packedSides(glm::vec2(uv), 0);
+    EXPECT_GE(std::min(sides.x, sides.y), 0.0f) << "a tap just past the edge reads face 0's own drawn band";
+  }
+}
+
 // Every direction from the light falls in exactly one face's region, inside that face's whole
 // (unfitted) window: the faces cover the sphere and the pick in the shader is the face that
 // holds the point. Checked for both face sets, also with a rolled view (the jitter's rotation).

@@ -122,7 +122,8 @@ TEST_P(PointSeamsGl, ShadowsCastAcrossTheSeams) {
 INSTANTIATE_TEST_SUITE_P(PointSeams, PointSeamsGl,
                          ::testing::Values("cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf", "dual-paraboloid",
                                            "dual-paraboloid-pcf", "vsm@cube", "esm@cube", "msm@tetrahedron",
-                                           "vsm@dual-paraboloid"),
+                                           "vsm@dual-paraboloid", "tetrahedron-packed", "tetrahedron-packed-pcf",
+                                           "msm@tetrahedron-packed"),
                          test::presetTestName);
 
 }  // namespace

@@ -81,7 +81,7 @@ void MomentMapState::allocate(int size, int layers) {
   }
 }
 
-void MomentMapState::prepare(int size, int layers) {
+void MomentMapState::prepare(int size, int layers, int /*views*/) {
   if (!sampler_) {
     glCreateSamplers(1, &sampler_);
     label(GL_SAMPLER, sampler_, "moment map: filtered");
@@ -104,6 +104,8 @@ void MomentMapState::beginShadowLayer(int layer) {
       glClearNamedFramebufferfv(fbo.id(), GL_COLOR, t, &clear_[static_cast<size_t>(4 * t)]);
   glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
+
+void MomentMapState::continueShadowLayer(int layer) { shadowFbos_.at(static_cast<size_t>(layer)).bind(); }
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene, ctx.shadowedLight()), *ctx.params) : "";
@@ -141,7 +143,8 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
                std::vector<Texture2D*> targets;
                for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
                std::vector<std::vector<glm::vec2>> hulls;
-               if (lightSpace)
+               // A hull per layer; views packed into one layer: every texel may be read.
+               if (lightSpace && !lightSpace->packed())
                  for (const LightView& v : lightSpace->views) hulls.push_back(v.receiverHull);
                const double share = filter(*shaders, draw, targets, bindTechnique, hulls, shown);
                if (skipsUnread() && share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(share);

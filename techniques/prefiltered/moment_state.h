@@ -43,8 +43,9 @@ class MomentMapState : public RepresentationState {
   MomentMapState(const MomentSpec& spec, std::string module) : spec_(spec), module_(std::move(module)) {}
   ~MomentMapState() override;
   void configure(const ParamSet& params) override;
-  void prepare(int size, int layers) override;
+  void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override;
+  void continueShadowLayer(int layer) override;
   std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
   void bind(const Program& p, TextureUnits& units) const override;
   std::string defines() const override;

@@ -12,8 +12,8 @@ SilhouetteMapState::~SilhouetteMapState() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
-void SilhouetteMapState::prepare(int size, int layers) {
-  depth_.prepare(size, layers);
+void SilhouetteMapState::prepare(int size, int layers, int /*views*/) {
+  depth_.prepare(size, layers, layers);
   if (points_ && points_.width() == size && points_.layers() == layers) return;
   points_ = Texture2D::array(GL_RG16F, size, size, layers, 1, "silhouette map");
   fbos_.clear();
@@ -54,15 +54,21 @@ void SilhouetteMapState::drawSilhouettes(const PartContext& ctx) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  for (size_t layer = 0; layer < fbos_.size(); ++layer) {
+  const LightSpace& space = *ctx.lightSpace;
+  std::vector<bool> cleared(fbos_.size(), false);
+  for (size_t view = 0; view < space.views.size(); ++view) {
+    // Views packed into one layer (LightSpace::layerOf) draw into it in turn, cleared once.
+    const size_t layer = static_cast<size_t>(space.layerOf(view));
+    if (layer >= fbos_.size()) continue;
     fbos_[layer].bind();
     glViewport(0, 0, points_.width(), points_.height());
-    glClearNamedFramebufferfv(fbos_[layer].id(), GL_COLOR, 0, none);
+    if (!cleared[layer]) glClearNamedFramebufferfv(fbos_[layer].id(), GL_COLOR, 0, none);
+    cleared[layer] = true;
     if (!p.valid() || segments_ == 0) continue;
     p.use();
     TextureUnits units;
     ctx.bindTechnique(p, units);  // depth map (u_shadowMap), light views, parameters
-    p.set("u_shadowView", static_cast<int>(layer));
+    p.set("u_shadowView", static_cast<int>(view));
     p.set("u_silSize", static_cast<float>(points_.width()));
     glBindVertexArray(vao_);
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(2 * segments_));

@@ -21,8 +21,9 @@ class SilhouetteMapState : public RepresentationState {
  public:
   SilhouetteMapState() : depth_(false) {}
   ~SilhouetteMapState() override;
-  void prepare(int size, int layers) override;
+  void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override { depth_.beginShadowLayer(layer); }
+  void continueShadowLayer(int layer) override { depth_.continueShadowLayer(layer); }
   std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
   void bind(const Program& p, TextureUnits& units) const override;
   std::vector<std::string> views() const override { return {"silhouette-points"}; }

@@ -64,7 +64,7 @@ vec2 softBlocker(vec3 uvLayer, float width, float receiverDepth) {
 // x: blocker fraction of the search box, y: their mean stored depth, z: penumbra radius and w:
 // search radius (texels of the view read).
 vec4 softMomentPenumbra(vec3 uvLayer, float receiverDepth) {
-  int view = int(uvLayer.z + 0.5);
+  int view = sl_view;
   float dR = pcssLinear(receiverDepth, view);
   float search = pcssSearchTexels(view, dR);
   vec2 b = softBlocker(uvLayer, 2.0 * search, receiverDepth);
@@ -82,7 +82,7 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec4 p = softMomentPenumbra(uvLayer, receiverDepth);
   if (p.x < kSoftMinBlockerFraction) return 1.0;  // nothing in the region that sees the light
   momentsInBox(uvLayer, 2.0 * p.z, m);
-  int view = int(uvLayer.z + 0.5);
+  int view = sl_view;
   float gap = pcssLinear(receiverDepth, view) - pcssLinear(p.y, view);
   float v = representationSoftVisibility(m, receiverDepth, gap);
 #else

@@ -15,7 +15,7 @@ void main() {
 #ifdef SL_AREA_LIGHT
   if (receiverShadowCoord(ivec2(gl_FragCoord.xy), uvLayer, depth)) {
     vec4 p = softMomentPenumbra(uvLayer, depth);
-    view = int(uvLayer.z + 0.5);
+    view = sl_view;
     float dR = pcssLinear(depth, view), dB = pcssLinear(p.y, view);
     bool found = p.x >= kSoftMinBlockerFraction;
     b = vec4(max(dR - dB, 0.0), found ? pcssPenumbraWorld(dR, dB) : 0.0, found ? 1.0 : 0.0, p.w);

@@ -35,7 +35,7 @@ float pcssFilter(vec3 uvLayer, float receiverDepth, float radius, int samples) {
 // The blocker search: x receiver-to-blocker distance, y penumbra radius (world), z 1 = found,
 // w the search radius (texels of this view).
 vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
-  int view = int(uvLayer.z + 0.5);
+  int view = sl_view;
   vec2 mapSize = vec2(textureSize(u_shadowMap, 0).xy);
   float dR = pcssLinear(receiverDepth, view);
   float radius = pcssSearchTexels(view, dR);
@@ -74,7 +74,7 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec4 b = pcssBlockerHere();
   // No blocker in the whole region the light can see the receiver through: fully lit.
   if (b.z < 0.5) return 1.0;
-  int view = int(uvLayer.z + 0.5);
+  int view = sl_view;
   return pcssFilter(uvLayer, receiverDepth, pcssRadiusTexels(b, view, receiverDepth), int(u_pcss_filter_samples + 0.5));
 }
 

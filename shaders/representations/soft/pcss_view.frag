@@ -14,7 +14,7 @@ void main() {
   float depth;
   vec4 b = pcssBlockerHere();
   if (!receiverShadowCoord(ivec2(gl_FragCoord.xy), uvLayer, depth)) b = vec4(0.0);  // not searched there
-  o_color = penumbraViewColor(b, int(uvLayer.z + 0.5), depth);
+  o_color = penumbraViewColor(b, sl_view, depth);
 #else
   o_color = penumbraViewColor(vec4(0.0), 0, 0.0);  // a point light: no search ran
 #endif

@@ -28,6 +28,7 @@ bool receiverShadowCoord(ivec2 pixel, out vec3 uvLayer, out float depth) {
   setReceiverPlaneProjective(P.xyz, F, view);
 #endif
 #endif
-  uvLayer = vec3(sc.uv, float(view));
+  uvLayer = vec3(sc.uv, lightViewLayer(view));
+  sl_view = view;
   return true;
 }

@@ -28,7 +28,7 @@ Map momentMap(const std::string& preset, const std::vector<std::string>& sets, i
   m.base = m.technique.representation->createState();
   m.state = dynamic_cast<MomentMapState*>(m.base.get());
   m.state->configure(m.technique.params);
-  m.state->prepare(size, 1);
+  m.state->prepare(size, 1, 1);
   return m;
 }
 
