@@ -8,13 +8,13 @@
 namespace sl {
 
 Family pointFamily() {
-  Family f{
-      .id = "point",
-      .summary =
-          "point lights: a cube of six or a tetrahedron of four fitted faces (or Liao's four packed into one "
-          "layer), or two paraboloid hemispheres, drawn only where the view needs them (survey: fitting for a point light; Gerasimov 2004, omnidirectional shadow "
-          "mapping; Liao 2010, "
-          "tetrahedron shadow mapping; Brabec, Annen & Seidel 2002, dual-paraboloid shadow maps)"};
+  Family f{.id = "point",
+           .summary =
+               "point lights: a cube of six or a tetrahedron of four fitted faces (or Liao's four packed into one "
+               "layer), or two paraboloid hemispheres, drawn only where the view needs them (survey: fitting for a "
+               "point light; Gerasimov 2004, omnidirectional shadow "
+               "mapping; Liao 2010, "
+               "tetrahedron shadow mapping; Brabec, Annen & Seidel 2002, dual-paraboloid shadow maps)"};
   registerPointLayouts(f.layouts);
   f.presets = {
       // 6 x 1024² faces: 1.5 times the texels of one 2048² map (measured on street: README). Both
