@@ -26,6 +26,8 @@ bool LightSpace::packed() const {
   return std::any_of(views.begin(), views.end(), [](const LightView& v) { return v.packedTriangle >= 0; });
 }
 
+bool LightSpace::sharesLayers() const { return layerCount() < static_cast<int>(views.size()); }
+
 float logWarp(float t, float delta) {
   if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
   const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ

@@ -63,6 +63,11 @@ struct LightView {
   // packed view's casters to its triangle, so views sharing a layer do not overwrite each other.
   int layer = -1;
   int packedTriangle = -1;
+  // Views in an atlas (several faces of one layer, each in a rectangle sized by its need): the
+  // rectangle of the layer this view is drawn into, x, y, width, height in texels; the shadow
+  // pass scissors and clears it alone (viewProj already maps the view into it). Zero: the whole
+  // layer.
+  glm::ivec4 atlasRect{0};
 };
 
 // A paraboloid view (Brabec, Annen & Seidel 2002) maps the direction d from the light, in its
@@ -101,6 +106,7 @@ struct LightSpace {
   int layerOf(size_t view) const;  // the layer view `view` is drawn into (LightView::layer)
   int layerCount() const;          // layers the map needs: one per view unless views are packed
   bool packed() const;             // some view owns a triangle of a shared layer
+  bool sharesLayers() const;       // some layer holds several views (packed or in an atlas)
 };
 
 // What the visible pixels of an earlier frame covered (sample-distribution fitting, SDSM):

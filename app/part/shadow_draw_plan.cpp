@@ -10,6 +10,13 @@ glm::mat4 ShadowTile::clip(const glm::mat4& layerViewProj) const {
   return page * layerViewProj;
 }
 
+ShadowTile atlasTile(const glm::ivec4& rect) {
+  ShadowTile t;
+  t.rect = rect;
+  t.wholeLayerViewport = true;
+  return t;
+}
+
 std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment) {
   const auto uses = [&](LightView::Projection kind) {
     return std::any_of(lightSpace.views.begin(), lightSpace.views.end(),

@@ -31,10 +31,18 @@ struct ShadowTile {
   // u_pageTransform: clip xy * .xy + clip w * .zw maps the tile's square of the layer's clip
   // space onto the rectangle (identity: (1, 1, 0, 0)).
   glm::vec4 transform{1.0f, 1.0f, 0.0f, 0.0f};
+  // The viewport is the whole layer rather than the rectangle (an atlas view's projection places
+  // it in the rectangle itself); the rectangle still scissors and clears.
+  bool wholeLayerViewport = false;
   // The same as a matrix after the layer's view-projection, so instances outside the tile are
   // skipped (shadowmap.cull_instances).
   glm::mat4 clip(const glm::mat4& layerViewProj) const;
 };
+
+// The tile that draws a view of an atlas (LightView::atlasRect): its view-projection already
+// maps it into its rectangle of the layer, so the viewport is the whole layer and the rectangle
+// only scissors and clears.
+ShadowTile atlasTile(const glm::ivec4& rect);
 
 struct ShadowLayerDraw {
   bool tiled = false;             // false: the whole layer, cleared first

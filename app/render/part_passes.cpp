@@ -16,11 +16,16 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
   plan.casters = casters.casters;
   plan.layers.resize(vp.lightSpace.views.size());
   vp.layout->planShadowLayers(plan.layers, vp.representation->keepsLayers());
+  // A view in an atlas is drawn as one tile, its rectangle (unless the layout leaves it undrawn).
+  for (size_t v = 0; v < plan.layers.size(); ++v) {
+    const glm::ivec4& rect = vp.lightSpace.views[v].atlasRect;
+    if (!plan.layers[v].tiled && rect.z > 0 && rect.w > 0) plan.layers[v] = {.tiled = true, .tiles = {atlasTile(rect)}};
+  }
   return plan;
 }
 
 // Binds the layer view `view` is drawn into: the first view of a layer clears it when some view
-// draws it whole (begin), or binds it for tiles (bind: cleared unless the representation keeps
+// draws it whole or into its atlas square (begin), or binds it for tiles (bind: cleared unless the representation keeps
 // its layers); the next views packed into the same layer draw beside it (continue).
 void Renderer::bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int view, std::vector<bool>& begun) {
   const LightSpace& space = vp.lightSpace;
@@ -30,8 +35,13 @@ void Renderer::bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int 
     return;
   }
   begun[size_t(layer)] = true;
+  // Cleared whole when a view draws it whole, or an atlas view draws its square (an atlas is
+  // redrawn all at once: the squares move with the faces' needs).
   bool whole = false;
-  for (size_t v = 0; v < plan.layers.size(); ++v) whole = whole || (space.layerOf(v) == layer && !plan.layers[v].tiled);
+  for (size_t v = 0; v < plan.layers.size(); ++v) {
+    const bool atlasDrawn = space.views[v].atlasRect.z > 0 && !plan.layers[v].tiles.empty();
+    whole = whole || (space.layerOf(v) == layer && (!plan.layers[v].tiled || atlasDrawn));
+  }
   if (whole)
     vp.representation->beginShadowLayer(layer);
   else
@@ -61,7 +71,10 @@ void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const P
   // each tile's rectangle cleared and drawn.
   glEnable(GL_SCISSOR_TEST);
   for (const ShadowTile& tile : draw.tiles) {
-    glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
+    if (tile.wholeLayerViewport)
+      glViewport(0, 0, vp.lightSpace.size, vp.lightSpace.size);
+    else
+      glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glScissor(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glDepthMask(GL_TRUE);
     glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile

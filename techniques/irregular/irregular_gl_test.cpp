@@ -248,6 +248,12 @@ TEST(Irregular, PackedTetrahedronFacesAreListedViewByViewAndMatchTheReference) {
   EXPECT_LE(severalViews(h, "street", "tetrahedron-packed").wrong, 3);
 }
 
+// The cube's faces in one atlas, each in its square: listed view by view as well.
+TEST(Irregular, AtlasCubeFacesAreListedViewByViewAndMatchTheReference) {
+  test::GlHarness h;
+  EXPECT_LE(severalViews(h, "street", "cube-atlas").wrong, 3);
+}
+
 // Views no matrix places points in get a clear status and the map test everywhere: a warped view
 // under a sun (LiSPSM) and the paraboloids.
 TEST(Irregular, WarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {

@@ -10,8 +10,9 @@ namespace sl {
 Family pointFamily() {
   Family f{.id = "point",
            .summary =
-               "point lights: a cube of six or a tetrahedron of four fitted faces (or Liao's four packed into one "
-               "layer), or two paraboloid hemispheres, drawn only where the view needs them (survey: fitting for a "
+               "point lights: a cube of six fitted faces (in six layers, or one atlas sized by need) or a "
+               "tetrahedron of four (fitted, or Liao's four packed into one layer), or two paraboloid hemispheres, "
+               "drawn only where the view needs them (survey: fitting for a "
                "point light; Gerasimov 2004, omnidirectional shadow "
                "mapping; Liao 2010, "
                "tetrahedron shadow mapping; Brabec, Annen & Seidel 2002, dual-paraboloid shadow maps)"};
@@ -31,6 +32,14 @@ Family pointFamily() {
        "depth-pcf",
        "none",
        {"pcf.kernel=3", "shadowmap.size=1024", "shadowmap.cull=both"}},
+      // One 2508² atlas: the six 1024² faces' texels within 0.01 %, shared by the faces' needs.
+      {"cube-atlas",
+       "point light: the cube's six fitted faces in one 2508² atlas (the cube's texels), each face's square sized "
+       "by its screen footprint, nearest depth test",
+       "cube-atlas",
+       "depth-nearest",
+       "none",
+       {"shadowmap.size=2508", "shadowmap.cull=both"}},
       // 4 x 1254² faces: the cube's texels (6 x 1024²) within 0.03 %, the equal-texel
       // comparison.
       {"tetrahedron",

@@ -97,7 +97,8 @@ int nearestFace(const FaceSet& set, const glm::vec3& d) {
 int FaceViews::neededCount() const { return static_cast<int>(std::count(needed.begin(), needed.end(), true)); }
 
 FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in,
-                    const std::vector<ViewPixelBounds>* seen) {
+                    const std::vector<ViewPixelBounds>* seen, std::vector<std::vector<glm::vec3>>* receiversOut,
+                    bool fitToView) {
   const Bounds bounds = in.scene->boundsAt(in.time);
   const int size = in.params->i("shadowmap.size");
   const bool snap = in.params->b("layout.snap");
@@ -127,8 +128,10 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
     std::vector<glm::vec3> casters = clipCornersToPlanes(region, box);
     const bool needed = !receivers.empty();
     out.needed.push_back(needed);
+    if (receiversOut) receiversOut->push_back(receivers);
     if (casters.empty()) casters = region;
-    out.space.views.push_back(fitPerspective(faceLight, view, needed ? receivers : region, casters, size, needed, snap,
+    const bool crop = needed && fitToView;
+    out.space.views.push_back(fitPerspective(faceLight, view, crop ? receivers : region, casters, size, crop, snap,
                                              in.jitter,
                                              /*squareTexels=*/seen == nullptr));
   }
@@ -179,48 +182,130 @@ std::array<glm::vec2, 3> packedTriangleCorners(int q, float inset) {
 
 FaceViews packedTetrahedronViews(const Light& light, const LayoutInput& in, float guardTexels) {
   const FaceSet& set = tetrahedronFaceSet();
-  const Bounds bounds = in.scene->boundsAt(in.time);
-  const int size = in.params->i("shadowmap.size");
-  const float far = pointLightFar(light, bounds);
-  const float near = far * 1e-4f;
-  std::vector<glm::vec4> frustum = frustumPlanes(in.cameraProj * in.cameraView);
-  const std::vector<glm::vec4> box = boxPlanes(bounds);
-  frustum.insert(frustum.end(), box.begin(), box.end());
-  Light faceLight = light;
-  faceLight.type = Light::Type::Spot;
-  FaceViews out;
-  out.space.views.clear();
-  out.space.size = size;
-  const float inset = 2.0f * std::max(guardTexels, 0.0f) / float(std::max(size, 1));
+  FaceViews out = faceViews(set, light, in, nullptr, nullptr, /*fitToView=*/false);
+  const float inset = 2.0f * std::max(guardTexels, 0.0f) / float(std::max(out.space.size, 1));
   for (size_t f = 0; f < set.faces.size(); ++f) {
-    const LightFace& face = set.faces[f];
-    faceLight.direction = face.axis;
-    glm::mat4 view = glm::lookAt(light.position, light.position + face.axis, face.up);
-    if (in.jitter.rotationRad != 0.0f)
-      view = glm::rotate(glm::mat4(1.0f), in.jitter.rotationRad, glm::vec3(0, 0, 1)) * view;
-    faceLight.fovDeg = enclosingFovDeg(face, view);
-    const std::vector<glm::vec3> region = faceRegion(face, light.position, near, far);
-    std::vector<glm::vec3> casters = clipCornersToPlanes(region, box);
-    out.needed.push_back(!clipCornersToPlanes(region, frustum).empty());
-    if (casters.empty()) casters = region;
-    LightView v = fitPerspective(faceLight, view, region, casters, size, /*crop=*/false, /*snap=*/false, in.jitter);
+    LightView& v = out.space.views[f];
     // The region's corners in the face's image, onto the layer's triangle f, keeping the turn
     // (a mirrored map would swap the casters' front and back faces).
     std::array<glm::vec2, 3> from;
     for (size_t k = 0; k < 3; ++k) {
-      const glm::vec4 c = v.viewProj * glm::vec4(light.position + face.corners[k], 1.0f);
+      const glm::vec4 c = v.viewProj * glm::vec4(light.position + set.faces[f].corners[k], 1.0f);
       from[k] = glm::vec2(c) / c.w;
     }
     std::array<glm::vec2, 3> to = packedTriangleCorners(static_cast<int>(f), inset);
     if ((signedArea(from) > 0.0f) != (signedArea(to) > 0.0f)) std::swap(to[1], to[2]);
-    const glm::mat4 packing = affineOnClip(from, to);
-    v.proj = packing * v.proj;
+    v.proj = affineOnClip(from, to) * v.proj;
     v.viewProj = v.proj * v.view;
     // Texel size at unit distance: the face's, over the map's linear scale (sqrt of its area ratio).
     v.texelWorldSize /= std::sqrt(std::abs(signedArea(to) / signedArea(from)));
     v.layer = 0;
     v.packedTriangle = static_cast<int>(f);
-    out.space.views.push_back(v);
+  }
+  return out;
+}
+
+namespace {
+
+// Squares of the given sides (0: none) in rows of a size x size layer, largest first; empty when
+// they do not fit.
+std::vector<glm::ivec4> shelfPack(const std::vector<int>& sides, int size) {
+  std::vector<size_t> order(sides.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return sides[a] > sides[b]; });
+  std::vector<glm::ivec4> out(sides.size(), glm::ivec4(0));
+  int x = 0, y = 0, rowHeight = 0;
+  for (size_t i : order) {
+    const int s = sides[i];
+    if (s <= 0) continue;
+    if (x + s > size) {  // next row
+      y += rowHeight;
+      x = 0;
+      rowHeight = 0;
+    }
+    if (s > size || y + s > size) return {};
+    out[i] = {x, y, s, s};
+    x += s;
+    rowHeight = std::max(rowHeight, s);
+  }
+  return out;
+}
+
+// The part of the screen ([-1, 1]² NDC, area 4) the body with these corners covers: the convex
+// hull of their projections, clamped to the screen; the whole screen when a corner is behind the
+// camera.
+double screenFootprint(const std::vector<glm::vec3>& corners, const glm::mat4& viewProj) {
+  std::vector<glm::vec2> points;
+  for (const glm::vec3& c : corners) {
+    const glm::vec4 p = viewProj * glm::vec4(c, 1.0f);
+    if (!(p.w > 1e-6f)) return 1.0;
+    points.push_back(glm::clamp(glm::vec2(p) / p.w, glm::vec2(-1.0f), glm::vec2(1.0f)));
+  }
+  const std::vector<glm::vec2> hull = convexHull(points);
+  double area = 0.0;
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+    area += double(a.x) * b.y - double(b.x) * a.y;
+  }
+  return std::abs(area) / 8.0;
+}
+
+}  // namespace
+
+std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide) {
+  double total = 0.0;
+  for (double n : needs) total += std::max(n, 0.0);
+  std::vector<glm::ivec4> none(needs.size(), glm::ivec4(0));
+  if (!(total > 0.0) || size < 8) return none;
+  // Shrink every square together until the rows hold them (a square of the layer's whole area
+  // never fits in rows unless it is one square).
+  for (double k = 1.0; k > 0.01; k *= 0.97) {
+    std::vector<int> sides;
+    for (double n : needs) {
+      if (!(n > 0.0)) {
+        sides.push_back(0);
+        continue;
+      }
+      const int side = static_cast<int>(k * size * std::sqrt(n / total)) / 8 * 8;
+      sides.push_back(std::min(std::max(side, std::min(minSide, size)), size));
+    }
+    std::vector<glm::ivec4> packed = shelfPack(sides, size);
+    if (!packed.empty()) return packed;
+  }
+  return none;
+}
+
+FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
+                         const std::vector<ViewPixelBounds>* seen) {
+  std::vector<std::vector<glm::vec3>> receivers;
+  FaceViews out = faceViews(set, light, in, seen, &receivers);
+  const int size = out.space.size;
+  const int border = std::clamp(borderTexels, 0, size / 8);
+  const glm::mat4 camera = in.cameraProj * in.cameraView;
+  std::vector<double> needs;
+  for (size_t f = 0; f < out.space.views.size(); ++f)
+    needs.push_back(out.needed[f] && f < receivers.size() && !receivers[f].empty()
+                        ? std::max(screenFootprint(receivers[f], camera), 1e-4)
+                        : 0.0);
+  const std::vector<glm::ivec4> squares = atlasSquares(needs, size, 2 * border + 16);
+  for (size_t f = 0; f < out.space.views.size(); ++f) {
+    LightView& v = out.space.views[f];
+    v.layer = 0;
+    const glm::ivec4 sq = squares[f];
+    if (sq.z <= 0) {  // not needed (or no room): not drawn, and no pixel reads it
+      out.needed[f] = false;
+      continue;
+    }
+    // The fitted window onto the square's inside; the border around it is drawn too.
+    const float inner = float(sq.z - 2 * border);
+    glm::mat4 place(1.0f);
+    place[0][0] = place[1][1] = inner / float(size);
+    place[3][0] = (float(sq.x) + 0.5f * float(sq.z)) / float(size) * 2.0f - 1.0f;
+    place[3][1] = (float(sq.y) + 0.5f * float(sq.w)) / float(size) * 2.0f - 1.0f;
+    v.proj = place * v.proj;
+    v.viewProj = v.proj * v.view;
+    v.texelWorldSize *= float(size) / inner;
+    v.atlasRect = sq;
   }
   return out;
 }

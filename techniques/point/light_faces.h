@@ -43,9 +43,24 @@ struct FaceViews {
 // view frustum ∩ scene bounds ∩ its region is not empty. Every face has a view; an undrawn
 // face's is its whole region. With `seen` (point.fit_visible: the bounds of the pixels that read
 // each face, measured in these same views) a face is needed when a pixel reads it and is cropped
-// to those pixels instead.
+// to those pixels instead. receiversOut: each face's visible receivers (the body it is cropped
+// to). fitToView false: every face's view is its whole region (Liao's packing), needed or not.
 FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& in,
-                    const std::vector<ViewPixelBounds>* seen = nullptr);
+                    const std::vector<ViewPixelBounds>* seen = nullptr,
+                    std::vector<std::vector<glm::vec3>>* receiversOut = nullptr, bool fitToView = true);
+
+// The faces in one atlas layer of shadowmap.size² (beyond the papers: the survey's focusing with
+// the texels shared by need): each needed face fitted as faceViews does, then given a square of
+// the layer whose area follows its screen footprint (the part of the screen its visible
+// receivers cover), with `borderTexels` drawn around its window so filter taps past the window's
+// edge read the same face (LightView::atlasRect). Faces no pixel needs get no square.
+FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
+                         const std::vector<ViewPixelBounds>* seen = nullptr);
+
+// Squares for faces of the given needs (>= 0; 0: none) packed in rows into a size x size layer,
+// their areas in proportion to the needs, as large as fit, sides multiples of 8 texels of at
+// least minSide: x, y, side, side (zero for a need of 0).
+std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide);
 
 // Liao's packing (2010): the four tetrahedron faces drawn into one layer of `size` x `size`
 // texels, each into a triangle of it (the square split by its diagonals; LightView::layer,

@@ -91,6 +91,8 @@ TEST(LightFacesGl, HardPointLightCasesStayFiniteAndNearTheReference) {
       {"shadowmap.size=256"});
   // Liao's packing: one layer with the four faces' texels.
   expectHardPointCasesHold({"tetrahedron-packed", "tetrahedron-packed-pcf"}, {"shadowmap.size=512"});
+  // The cube's faces in one atlas with the six 256² faces' texels.
+  expectHardPointCasesHold({"cube-atlas"}, {"shadowmap.size=627"});
 }
 
 // The same with each view fitted to the pixels that read it (point.fit_visible): a light inside a

@@ -78,9 +78,9 @@ class PointLayoutState : public LayoutState {
   void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {
     std::vector<bool> kept(layers.size(), false);
     if (keepOn_ && keepsLayers && input_.scene) kept = cache_.keep(content_, needed_, *input_.scene, input_.time);
-    // Faces packed into one layer: drawing one clears the layer, so either every face is kept or
-    // every needed one is drawn.
-    if (space_.packed())
+    // Faces packed into one layer or an atlas: drawing one clears the layer, so either every face
+    // is kept or every needed one is drawn.
+    if (space_.sharesLayers())
       for (size_t f = 0; f < needed_.size() && f < kept.size(); ++f)
         if (needed_[f] && !kept[f]) kept.assign(kept.size(), false);
     std::vector<bool> drawn(layers.size(), false);
@@ -133,7 +133,23 @@ class PointLayoutState : public LayoutState {
     if (kept > 0) s += ", " + std::to_string(kept) + " kept from an earlier frame";
     if (space_.packed())
       return s + " into triangles of one " + std::to_string(space_.size) + "² layer (Liao's packing, not fitted)";
+    if (space_.sharesLayers()) s += atlasSides();
     return s + fittedZooms();
+  }
+  // An atlas: each drawn face's square and how much of the layer they fill.
+  std::string atlasSides() const {
+    std::string sides;
+    double used = 0.0;
+    for (size_t v = 0; v < space_.views.size() && v < needed_.size(); ++v) {
+      const glm::ivec4& r = space_.views[v].atlasRect;
+      if (!needed_[v] || r.z <= 0) continue;
+      sides += (sides.empty() ? "" : "/") + std::to_string(r.z);
+      used += double(r.z) * r.w;
+    }
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " in one %d² atlas (squares %s, %.0f %% of it)", space_.size, sides.c_str(),
+                  100.0 * used / (double(space_.size) * space_.size));
+    return buf;
   }
   // The drawn views' fitted windows as magnifications: of the whole disk for a paraboloid
   // (paraboloid.fit), of the square that holds the face's region for a face.
@@ -204,6 +220,24 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .params = {},
        .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
          return faceViews(cubeFaceSet(), light, in, seen);
+       }}));
+  out.push_back(makePointLayout(
+      {.id = "cube-atlas",
+       .help = "point light: the cube's six fitted faces in one atlas layer, each face's square sized by the part "
+               "of the screen its visible receivers cover (beyond the papers); faces with no visible receiver get "
+               "no square",
+       .glslModule = "layouts/light_faces.glsl",
+       .unit = "faces",
+       .params = {{.key = "atlas.border",
+                   .type = ParamType::Int,
+                   .min = 0,
+                   .max = 32,
+                   .defaultValue = 4,
+                   .unit = "texels",
+                   .help = "texels drawn around each face's window inside its square of the atlas, so filter taps "
+                           "past the window's edge read the same face rather than the next square"}},
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
+         return atlasFaceViews(cubeFaceSet(), light, in, in.params->i("atlas.border"), seen);
        }}));
   out.push_back(makePointLayout(
       {.id = "tetrahedron",

@@ -197,6 +197,77 @@ std::vector<glm::vec3> visibleSamples(const LayoutInput& in, const Bounds& b) {
   return out;
 }
 
+// The atlas's squares: inside the layer, apart from each other, none for a need of 0, larger for
+// a larger need, and filling a good part of the layer; extreme needs still fit.
+TEST(LightFaces, AtlasSquaresFitTheLayerApartAndFollowTheNeeds) {
+  for (const std::vector<double>& needs : std::vector<std::vector<double>>{
+           {0.3, 0.1, 0.0, 0.05, 0.4, 0.01}, {1, 1, 1, 1, 1, 1}, {1e-4, 1, 0, 0, 0, 1e-4}, {0.5}}) {
+    const int size = 1000;
+    const std::vector<glm::ivec4> sq = atlasSquares(needs, size, 24);
+    ASSERT_EQ(sq.size(), needs.size());
+    long long used = 0;
+    for (size_t i = 0; i < sq.size(); ++i) {
+      if (needs[i] <= 0.0) {
+        EXPECT_EQ(sq[i].z, 0) << i;
+        continue;
+      }
+      EXPECT_GE(sq[i].z, 24) << i;
+      EXPECT_EQ(sq[i].z % 8, 0) << i;
+      EXPECT_GE(sq[i].x, 0);
+      EXPECT_GE(sq[i].y, 0);
+      EXPECT_LE(sq[i].x + sq[i].z, size);
+      EXPECT_LE(sq[i].y + sq[i].w, size);
+      used += static_cast<long long>(sq[i].z) * sq[i].w;
+      for (size_t j = 0; j < i; ++j) {
+        const bool apart = sq[i].x + sq[i].z <= sq[j].x || sq[j].x + sq[j].z <= sq[i].x ||
+                           sq[i].y + sq[i].w <= sq[j].y || sq[j].y + sq[j].w <= sq[i].y;
+        EXPECT_TRUE(apart || sq[j].z == 0) << i << " overlaps " << j;
+      }
+      for (size_t j = 0; j < sq.size(); ++j)
+        if (needs[j] > needs[i]) EXPECT_GE(sq[j].z, sq[i].z) << j << " needs more than " << i;
+    }
+    EXPECT_GE(used, static_cast<long long>(size) * size / 3) << "the squares fill a third of the layer or more";
+  }
+}
+
+// Every direction in the view lands in its nearest face's square of the atlas, inside the border.
+TEST(LightFaces, AtlasFacesReadTheirOwnSquare) {
+  const Scene scene = loadScene("street", test::kAssets);
+  ParamSet params = makeTechnique("cube-atlas", {}).params;
+  params.set("shadowmap.size", 600);
+  const LayoutInput in = inputFor(scene, scene.cameras.front(), params, 16.0f / 9.0f);
+  const int border = 4;
+  const FaceViews v = atlasFaceViews(cubeFaceSet(), scene.light, in, border);
+  EXPECT_EQ(v.space.layerCount(), 1);
+  EXPECT_TRUE(v.space.sharesLayers());
+  EXPECT_FALSE(v.space.packed());
+  const glm::mat4 toWorld = glm::inverse(in.cameraProj * in.cameraView);
+  int checked = 0;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 40; ++x) {
+      // A point on the ground (y = 0) under pixel (x, y), if the ray reaches it.
+      const glm::vec2 ndc((x + 0.5f) / 20.0f - 1.0f, (y + 0.5f) / 12.0f - 1.0f);
+      glm::vec4 a = toWorld * glm::vec4(ndc, -1.0f, 1.0f), b = toWorld * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
+      if (!((p0.y > 0.0f) != (p1.y > 0.0f))) continue;
+      const glm::vec3 p = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
+      if (std::abs(p.x) > 20.0f || std::abs(p.z) > 20.0f) continue;
+      const int f = nearestFace(cubeFaceSet(), p - scene.light.position);
+      ASSERT_TRUE(v.needed[size_t(f)]) << "a visible point's face is drawn";
+      glm::vec3 uv;
+      float depth = 0.0f;
+      ASSERT_TRUE(mapPointOf(p, v.space.views[size_t(f)], uv, depth));
+      const glm::ivec4 r = v.space.views[size_t(f)].atlasRect;
+      const glm::vec2 texel = glm::vec2(uv) * 600.0f;
+      EXPECT_GE(texel.x, r.x + border - 0.5f) << "face " << f;
+      EXPECT_LE(texel.x, r.x + r.z - border + 0.5f) << "face " << f;
+      EXPECT_GE(texel.y, r.y + border - 0.5f) << "face " << f;
+      EXPECT_LE(texel.y, r.y + r.w - border + 0.5f) << "face " << f;
+      ++checked;
+    }
+  EXPECT_GT(checked, 200);
+}
+
 // The side of the packed triangle q a map point (uv) is on, as shaders/common/light_views.glsl
 // computes it: both >= 0 inside.
 glm::vec2 packedSides(glm::vec2 uv, int q) {

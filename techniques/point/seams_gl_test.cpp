@@ -123,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(PointSeams, PointSeamsGl,
                          ::testing::Values("cube", "cube-pcf", "tetrahedron", "tetrahedron-pcf", "dual-paraboloid",
                                            "dual-paraboloid-pcf", "vsm@cube", "esm@cube", "msm@tetrahedron",
                                            "vsm@dual-paraboloid", "tetrahedron-packed", "tetrahedron-packed-pcf",
-                                           "msm@tetrahedron-packed"),
+                                           "msm@tetrahedron-packed", "cube-atlas", "msm@cube-atlas"),
                          test::presetTestName);
 
 }  // namespace

@@ -143,8 +143,8 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
                std::vector<Texture2D*> targets;
                for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
                std::vector<std::vector<glm::vec2>> hulls;
-               // A hull per layer; views packed into one layer: every texel may be read.
-               if (lightSpace && !lightSpace->packed())
+               // A hull per layer; views sharing a layer: every texel may be read.
+               if (lightSpace && !lightSpace->sharesLayers())
                  for (const LightView& v : lightSpace->views) hulls.push_back(v.receiverHull);
                const double share = filter(*shaders, draw, targets, bindTechnique, hulls, shown);
                if (skipsUnread() && share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(share);
