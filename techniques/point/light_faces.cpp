@@ -272,7 +272,8 @@ std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size,
     std::vector<glm::ivec4> packed = shelfPack(sides, size);
     if (!packed.empty()) return packed;
   }
-  return none;
+  // A layer too small for the smallest side asked: the smallest squares there are.
+  return minSide > 8 ? atlasSquares(needs, size, 8) : none;
 }
 
 FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
@@ -296,8 +297,9 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
       out.needed[f] = false;
       continue;
     }
-    // The fitted window onto the square's inside; the border around it is drawn too.
-    const float inner = float(sq.z - 2 * border);
+    // The fitted window onto the square's inside; the border around it is drawn too (narrower
+    // in a square too small for it).
+    const float inner = float(sq.z - 2 * std::min(border, std::max(0, (sq.z - 8) / 2)));
     glm::mat4 place(1.0f);
     place[0][0] = place[1][1] = inner / float(size);
     place[3][0] = (float(sq.x) + 0.5f * float(sq.z)) / float(size) * 2.0f - 1.0f;
