@@ -326,6 +326,27 @@ std::vector<V> monotoneChainHull(std::vector<V> points) {
 std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points) { return monotoneChainHull(std::move(points)); }
 std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points) { return monotoneChainHull(std::move(points)); }
 
+std::vector<glm::dvec2> screenPoints(const std::vector<glm::vec3>& body, const glm::mat4& viewProj) {
+  std::vector<glm::dvec2> ndc;
+  for (const glm::vec3& p : body) {
+    const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+    if (!(c.w > 0.0f)) continue;
+    ndc.push_back(glm::clamp(glm::dvec2(c.x / c.w, c.y / c.w), glm::dvec2(-1.0), glm::dvec2(1.0)));
+  }
+  return ndc;
+}
+
+double screenShare(const std::vector<glm::dvec2>& ndc) {
+  const std::vector<glm::dvec2> hull = convexHull(ndc);
+  double area = 0.0;  // shoelace
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const glm::dvec2& a = hull[i];
+    const glm::dvec2& b = hull[(i + 1) % hull.size()];
+    area += a.x * b.y - b.x * a.y;
+  }
+  return hull.size() < 3 ? 0.0 : std::abs(area) * 0.5 / 4.0;  // the screen is 2 x 2 in NDC
+}
+
 std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vector<glm::vec3>& receivers) {
   if (view.projection != LightView::Projection::Matrix || receivers.empty()) return {};
   // A perspective view (or a warp's) sees the body's part in front of the light (w > 0; behind

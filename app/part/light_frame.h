@@ -76,6 +76,13 @@ std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vecto
 std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points);
 std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points);
 
+// A convex body's corners on screen: the NDC of those in front of the camera, clamped to the
+// screen [-1, 1]² (a corner on the camera's plane by rounding is left out: the body's other
+// corners bound it).
+std::vector<glm::dvec2> screenPoints(const std::vector<glm::vec3>& body, const glm::mat4& viewProj);
+// The share of the screen (0..1) the convex hull of such points covers.
+double screenShare(const std::vector<glm::dvec2>& ndc);
+
 // Snapping: texel size taken from a geometric ladder (8 steps per octave) so it stays constant
 // while the fitted extent changes a little, and the window origin on whole texels.
 float quantizeTexelSize(float texel);

@@ -9,18 +9,6 @@ namespace sl {
 
 namespace {
 
-// Area of the convex hull of 2D points (part/light_frame.h's hull, shoelace formula).
-double hullArea(std::vector<glm::dvec2> p) {
-  const std::vector<glm::dvec2> hull = convexHull(std::move(p));
-  double area = 0.0;
-  for (size_t i = 0; i < hull.size(); ++i) {
-    const glm::dvec2& a = hull[i];
-    const glm::dvec2& b = hull[(i + 1) % hull.size()];
-    area += a.x * b.y - b.x * a.y;
-  }
-  return hull.size() < 3 ? 0.0 : std::abs(area) * 0.5;
-}
-
 Bounds reachOf(const Light& light, const Bounds& scene) {
   if (light.type != Light::Type::Point || !(light.range > 0.0f)) return scene;
   Bounds b;
@@ -38,13 +26,7 @@ double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::
   if (reach.empty()) return 0.0;
   const std::vector<glm::vec3> body = clipFrustumToBox(view, proj, reach);
   if (body.empty()) return 0.0;
-  std::vector<glm::dvec2> ndc;
-  const glm::mat4 viewProj = proj * view;
-  for (const glm::vec3& p : body) {
-    const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
-    if (!(c.w > 0.0f)) continue;  // on the camera's plane by rounding: the body's other corners bound it
-    ndc.push_back(glm::clamp(glm::dvec2(c.x / c.w, c.y / c.w), glm::dvec2(-1.0), glm::dvec2(1.0)));
-  }
+  const std::vector<glm::dvec2> ndc = screenPoints(body, proj * view);
   if (ndcBounds && !ndc.empty()) {
     glm::dvec2 lo(1.0), hi(-1.0);
     for (const glm::dvec2& q : ndc) {
@@ -54,7 +36,7 @@ double lightFootprint(const Light& light, const Bounds& sceneBounds, const glm::
     *ndcBounds = glm::vec4(lo.x, lo.y, hi.x, hi.y);
   }
   // A body flat on screen (seen edge-on) still holds visible points: never 0 for a non-empty one.
-  return std::clamp(hullArea(ndc) / 4.0, 1e-6, 1.0);
+  return std::clamp(screenShare(ndc), 1e-6, 1.0);
 }
 
 glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int width, int height) {

@@ -231,25 +231,6 @@ std::vector<glm::ivec4> shelfPack(const std::vector<int>& sides, int size) {
   return out;
 }
 
-// The part of the screen ([-1, 1]² NDC, area 4) the body with these corners covers: the convex
-// hull of their projections, clamped to the screen; the whole screen when a corner is behind the
-// camera.
-double screenFootprint(const std::vector<glm::vec3>& corners, const glm::mat4& viewProj) {
-  std::vector<glm::vec2> points;
-  for (const glm::vec3& c : corners) {
-    const glm::vec4 p = viewProj * glm::vec4(c, 1.0f);
-    if (!(p.w > 1e-6f)) return 1.0;
-    points.push_back(glm::clamp(glm::vec2(p) / p.w, glm::vec2(-1.0f), glm::vec2(1.0f)));
-  }
-  const std::vector<glm::vec2> hull = convexHull(points);
-  double area = 0.0;
-  for (size_t i = 0; i < hull.size(); ++i) {
-    const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
-    area += double(a.x) * b.y - double(b.x) * a.y;
-  }
-  return std::abs(area) / 8.0;
-}
-
 }  // namespace
 
 std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide) {
@@ -286,7 +267,7 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
   std::vector<double> needs;
   for (size_t f = 0; f < out.space.views.size(); ++f)
     needs.push_back(out.needed[f] && f < receivers.size() && !receivers[f].empty()
-                        ? std::max(screenFootprint(receivers[f], camera), 1e-4)
+                        ? std::max(screenShare(screenPoints(receivers[f], camera)), 1e-4)
                         : 0.0);
   const std::vector<glm::ivec4> squares = atlasSquares(needs, size, 2 * border + 16);
   for (size_t f = 0; f < out.space.views.size(); ++f) {
