@@ -43,6 +43,7 @@ vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {
   if (pick.view2 >= 0 && pick.weight2 > 0.0) {
     vec4 coord2;
     result = mix(result, shadowTestIn(P, N, F, cosTheta, pick.view2, coord2), clamp(pick.weight2, 0.0, 1.0));
+    sl_view = pick.view;  // coord is the first view's: later lookups at it read that view's values
   }
   return result;
 }
