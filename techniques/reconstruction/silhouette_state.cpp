@@ -70,8 +70,15 @@ void SilhouetteMapState::drawSilhouettes(const PartContext& ctx) {
     ctx.bindTechnique(p, units);  // depth map (u_shadowMap), light views, parameters
     p.set("u_shadowView", static_cast<int>(view));
     p.set("u_silSize", static_cast<float>(points_.width()));
+    // A view in an atlas keeps to its square (LightView::atlasRect), as in the shadow pass.
+    const glm::ivec4& rect = space.views[view].atlasRect;
+    if (rect.z > 0) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(rect.x, rect.y, rect.z, rect.w);
+    }
     glBindVertexArray(vao_);
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(2 * segments_));
+    glDisable(GL_SCISSOR_TEST);
   }
   glBindVertexArray(0);
 }
