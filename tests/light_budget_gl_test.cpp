@@ -138,5 +138,23 @@ TEST(LightBudgetGl, ATexelBudgetShrinksTheMapsAndKeepsEveryLightNearItsReference
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
 }
 
+// Views sharing one layer (the cube's faces in an atlas, Liao's packed tetrahedron) cost that
+// layer's texels: street-lamps at 1024² hold 4 × 1024² = 4.19 M texels, so a budget of 4.3 M
+// keeps every map whole (charged per view, the lamps' maps would halve twice).
+TEST(LightBudgetGl, ViewsSharingALayerAreChargedThatLayerOnce) {
+  test::GlHarness h;
+  const test::SceneTruth t = test::sceneTruth(h, "street-lamps", 160, 90);
+  for (const char* preset : {"cube-atlas", "tetrahedron-packed"}) {
+    Viewport full(makeTechnique(preset, {"shadowmap.size=1024"}));
+    Viewport budgeted(makeTechnique(preset, {"shadowmap.size=1024", "lights.texel_budget=4.3"}));
+    test::renderFromCut(h, t.in, full);
+    test::renderFromCut(h, t.in, budgeted);
+    EXPECT_EQ(full.shadowTexels(), 4 * 1024 * 1024) << preset << ": " << full.status();
+    EXPECT_EQ(budgeted.shadowTexels(), full.shadowTexels()) << preset << ": " << budgeted.status();
+    EXPECT_EQ(budgeted.colorTexture()->readRgba8(), full.colorTexture()->readRgba8()) << preset;
+  }
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
 }  // namespace
 }  // namespace sl

@@ -42,12 +42,12 @@ struct LightDemand {
 // Texels per side of each light's maps: 0 for a light of no footprint, else maxSize >> j. With
 // budgetTexels <= 0 every drawn light gets maxSize. Otherwise every drawn light starts at the
 // smallest step of at least minSize, and the light with the most footprint per texel is doubled
-// while the sum of views · size² stays within the budget: a light of more footprint never gets
+// while the sum of layers · size² stays within the budget: a light of more footprint never gets
 // fewer texels per view than one of less, and the sum exceeds the budget only when the smallest
 // steps alone do.
 std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double budgetTexels, int maxSize, int minSize);
 
-// The sum of views · size² of those sizes.
+// The sum of layers · size² of those sizes.
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes);
 
 }  // namespace sl

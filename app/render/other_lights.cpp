@@ -39,16 +39,17 @@ void Renderer::syncOtherLightViewports(Viewport& vp) {
   }
 }
 
-// Layers of a light's maps: the last frame's, or before its first frame its layout asked once (then
-// reset, so that nothing of the question stays in its state).
-int Renderer::lightViewCount(Viewport& light, const FrameInput& in) {
+// Layers of a light's maps, the texels its size buys: the last frame's, or before its first frame
+// its layout asked once (then reset, so that nothing of the question stays in its state). Views
+// that share a layer (an atlas of faces, a packed tetrahedron) count once: their layer is the map.
+int Renderer::lightLayerCount(Viewport& light, const FrameInput& in) {
   if (!light.laidOut_) {
     const LayoutInput li = layoutInput(light, in);
-    const size_t views = light.layout->compute(li).views.size();
+    const int layers = light.layout->compute(li).layerCount();
     light.layout->reset();
-    return static_cast<int>(std::max<size_t>(views, 1));
+    return layers;
   }
-  return static_cast<int>(light.lightSpace.views.size());
+  return light.lightSpace.layerCount();
 }
 
 // The user's viewport and its other lights: an other light whose reach holds no visible point is
@@ -78,7 +79,7 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
         heldFootprint(lights[k]->heldFootprint_, k == 0 ? std::max(footprint, 1e-6) : footprint);
     demand[k].footprint = lights[k]->heldFootprint_;
     lights[k]->scissor_ = k == 0 ? glm::ivec4(0) : lightScissor(*sources[k], ndc, in.width, in.height);
-    demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightViewCount(*lights[k], in) : 1;
+    demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightLayerCount(*lights[k], in) : 1;
   }
   const int size = params.has("shadowmap.size") ? params.i("shadowmap.size") : 2048;
   const std::vector<int> sizes = budgetMapSizes(demand, budget, size, 64);

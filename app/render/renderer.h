@@ -177,7 +177,7 @@ class Renderer {
   void syncOtherLightViewports(Viewport& vp);
   // Which other lights this frame draws and every light's map size (render/light_budget.h).
   void budgetLightMaps(Viewport& vp, const FrameInput& in);
-  int lightViewCount(Viewport& light, const FrameInput& in);
+  int lightLayerCount(Viewport& light, const FrameInput& in);
   LayoutInput layoutInput(Viewport& vp, const FrameInput& in);
   void ensureOtherDirectTarget(Viewport& vp, int w, int h);
   // The colour with Scene::light's `visibility` plus the other lights' summed direct light.
