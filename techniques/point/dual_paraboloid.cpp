@@ -189,7 +189,9 @@ std::unique_ptr<Layout> makeDualParaboloidLayout() {
                    .help = "fit each hemisphere's map to the directions of the receivers the camera sees in it (the "
                            "survey's focusing, beyond Brabec et al.): the part of the disk they fill is zoomed to the "
                            "whole map; off: the whole hemisphere"}},
-       .views = paraboloidViews});
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen, AtlasHold*) {
+         return paraboloidViews(light, in, seen);
+       }});
 }
 
 }  // namespace sl

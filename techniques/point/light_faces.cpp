@@ -257,8 +257,20 @@ std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size,
   return minSide > 8 ? atlasSquares(needs, size, 8) : none;
 }
 
+std::vector<glm::ivec4> heldAtlasSquares(const std::vector<double>& needs, int size, int minSide, double band,
+                                         AtlasHold& hold) {
+  bool keep = band > 1.0 && hold.size == size && hold.minSide == minSide && hold.needs.size() == needs.size();
+  for (size_t f = 0; keep && f < needs.size(); ++f) {
+    const double was = hold.needs[f], now = needs[f];
+    keep = (was > 0.0) == (now > 0.0) && (!(now > 0.0) || (now <= was * band && now * band >= was));
+  }
+  if (keep) return hold.squares;
+  hold = {.needs = needs, .squares = atlasSquares(needs, size, minSide), .size = size, .minSide = minSide};
+  return hold.squares;
+}
+
 FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
-                         const std::vector<ViewPixelBounds>* seen) {
+                         const std::vector<ViewPixelBounds>* seen, AtlasHold* hold) {
   std::vector<std::vector<glm::vec3>> receivers;
   FaceViews out = faceViews(set, light, in, seen, &receivers);
   const int size = out.space.size;
@@ -269,7 +281,9 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
     needs.push_back(out.needed[f] && f < receivers.size() && !receivers[f].empty()
                         ? std::max(screenShare(screenPoints(receivers[f], camera)), 1e-4)
                         : 0.0);
-  const std::vector<glm::ivec4> squares = atlasSquares(needs, size, 2 * border + 16);
+  const double band = in.params && in.params->has("atlas.hold") ? in.params->get("atlas.hold") : 1.0;
+  const std::vector<glm::ivec4> squares =
+      hold ? heldAtlasSquares(needs, size, 2 * border + 16, band, *hold) : atlasSquares(needs, size, 2 * border + 16);
   for (size_t f = 0; f < out.space.views.size(); ++f) {
     LightView& v = out.space.views[f];
     v.layer = 0;

@@ -54,13 +54,30 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
 // the layer whose area follows its screen footprint (the part of the screen its visible
 // receivers cover), with `borderTexels` drawn around its window so filter taps past the window's
 // edge read the same face (LightView::atlasRect). Faces no pixel needs get no square.
+// hold (a state's memory between frames, null for none): the squares are kept while the faces'
+// needs stay within atlas.hold of those they were sized for (heldAtlasSquares).
+struct AtlasHold;
 FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
-                         const std::vector<ViewPixelBounds>* seen = nullptr);
+                         const std::vector<ViewPixelBounds>* seen = nullptr, AtlasHold* hold = nullptr);
 
 // Squares for faces of the given needs (>= 0; 0: none) packed in rows into a size x size layer,
 // their areas in proportion to the needs, as large as fit, sides multiples of 8 texels of at
 // least minSide: x, y, side, side (zero for a need of 0).
 std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide);
+
+// An atlas's squares held between frames (beyond the papers). A square follows its face's need,
+// which follows the camera; a square that changed size every frame would change its face's texel
+// size, and the edges it draws, every frame: the shimmer of an unsnapped map. So the squares are
+// kept while every face's need stays within a factor `band` of the need it was sized for (and
+// the same faces are needed, in a layer of the same size and border); beyond it they are sized
+// anew. band <= 1: sized anew every frame.
+struct AtlasHold {
+  std::vector<double> needs;  // what the held squares were sized for
+  std::vector<glm::ivec4> squares;
+  int size = 0, minSide = 0;
+};
+std::vector<glm::ivec4> heldAtlasSquares(const std::vector<double>& needs, int size, int minSide, double band,
+                                         AtlasHold& hold);
 
 // Liao's packing (2010): the four tetrahedron faces drawn into one layer of `size` x `size`
 // texels, each into a triangle of it (the square split by its diagonals; LightView::layer,

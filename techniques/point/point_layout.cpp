@@ -20,10 +20,10 @@ namespace {
 
 // The views under a point light; under any other light one focused map (every view needed).
 FaceViews viewsOrFocused(const PointLayoutSpec& spec, const LayoutInput& in, bool& pointLight,
-                         const std::vector<ViewPixelBounds>* seen = nullptr) {
+                         const std::vector<ViewPixelBounds>* seen = nullptr, AtlasHold* hold = nullptr) {
   const Light light = sampledLight(in.shadowedLight(), in.jitter.lightSample);
   pointLight = light.type == Light::Type::Point;
-  if (pointLight) return spec.views(light, in, seen);
+  if (pointLight) return spec.views(light, in, seen, hold);
   FaceViews focused;
   focused.space = focusedMap(in, focusBody(in));
   focused.needed.assign(focused.space.views.size(), true);
@@ -59,7 +59,7 @@ class PointLayoutState : public LayoutState {
   PointLayoutState(const Layout& layout, const PointLayoutSpec& spec) : LayoutState(layout), spec_(spec) {}
   LightSpace compute(const LayoutInput& in) override {
     bool pointLight = false;
-    FaceViews v = viewsOrFocused(spec_, in, pointLight);
+    FaceViews v = viewsOrFocused(spec_, in, pointLight, nullptr, &hold_);
     pointLight_ = pointLight;
     input_ = in;
     keepOn_ = in.params && in.params->has("point.keep_faces") && in.params->b("point.keep_faces");
@@ -96,14 +96,17 @@ class PointLayoutState : public LayoutState {
     cache_.record(content_, drawn, keepsLayers, input_.time);
     status_ = statusLine(neededCount, keptCount);
   }
-  void reset() override { cache_.clear(); }
+  void reset() override {
+    cache_.clear();
+    hold_ = {};
+  }
   // point.fit_visible: the views refitted to the bounds of the pixels that read them, measured in
   // the views compute() made (the same input gives the same rolled views), before the shadow pass.
   void refitToPixels(const PartContext& ctx) {
     const std::vector<ViewPixelBounds> seen = reduction_->reduce(ctx, space_, ctx.shadowedLight());
     if (seen.empty()) return;  // the pass did not run: the frustum fit stays
     bool pointLight = false;
-    FaceViews v = viewsOrFocused(spec_, input_, pointLight, &seen);
+    FaceViews v = viewsOrFocused(spec_, input_, pointLight, &seen, &hold_);
     adopt(v);
     ctx.replaceLightSpace(v.space);
   }
@@ -176,6 +179,7 @@ class PointLayoutState : public LayoutState {
   std::vector<bool> needed_;
   std::vector<FaceContent> content_;
   FaceCache cache_;
+  AtlasHold hold_;
   LayoutInput input_;
   LightSpace space_;
   uint64_t stamp_ = 0;
@@ -218,7 +222,7 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .glslModule = "layouts/light_faces.glsl",
        .unit = "faces",
        .params = {},
-       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen, AtlasHold*) {
          return faceViews(cubeFaceSet(), light, in, seen);
        }}));
   out.push_back(makePointLayout(
@@ -235,9 +239,19 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
                    .defaultValue = 4,
                    .unit = "texels",
                    .help = "texels drawn around each face's window inside its square of the atlas, so filter taps "
-                           "past the window's edge read the same face rather than the next square"}},
-       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
-         return atlasFaceViews(cubeFaceSet(), light, in, in.params->i("atlas.border"), seen);
+                           "past the window's edge read the same face rather than the next square"},
+                  {.key = "atlas.hold",
+                   .type = ParamType::Float,
+                   .min = 1,
+                   .max = 4,
+                   .defaultValue = 1.5,
+                   .unit = "x",
+                   .help = "the squares are kept between frames while every face's screen footprint stays within "
+                           "this factor of the one its square was sized for, so a moving camera does not change "
+                           "the faces' texel sizes (and their edges) every frame; 1 sizes them anew every frame"}},
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen,
+                   AtlasHold* hold) {
+         return atlasFaceViews(cubeFaceSet(), light, in, in.params->i("atlas.border"), seen, hold);
        }}));
   out.push_back(makePointLayout(
       {.id = "tetrahedron",
@@ -246,7 +260,7 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .glslModule = "layouts/light_faces.glsl",
        .unit = "faces",
        .params = {},
-       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen) {
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen, AtlasHold*) {
          return faceViews(tetrahedronFaceSet(), light, in, seen);
        }}));
   out.push_back(makePointLayout(
@@ -266,7 +280,7 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
                            "region, so filter taps reaching this far past a face edge read the same face (Liao's "
                            "guard band); the regions shrink by it"}},
        .fitsToPixels = false,
-       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>*) {
+       .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>*, AtlasHold*) {
          return packedTetrahedronViews(light, in, static_cast<float>(in.params->get("tetrahedron.guard")));
        }}));
   out.push_back(makeDualParaboloidLayout());

@@ -16,8 +16,10 @@ struct PointLayoutSpec {
   std::string unit;  // what its views are called in the status line: "faces", "hemispheres"
   std::vector<ParamDecl> params;
   bool fitsToPixels = true;  // declares point.fit_visible (views fitted to the pixels that read them)
-  // seen: null, or the bounds of the pixels that read each view (point.fit_visible).
-  std::function<FaceViews(const Light& pointLight, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen)>
+  // seen: null, or the bounds of the pixels that read each view (point.fit_visible). hold: the
+  // state's memory of an atlas's squares between frames (null in a stateless compute).
+  std::function<FaceViews(const Light& pointLight, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen,
+                          AtlasHold* hold)>
       views;
 };
 std::unique_ptr<Layout> makePointLayout(PointLayoutSpec spec);

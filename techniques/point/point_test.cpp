@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include <unistd.h>
 
@@ -231,6 +232,61 @@ TEST(LightFaces, AtlasSquaresFitTheLayerApartAndFollowTheNeeds) {
   // A layer too small for the smallest side asked still gets a square for every need.
   const std::vector<glm::ivec4> tiny = atlasSquares({1, 1, 1, 1, 1, 1}, 64, 24);
   for (const glm::ivec4& s : tiny) EXPECT_GE(s.z, 8);
+}
+
+// Held squares: kept while every need stays within the band of the one they were sized for
+// (measured from there, so a slow drift is followed), sized anew beyond it, when a face starts or
+// stops being needed, when the layer's size changes, and every frame with a band of 1.
+TEST(LightFaces, AtlasSquaresAreHeldWhileTheNeedsStayWithinTheBand) {
+  const std::vector<double> first = {0.3, 0.1, 0.0, 0.05, 0.4, 0.01};
+  AtlasHold hold;
+  const std::vector<glm::ivec4> sized = heldAtlasSquares(first, 1000, 24, 1.5, hold);
+  EXPECT_EQ(sized, atlasSquares(first, 1000, 24));
+  std::vector<double> drift = first;
+  for (double& n : drift) n *= 1.3;  // every face 1.3x: within 1.5
+  drift[1] /= 1.3 * 1.3;             // one 1/1.3: still within
+  EXPECT_EQ(heldAtlasSquares(drift, 1000, 24, 1.5, hold), sized);
+  EXPECT_NE(atlasSquares(drift, 1000, 24), sized) << "the instrument: sized anew, the squares differ";
+  std::vector<double> far = drift;
+  far[4] = first[4] * 1.6;  // beyond 1.5 of the need it was sized for (1.23x the last frame's)
+  const std::vector<glm::ivec4> resized = heldAtlasSquares(far, 1000, 24, 1.5, hold);
+  EXPECT_EQ(resized, atlasSquares(far, 1000, 24));
+  EXPECT_EQ(hold.needs, far);
+  std::vector<double> newFace = far;
+  newFace[2] = 0.02;  // a face now needed
+  EXPECT_GT(heldAtlasSquares(newFace, 1000, 24, 1.5, hold)[2].z, 0);
+  EXPECT_EQ(heldAtlasSquares(newFace, 500, 24, 1.5, hold), atlasSquares(newFace, 500, 24)) << "a new layer size";
+  std::vector<double> nudged = newFace;
+  nudged[0] *= 1.01;
+  EXPECT_EQ(heldAtlasSquares(nudged, 500, 24, 1.0, hold), atlasSquares(nudged, 500, 24)) << "band 1: never held";
+}
+
+// Along street's `walk` (2 s at 30 fps) the held squares change seldom, and the faces' texel
+// sizes with them (the map's shimmer, the bench's world flicker: docs in atlas.md); sized anew
+// every frame they change many times.
+TEST(LightFaces, AtlasSquaresHeldAlongAWalkChangeSeldom) {
+  const Scene scene = loadScene("street", test::kAssets);
+  const CameraPath* walk = scene.findPath("walk");
+  ASSERT_NE(walk, nullptr);
+  std::map<double, int> changes;
+  for (double band : {1.0, 1.5}) {
+    ParamSet params = makeTechnique("cube-atlas", {}).params;
+    params.set("atlas.hold", band);
+    AtlasHold hold;
+    std::vector<glm::ivec4> last;
+    for (int frame = 0; frame < 60; ++frame) {
+      const Camera cam = walk->sample(float(frame) / 30.0f, scene.cameras.front());
+      const FaceViews v =
+          atlasFaceViews(cubeFaceSet(), scene.light, inputFor(scene, cam, params, 16.0f / 9.0f), 4, nullptr, &hold);
+      std::vector<glm::ivec4> rects;
+      for (const LightView& view : v.space.views) rects.push_back(view.atlasRect);
+      changes[band] += frame > 0 && rects != last ? 1 : 0;
+      last = rects;
+    }
+  }
+  std::printf("square changes along walk: sized anew %d, held %d\n", changes[1.0], changes[1.5]);
+  EXPECT_LE(changes[1.5], 3);
+  EXPECT_GE(changes[1.0], 10) << "the instrument: the needs do move along the walk";
 }
 
 // Every direction in the view lands in its nearest face's square of the atlas, inside the border.
