@@ -130,6 +130,9 @@ struct LayoutInput {
   uint64_t sceneGeneration = 0;
   // The light these views are for: one of the scene's shadowed lights (null: scene->light).
   const Light* light = nullptr;
+  // How far the representation's lookups read past a receiver's texel (Representation::
+  // filterReachTexels): what a view drawn only up to its window's edge would lose to the clamp.
+  float filterReachTexels = 0.0f;
   const Light& shadowedLight() const { return light ? *light : scene->light; }
 };
 

@@ -18,6 +18,7 @@ struct LightViewsBlock {
   float split[kMaxLightViews][4];    // camera view depth: from, to, blend band, LogPSM delta
   float window[kMaxLightViews][4];   // a paraboloid's fitted window: centre xy, zoom, unused
   float packing[kMaxLightViews][4];  // layer, packed triangle (-1: whole layer), unused, unused
+  float atlas[kMaxLightViews][4];    // the view's square of an atlas layer in uv: min xy, max xy (0: none)
   float info[4];                     // views, texels per side, unused, unused
 };
 
@@ -46,6 +47,12 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     std::memcpy(block.window[i], window, sizeof(window));
     block.packing[i][0] = static_cast<float>(ls.layerOf(i));
     block.packing[i][1] = static_cast<float>(v.packedTriangle);
+    if (v.atlasRect.z > 0 && ls.size > 0) {
+      const float texel = 1.0f / static_cast<float>(ls.size);
+      const float square[4] = {v.atlasRect.x * texel, v.atlasRect.y * texel, (v.atlasRect.x + v.atlasRect.z) * texel,
+                               (v.atlasRect.y + v.atlasRect.w) * texel};
+      std::memcpy(block.atlas[i], square, sizeof(square));
+    }
   }
   block.info[0] = static_cast<float>(n);
   block.info[1] = static_cast<float>(ls.size);

@@ -9,6 +9,7 @@ layout(std140, binding = 1) uniform LightViews {
   vec4 lightViewSplit[SL_MAX_LIGHT_VIEWS];  // camera view depth the view serves: from, to, blend band; w: LogPSM delta
   vec4 lightViewWindow[SL_MAX_LIGHT_VIEWS];  // a paraboloid's fitted window: map = (disk - xy) * zw
   vec4 lightViewPacking[SL_MAX_LIGHT_VIEWS];  // x: the layer the view is drawn into, y: its packed triangle (-1: none)
+  vec4 lightViewAtlas[SL_MAX_LIGHT_VIEWS];    // the view's square of an atlas layer in uv: min xy, max xy; 0: none
   vec4 lightViewInfo;                       // x: number of views, y: texels per side
 };
 
@@ -26,6 +27,18 @@ vec2 packedTriangleSides(vec2 ndc, int view) {
   // Turned so that the triangle is the top one, y >= |x|.
   vec2 p = triangle == 1 ? vec2(-ndc.y, ndc.x) : triangle == 2 ? -ndc : triangle == 3 ? vec2(ndc.y, -ndc.x) : ndc;
   return vec2(p.y - p.x, p.y + p.x);
+}
+
+// A filter tap around a lookup in view `view` (uv of its layer of mapSize texels), kept inside the
+// view's square when the view has one in an atlas layer (LightView::atlasRect): past the square
+// lie another face's depths, which mean nothing here, while its own edge texel (in the border
+// drawn past the face's window) is what a layer of its own would clamp the tap to. Views that own
+// their layer are left alone (their sampler's wrap decides).
+vec2 lightViewTap(vec2 uv, int view, vec2 mapSize) {
+  vec4 square = lightViewAtlas[view];
+  if (!(square.z > square.x)) return uv;
+  vec2 halfTexel = 0.5 / mapSize;
+  return clamp(uv, square.xy + halfTexel, square.zw - halfTexel);
 }
 
 // The view of the last map lookup the visibility test set up (common/visibility_term.glsl,

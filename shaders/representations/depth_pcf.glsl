@@ -12,7 +12,7 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   float lit = 0.0;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
-      vec2 tap = start + vec2(x, y) * texel;
+      vec2 tap = lightViewTap(start + vec2(x, y) * texel, sl_view, 1.0 / texel);
       float depth = receiverDepthAt(receiverDepth, tap, 1.0 / texel);
       lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
     }

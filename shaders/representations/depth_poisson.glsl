@@ -28,8 +28,9 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   float lit = 0.0;
   for (int i = 0; i < n; ++i) {
     vec2 offset = rot * kPoisson[i] * u_poisson_radius * texel;
-    float depth = receiverDepthAt(receiverDepth, uv + offset, 1.0 / texel);
-    lit += depth <= texture(u_shadowMap, vec3(uv + offset, uvLayer.z)).r ? 1.0 : 0.0;
+    vec2 tap = lightViewTap(uv + offset, sl_view, 1.0 / texel);
+    float depth = receiverDepthAt(receiverDepth, tap, 1.0 / texel);
+    lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
   }
   return lit / float(n);
 }

@@ -10,12 +10,15 @@ namespace {
 
 class DepthRepresentation : public Representation {
  public:
-  DepthRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> params, bool compare)
+  using Reach = float (*)(const ParamSet&);
+  DepthRepresentation(std::string id, std::string help, std::string module, std::vector<ParamDecl> params, bool compare,
+                      Reach reach = nullptr)
       : id_(std::move(id)),
         help_(std::move(help)),
         module_(std::move(module)),
         params_(std::move(params)),
-        compare_(compare) {}
+        compare_(compare),
+        reach_(reach) {}
   std::string id() const override { return id_; }
   std::string help() const override { return help_; }
   std::string glslModule() const override { return module_; }
@@ -23,11 +26,13 @@ class DepthRepresentation : public Representation {
   std::unique_ptr<RepresentationState> createState() const override {
     return std::make_unique<DepthMapState>(compare_);
   }
+  float filterReachTexels(const ParamSet& params) const override { return reach_ ? reach_(params) : 0.0f; }
 
  private:
   std::string id_, help_, module_;
   std::vector<ParamDecl> params_;
   bool compare_;
+  Reach reach_;
 };
 
 }  // namespace
@@ -49,7 +54,7 @@ void registerDepthRepresentations(std::vector<std::unique_ptr<Representation>>& 
                               .defaultValue = 3,
                               .unit = "texels",
                               .help = "box filter width N: N x N depth tests are averaged"}},
-      false));
+      false, [](const ParamSet& p) { return p.has("pcf.kernel") ? 0.5f * float(p.i("pcf.kernel")) : 0.0f; }));
   out.push_back(std::make_unique<DepthRepresentation>(
       "depth-poisson", "PCF over a Poisson disk, rotated per pixel to trade banding for noise (Reeves et al. 1987)",
       "representations/depth_poisson.glsl",
@@ -71,7 +76,7 @@ void registerDepthRepresentations(std::vector<std::unique_ptr<Representation>>& 
                               .type = ParamType::Bool,
                               .defaultValue = 1,
                               .help = "rotate the disk per pixel (noise instead of banding)"}},
-      false));
+      false, [](const ParamSet& p) { return p.has("poisson.radius") ? float(p.get("poisson.radius")) : 0.0f; }));
 }
 
 }  // namespace sl

@@ -257,6 +257,25 @@ std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size,
   return minSide > 8 ? atlasSquares(needs, size, 8) : none;
 }
 
+void widenViews(FaceViews& views, float guardTexels) {
+  const float size = static_cast<float>(views.space.size);
+  // A tap a couple of texels past the edge reads the clamped edge texel, which sees nearly the
+  // same direction: a 3-texel border changed nothing for PCF (seams.md), and costs resolution.
+  if (!(guardTexels > 2.0f)) return;
+  const float guard = std::min(std::ceil(guardTexels), size / 8.0f);
+  const float k = (size - 2.0f * guard) / size;  // the window's share of the layer
+  glm::mat4 shrink(1.0f);
+  shrink[0][0] = shrink[1][1] = k;
+  for (LightView& v : views.space.views) {
+    v.proj = shrink * v.proj;
+    v.viewProj = v.proj * v.view;
+    v.texelWorldSize /= k;
+    const glm::vec2 centre = 0.5f * (v.windowMin + v.windowMax), half = 0.5f * (v.windowMax - v.windowMin) / k;
+    v.windowMin = centre - half;
+    v.windowMax = centre + half;
+  }
+}
+
 std::vector<glm::ivec4> heldAtlasSquares(const std::vector<double>& needs, int size, int minSide, double band,
                                          AtlasHold& hold) {
   bool keep = band > 1.0 && hold.size == size && hold.minSide == minSide && hold.needs.size() == needs.size();
@@ -274,7 +293,9 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
   std::vector<std::vector<glm::vec3>> receivers;
   FaceViews out = faceViews(set, light, in, seen, &receivers);
   const int size = out.space.size;
-  const int border = std::clamp(borderTexels, 0, size / 8);
+  // The border holds what the representation's taps read past the window (its reach), at least.
+  const int reach = static_cast<int>(std::ceil(in.filterReachTexels));
+  const int border = std::clamp(std::max(borderTexels, reach), 0, size / 8);
   const glm::mat4 camera = in.cameraProj * in.cameraView;
   std::vector<double> needs;
   for (size_t f = 0; f < out.space.views.size(); ++f)

@@ -223,7 +223,9 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .unit = "faces",
        .params = {},
        .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen, AtlasHold*) {
-         return faceViews(cubeFaceSet(), light, in, seen);
+         FaceViews views = faceViews(cubeFaceSet(), light, in, seen);
+         widenViews(views, in.filterReachTexels);
+         return views;
        }}));
   out.push_back(makePointLayout(
       {.id = "cube-atlas",
@@ -261,6 +263,8 @@ void registerPointLayouts(std::vector<std::unique_ptr<Layout>>& out) {
        .unit = "faces",
        .params = {},
        .views = [](const Light& light, const LayoutInput& in, const std::vector<ViewPixelBounds>* seen, AtlasHold*) {
+         // A face's square frustum already reaches well past its triangle: not widened (the
+         // guard would cost a 256² face a quarter of its texels; seams.md, "Soft shadows").
          return faceViews(tetrahedronFaceSet(), light, in, seen);
        }}));
   out.push_back(makePointLayout(

@@ -143,6 +143,10 @@ class PcssRepresentation : public Representation {
     return decls;
   }
   std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<PcssState>(); }
+  // The blocker search and the filter both reach up to pcss.max_radius texels.
+  float filterReachTexels(const ParamSet& params) const override {
+    return params.has("pcss.max_radius") ? float(params.get("pcss.max_radius")) : 0.0f;
+  }
 };
 
 }  // namespace

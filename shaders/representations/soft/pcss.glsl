@@ -25,7 +25,7 @@ float pcssFilter(vec3 uvLayer, float receiverDepth, float radius, int samples) {
   float lit = 0.0;
   int n = clamp(samples, 1, kSoftPoissonCount);
   for (int i = 0; i < n; ++i) {
-    vec2 tap = uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize;
+    vec2 tap = lightViewTap(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, sl_view, mapSize);
     float depth = receiverDepthAt(receiverDepth, tap, mapSize);
     lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
   }
@@ -43,7 +43,7 @@ vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
   int n = clamp(int(u_pcss_blocker_samples + 0.5), 1, kSoftPoissonCount);
   float sum = 0.0, count = 0.0;
   for (int i = 0; i < n; ++i) {
-    vec2 tap = uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize;
+    vec2 tap = lightViewTap(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, view, mapSize);
     float stored = texture(u_shadowMap, vec3(tap, uvLayer.z)).r;
     if (stored < receiverDepthAt(receiverDepth, tap, mapSize)) {
       sum += stored;
