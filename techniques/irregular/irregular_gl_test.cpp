@@ -12,6 +12,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <string>
 #include <tuple>
 
 namespace sl {
@@ -231,28 +232,25 @@ TEST(Irregular, CascadesAreListedViewByViewAndMatchTheReference) {
   EXPECT_LE(severalViews(h, "basic", "cascaded").wrong, 3);
 }
 
-TEST(Irregular, CubeFacesAreListedViewByViewAndMatchTheReference) {
+// A point light's views on street's lamp: the cube's and the tetrahedron's faces, each in a
+// layer, Liao's packing (the four faces share one layer, each in its triangle) and the cube's
+// atlas (each face in its square of one layer). The lists are built view by view, so sharing a
+// layer changes nothing of the exact test.
+class IrregularPointLayoutGl : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(IrregularPointLayoutGl, FacesAreListedViewByViewAndMatchTheReference) {
   test::GlHarness h;
-  EXPECT_LE(severalViews(h, "street", "cube").wrong, 3);
+  EXPECT_LE(severalViews(h, "street", GetParam()).wrong, 3);
 }
 
-TEST(Irregular, TetrahedronFacesAreListedViewByViewAndMatchTheReference) {
-  test::GlHarness h;
-  EXPECT_LE(severalViews(h, "street", "tetrahedron").wrong, 3);
-}
-
-// Liao's packing: the four faces share one layer, each in its own triangle; the lists are still
-// built view by view, so the packing changes nothing of the exact test.
-TEST(Irregular, PackedTetrahedronFacesAreListedViewByViewAndMatchTheReference) {
-  test::GlHarness h;
-  EXPECT_LE(severalViews(h, "street", "tetrahedron-packed").wrong, 3);
-}
-
-// The cube's faces in one atlas, each in its square: listed view by view as well.
-TEST(Irregular, AtlasCubeFacesAreListedViewByViewAndMatchTheReference) {
-  test::GlHarness h;
-  EXPECT_LE(severalViews(h, "street", "cube-atlas").wrong, 3);
-}
+INSTANTIATE_TEST_SUITE_P(PointLayouts, IrregularPointLayoutGl,
+                         ::testing::Values("cube", "tetrahedron", "tetrahedron-packed", "cube-atlas"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
 
 // Views no matrix places points in get a clear status and the map test everywhere: a warped view
 // under a sun (LiSPSM) and the paraboloids.
