@@ -152,11 +152,12 @@ class Representation {
   // Its part of the shadow pass's plan: the fragment stage and which casters it draws.
   virtual CasterDraw casterDraw() const { return {}; }
   virtual std::unique_ptr<RepresentationState> createState() const = 0;
-  // How far from the receiver's texel its lookups may read, in texels of the view (a filter's
-  // radius, a blocker search's): a layout whose views end where another's begin (a point light's
-  // faces) draws that far past each view's window, so the taps read that view's own casters
-  // rather than a clamped edge or another view's square (LayoutInput::filterReachTexels).
-  virtual float filterReachTexels(const ParamSet& params) const { return 0.0f; }
+  // How far from the receiver's texel its lookups may read under `light`, in texels of the view
+  // (a filter's radius, a blocker search's): a layout whose views end where another's begin (a
+  // point light's faces) draws that far past each view's window, so the taps read that view's
+  // own casters rather than a clamped edge or another view's square
+  // (LayoutInput::filterReachTexels).
+  virtual float filterReachTexels(const ParamSet& params, const Light& light) const { return 0.0f; }
 };
 
 // Per-viewport state of an accumulation (history buffers, adaptive exponents, frame counters).

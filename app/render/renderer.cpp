@@ -388,7 +388,7 @@ LayoutInput Renderer::layoutInput(Viewport& vp, const FrameInput& in) {
   li.cameraView = in.fitCamera ? cameraView(*in.fitCamera) : view_;
   li.cameraProj = in.fitCamera ? cameraProjection(*in.fitCamera, static_cast<float>(in.width) / in.height) : proj_;
   li.params = &vp.frameParams_;
-  li.filterReachTexels = vp.technique.representation->filterReachTexels(vp.frameParams_);
+  li.filterReachTexels = vp.technique.representation->filterReachTexels(vp.frameParams_, lightOf(vp));
   return li;
 }
 

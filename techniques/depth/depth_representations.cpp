@@ -26,7 +26,9 @@ class DepthRepresentation : public Representation {
   std::unique_ptr<RepresentationState> createState() const override {
     return std::make_unique<DepthMapState>(compare_);
   }
-  float filterReachTexels(const ParamSet& params) const override { return reach_ ? reach_(params) : 0.0f; }
+  float filterReachTexels(const ParamSet& params, const Light&) const override {
+    return reach_ ? reach_(params) : 0.0f;
+  }
 
  private:
   std::string id_, help_, module_;

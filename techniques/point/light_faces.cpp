@@ -262,7 +262,7 @@ void widenViews(FaceViews& views, float guardTexels) {
   // A tap a couple of texels past the edge reads the clamped edge texel, which sees nearly the
   // same direction: a 3-texel border changed nothing for PCF (seams.md), and costs resolution.
   if (!(guardTexels > 2.0f)) return;
-  const float guard = std::min(std::ceil(guardTexels), size / 8.0f);
+  const float guard = std::min(std::ceil(guardTexels), size / 16.0f);
   const float k = (size - 2.0f * guard) / size;  // the window's share of the layer
   glm::mat4 shrink(1.0f);
   shrink[0][0] = shrink[1][1] = k;
@@ -293,9 +293,10 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
   std::vector<std::vector<glm::vec3>> receivers;
   FaceViews out = faceViews(set, light, in, seen, &receivers);
   const int size = out.space.size;
-  // The border holds what the representation's taps read past the window (its reach), at least.
-  const int reach = static_cast<int>(std::ceil(in.filterReachTexels));
-  const int border = std::clamp(std::max(borderTexels, reach), 0, size / 8);
+  // The border: atlas.border, or what the representation's taps read past the window (its
+  // reach) where that is more, but at most an eighth of a square's side (below).
+  const int border = std::clamp(borderTexels, 0, size / 8);
+  const int reach = std::min(static_cast<int>(std::ceil(in.filterReachTexels)), size / 8);
   const glm::mat4 camera = in.cameraProj * in.cameraView;
   std::vector<double> needs;
   for (size_t f = 0; f < out.space.views.size(); ++f)
@@ -314,8 +315,11 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
       continue;
     }
     // The fitted window onto the square's inside; the border around it is drawn too (narrower
-    // in a square too small for it).
-    const float inner = float(sq.z - 2 * std::min(border, std::max(0, (sq.z - 8) / 2)));
+    // in a square too small for it). A reach past atlas.border widens it up to an eighth of the
+    // side: a small square keeps most of its texels for its face (taps further out are clamped
+    // to the square, lightViewTap).
+    const int squareBorder = std::max(border, std::min(reach, sq.z / 8));
+    const float inner = float(sq.z - 2 * std::min(squareBorder, std::max(0, (sq.z - 8) / 2)));
     glm::mat4 place(1.0f);
     place[0][0] = place[1][1] = inner / float(size);
     place[3][0] = (float(sq.x) + 0.5f * float(sq.z)) / float(size) * 2.0f - 1.0f;

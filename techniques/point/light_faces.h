@@ -49,7 +49,7 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
                     const std::vector<ViewPixelBounds>* seen = nullptr,
                     std::vector<std::vector<glm::vec3>>* receiversOut = nullptr, bool fitToView = true);
 
-// The views widened by `guardTexels` (at most an eighth of the layer; none for 2 texels or
+// The views widened by `guardTexels` (at most a sixteenth of the layer; none for 2 texels or
 // fewer, which the clamped edge texel serves) on every side of their layer: each view draws that far past its window,
 // so a filter tap or blocker search that far past a face's edge reads that face's own casters instead of the clamped
 // edge texel (beyond the papers; the renderer passes the representation's reach, LayoutInput::filterReachTexels).

@@ -143,8 +143,10 @@ class PcssRepresentation : public Representation {
     return decls;
   }
   std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<PcssState>(); }
-  // The blocker search and the filter both reach up to pcss.max_radius texels.
-  float filterReachTexels(const ParamSet& params) const override {
+  // Under an area light the blocker search and the filter both reach up to pcss.max_radius
+  // texels; under a point of light the test is a PCF of kPcssMinRadius (1 texel).
+  float filterReachTexels(const ParamSet& params, const Light& light) const override {
+    if (!(light.radius > 0.0f)) return 1.0f;
     return params.has("pcss.max_radius") ? float(params.get("pcss.max_radius")) : 0.0f;
   }
 };
