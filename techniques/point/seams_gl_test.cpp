@@ -89,18 +89,19 @@ TEST_P(PointSeamsGl, SeamErrorIsMeasuredApartFromTheRest) {
   EXPECT_LE(s.seamPct(), std::max(2.0, 5.0 * s.restPct())) << GetParam();
 }
 
-// Shadows cast across the seams: a beam and a rail 1.5 under a lamp 3 up throw shadows from 1.6 to
+// A beam and a rail 1.5 under a lamp 3 up (of `radius`, 0: a point) throw shadows from 1.6 to
 // 4.8 out, across the ground's cube-face edges at 3 (45 degrees), the tetrahedron's and, with a
-// post, into the far field; the paraboloids' equator is level with the lamp, out of view. Here a
-// filter kernel that straddles a seam reads one view's window.
-TEST_P(PointSeamsGl, ShadowsCastAcrossTheSeams) {
+// post, into the far field; the paraboloids' equator is level with the lamp, out of view. `preset`
+// at 512² per view against the reference (`samples` per pixel), 320×180, split at the seams.
+SeamSplit seamsCrossed(const std::string& preset, float radius, int samples) {
   test::GlHarness h;
+  const std::string light = R"({"type":"point","position":[0,3,0],"radius":)" + std::to_string(radius) + "}";
   const Scene scene = loadScene(test::writeTempFile("seams_" + std::to_string(::getpid()) + ".json", R"({
     "objects":[{"name":"ground","shape":"plane","size":[16,16],"subdivisions":8},
       {"name":"beam","shape":"box","size":[1.6,0.12,0.12],"transform":{"translate":[1.6,1.5,0.4]}},
       {"name":"rail","shape":"box","size":[0.12,0.12,1.6],"transform":{"translate":[0.4,1.5,1.6]}},
       {"name":"post","shape":"cylinder","radius":0.06,"height":2.2,"transform":{"translate":[1.45,1.1,1.45]}}],
-    "light":{"type":"point","position":[0,3,0]},
+    "light":)" + light + R"(,
     "cameras":[{"position":[6,7,6],"target":[2.5,0,2.5],"fov_deg":55}]})"),
                                 test::kAssets);
   h.renderer.setScene(scene);
@@ -109,46 +110,32 @@ TEST_P(PointSeamsGl, ShadowsCastAcrossTheSeams) {
   in.width = 320;
   in.height = 180;
   ReferenceSettings rs;
-  rs.samples = 16;
+  rs.samples = samples;
   const ReferenceImage reference = ReferenceCache(scene, rs).forFrame(h.renderer, in);
-  Viewport vp(techniqueOfParam(GetParam(), {"shadowmap.size=512"}));
+  Viewport vp(techniqueOfParam(preset, {"shadowmap.size=512"}));
   test::renderFromCut(h, in, vp);
   const SeamSplit s = splitAtSeams(test::readFrame(h.renderer, vp, 320, 180), reference, vp, scene.light.position);
-  std::printf("seams %s: seam pixels %ld, wrong %.3f %%; other pixels %ld, wrong %.3f %%\n", GetParam().c_str(), s.seam,
-              s.seamPct(), s.rest, s.restPct());
+  std::printf("seams%s %s: seam pixels %ld, wrong %.3f %%; other pixels %ld, wrong %.3f %%\n",
+              radius > 0.0f ? " (soft)" : "", preset.c_str(), s.seam, s.seamPct(), s.rest, s.restPct());
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return s;
+}
+
+// Shadows cast across the seams: here a filter kernel that straddles a seam reads one view's window.
+TEST_P(PointSeamsGl, ShadowsCastAcrossTheSeams) {
+  const SeamSplit s = seamsCrossed(GetParam(), 0.0f, 16);
   EXPECT_LE(s.seamPct(), std::max(2.0, 5.0 * s.restPct())) << GetParam();
 }
 
 // Soft shadows across the seams: the same beam and rail under a lamp of radius 0.25, PCSS over
-// each point layout at 512² per view. Its blocker search and filter reach up to pcss.max_radius
-// (32 texels) past a receiver's texel, so each view is drawn that far past its window
+// each point layout. Its blocker search and filter reach up to pcss.max_radius (32 texels) past a
+// receiver's texel, so each view is drawn that far past its window
 // (LayoutInput::filterReachTexels): drawn only to the window's edge, the cube's seam band was
 // 28.6 % wrong (1.2 % elsewhere) and the atlas's 13.5 % (its 4-texel border).
 class PointSeamsSoftGl : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PointSeamsSoftGl, SoftShadowsCastAcrossTheSeams) {
-  test::GlHarness h;
-  const Scene scene = loadScene(test::writeTempFile("seams_soft_" + std::to_string(::getpid()) + ".json", R"({
-    "objects":[{"name":"ground","shape":"plane","size":[16,16],"subdivisions":8},
-      {"name":"beam","shape":"box","size":[1.6,0.12,0.12],"transform":{"translate":[1.6,1.5,0.4]}},
-      {"name":"rail","shape":"box","size":[0.12,0.12,1.6],"transform":{"translate":[0.4,1.5,1.6]}},
-      {"name":"post","shape":"cylinder","radius":0.06,"height":2.2,"transform":{"translate":[1.45,1.1,1.45]}}],
-    "light":{"type":"point","position":[0,3,0],"radius":0.25},
-    "cameras":[{"position":[6,7,6],"target":[2.5,0,2.5],"fov_deg":55}]})"),
-                                test::kAssets);
-  h.renderer.setScene(scene);
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 320;
-  in.height = 180;
-  ReferenceSettings rs;
-  rs.samples = 64;
-  const ReferenceImage reference = ReferenceCache(scene, rs).forFrame(h.renderer, in);
-  Viewport vp(techniqueOfParam(GetParam(), {"shadowmap.size=512"}));
-  test::renderFromCut(h, in, vp);
-  const SeamSplit s = splitAtSeams(test::readFrame(h.renderer, vp, 320, 180), reference, vp, scene.light.position);
-  std::printf("soft seams %s: seam pixels %ld, wrong %.3f %%; other pixels %ld, wrong %.3f %%\n", GetParam().c_str(),
-              s.seam, s.seamPct(), s.rest, s.restPct());
+  const SeamSplit s = seamsCrossed(GetParam(), 0.25f, 64);
   EXPECT_GT(s.seam, 500) << "the shadows cross the seams";
   EXPECT_LE(s.seamPct(), std::max(4.0, 5.0 * s.restPct())) << GetParam();
   EXPECT_LE(s.restPct(), 4.0) << GetParam();
