@@ -82,14 +82,14 @@ TEST(LightBudget, RandomDemandsStayWithinTheBudgetAndFollowTheFootprint) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
-    const int views = trial % 2 ? 6 : 4;
+    const int layers = trial % 2 ? 6 : 4;
     std::vector<LightDemand> lights(1 + trial % 16);
-    for (LightDemand& l : lights) l = {unit(rng) < 0.1 ? 0.0 : unit(rng), views};
+    for (LightDemand& l : lights) l = {unit(rng) < 0.1 ? 0.0 : unit(rng), layers};
     const double budget = 1e6 * (1 + trial % 40);
     const std::vector<int> sizes = budgetMapSizes(lights, budget, 1024, 64);
     ASSERT_EQ(sizes.size(), lights.size());
     double smallest = 0.0;
-    for (const LightDemand& l : lights) smallest += l.footprint > 0.0 ? double(l.views) * 64 * 64 : 0.0;
+    for (const LightDemand& l : lights) smallest += l.footprint > 0.0 ? double(l.layers) * 64 * 64 : 0.0;
     EXPECT_LE(budgetedTexels(lights, sizes), std::max(budget, smallest)) << "trial " << trial;
     for (size_t a = 0; a < lights.size(); ++a) {
       if (lights[a].footprint == 0.0) {

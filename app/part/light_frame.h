@@ -76,6 +76,10 @@ std::vector<glm::vec2> receiverHullInMap(const LightView& view, const std::vecto
 std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points);
 std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points);
 
+// Whether `now` is within a factor `band` (>= 1) of `was`, either way: the hysteresis that keeps
+// an allocation (a light's map size, an atlas's squares) while what it was sized for drifts.
+inline bool withinFactor(double now, double was, double band) { return now <= was * band && now * band >= was; }
+
 // A convex body's corners on screen: the NDC of those in front of the camera, clamped to the
 // screen [-1, 1]² (a corner on the camera's plane by rounding is left out: the body's other
 // corners bound it).

@@ -50,13 +50,13 @@ glm::ivec4 lightScissor(const Light& light, const glm::vec4& ndcBounds, int widt
 
 double heldFootprint(double held, double now, double band) {
   if (!(held > 0.0) || !(now > 0.0)) return now;
-  return now <= held * band && now * band >= held ? held : now;
+  return withinFactor(now, held, band) ? held : now;
 }
 
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes) {
   double sum = 0.0;
   for (size_t k = 0; k < lights.size() && k < sizes.size(); ++k)
-    sum += double(std::max(lights[k].views, 1)) * double(sizes[k]) * double(sizes[k]);
+    sum += double(std::max(lights[k].layers, 1)) * double(sizes[k]) * double(sizes[k]);
   return sum;
 }
 
@@ -78,10 +78,10 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
     double bestNeed = 0.0;
     for (size_t k = 0; k < lights.size(); ++k) {
       if (!sizes[k] || step[k] == 0) continue;
-      const double views = std::max(lights[k].views, 1);
-      const double texels = views * double(sizes[k]) * sizes[k];
+      const double layers = std::max(lights[k].layers, 1);
+      const double texels = layers * double(sizes[k]) * sizes[k];
       const double larger = maxSize >> (step[k] - 1);
-      if (used - texels + views * larger * larger > budgetTexels) continue;
+      if (used - texels + layers * larger * larger > budgetTexels) continue;
       const double need = lights[k].footprint / texels;
       if (need > bestNeed) {
         bestNeed = need;
@@ -89,10 +89,10 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
       }
     }
     if (best < 0) break;
-    const double views = std::max(lights[size_t(best)].views, 1);
-    used -= views * double(sizes[size_t(best)]) * sizes[size_t(best)];
+    const double layers = std::max(lights[size_t(best)].layers, 1);
+    used -= layers * double(sizes[size_t(best)]) * sizes[size_t(best)];
     sizes[size_t(best)] = maxSize >> --step[size_t(best)];
-    used += views * double(sizes[size_t(best)]) * sizes[size_t(best)];
+    used += layers * double(sizes[size_t(best)]) * sizes[size_t(best)];
   }
   return sizes;
 }

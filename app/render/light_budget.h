@@ -36,7 +36,7 @@ double heldFootprint(double held, double now, double band = 1.5);
 
 struct LightDemand {
   double footprint = 1.0;  // lightFootprint; 0 = not drawn
-  int views = 1;           // layers of the light's maps (a cube: 6)
+  int layers = 1;          // layers of the light's maps (a cube: 6; an atlas of its faces: 1)
 };
 
 // Texels per side of each light's maps: 0 for a light of no footprint, else maxSize >> j. With

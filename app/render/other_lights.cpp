@@ -79,7 +79,7 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
         heldFootprint(lights[k]->heldFootprint_, k == 0 ? std::max(footprint, 1e-6) : footprint);
     demand[k].footprint = lights[k]->heldFootprint_;
     lights[k]->scissor_ = k == 0 ? glm::ivec4(0) : lightScissor(*sources[k], ndc, in.width, in.height);
-    demand[k].views = budget > 0.0 && demand[k].footprint > 0.0 ? lightLayerCount(*lights[k], in) : 1;
+    demand[k].layers = budget > 0.0 && demand[k].footprint > 0.0 ? lightLayerCount(*lights[k], in) : 1;
   }
   const int size = params.has("shadowmap.size") ? params.i("shadowmap.size") : 2048;
   const std::vector<int> sizes = budgetMapSizes(demand, budget, size, 64);

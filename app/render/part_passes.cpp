@@ -25,8 +25,9 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
 }
 
 // Binds the layer view `view` is drawn into: the first view of a layer clears it when some view
-// draws it whole or into its atlas square (begin), or binds it for tiles (bind: cleared unless the representation keeps
-// its layers); the next views packed into the same layer draw beside it (continue).
+// draws it whole or into its atlas square (begin), or binds it for tiles (bind: cleared unless
+// the representation keeps its layers); the next views packed into the same layer draw beside it
+// (continue).
 void Renderer::bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int view, std::vector<bool>& begun) {
   const LightSpace& space = vp.lightSpace;
   const int layer = space.layerOf(size_t(view));

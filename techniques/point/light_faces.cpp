@@ -281,7 +281,7 @@ std::vector<glm::ivec4> heldAtlasSquares(const std::vector<double>& needs, int s
   bool keep = band > 1.0 && hold.size == size && hold.minSide == minSide && hold.needs.size() == needs.size();
   for (size_t f = 0; keep && f < needs.size(); ++f) {
     const double was = hold.needs[f], now = needs[f];
-    keep = (was > 0.0) == (now > 0.0) && (!(now > 0.0) || (now <= was * band && now * band >= was));
+    keep = (was > 0.0) == (now > 0.0) && (!(now > 0.0) || withinFactor(now, was, band));
   }
   if (keep) return hold.squares;
   hold = {.needs = needs, .squares = atlasSquares(needs, size, minSide), .size = size, .minSide = minSide};
@@ -296,7 +296,7 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
   // The border: atlas.border, or what the representation's taps read past the window (its
   // reach) where that is more, but at most an eighth of a square's side (below).
   const int border = std::clamp(borderTexels, 0, size / 8);
-  const int reach = std::min(static_cast<int>(std::ceil(in.filterReachTexels)), size / 8);
+  const int reach = static_cast<int>(std::ceil(in.filterReachTexels));
   const glm::mat4 camera = in.cameraProj * in.cameraView;
   std::vector<double> needs;
   for (size_t f = 0; f < out.space.views.size(); ++f)

@@ -50,26 +50,11 @@ FaceViews faceViews(const FaceSet& set, const Light& light, const LayoutInput& i
                     std::vector<std::vector<glm::vec3>>* receiversOut = nullptr, bool fitToView = true);
 
 // The views widened by `guardTexels` (at most a sixteenth of the layer; none for 2 texels or
-// fewer, which the clamped edge texel serves) on every side of their layer: each view draws that far past its window,
-// so a filter tap or blocker search that far past a face's edge reads that face's own casters instead of the clamped
-// edge texel (beyond the papers; the renderer passes the representation's reach, LayoutInput::filterReachTexels).
+// fewer, which the clamped edge texel serves) on every side of their layer: each view draws that
+// far past its window, so a filter tap or blocker search that far past a face's edge reads that
+// face's own casters instead of the clamped edge texel (beyond the papers; the renderer passes
+// the representation's reach, LayoutInput::filterReachTexels).
 void widenViews(FaceViews& views, float guardTexels);
-
-// The faces in one atlas layer of shadowmap.size² (beyond the papers: the survey's focusing with
-// the texels shared by need): each needed face fitted as faceViews does, then given a square of
-// the layer whose area follows its screen footprint (the part of the screen its visible
-// receivers cover), with `borderTexels` drawn around its window so filter taps past the window's
-// edge read the same face (LightView::atlasRect). Faces no pixel needs get no square.
-// hold (a state's memory between frames, null for none): the squares are kept while the faces'
-// needs stay within atlas.hold of those they were sized for (heldAtlasSquares).
-struct AtlasHold;
-FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
-                         const std::vector<ViewPixelBounds>* seen = nullptr, AtlasHold* hold = nullptr);
-
-// Squares for faces of the given needs (>= 0; 0: none) packed in rows into a size x size layer,
-// their areas in proportion to the needs, as large as fit, sides multiples of 8 texels of at
-// least minSide: x, y, side, side (zero for a need of 0).
-std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide);
 
 // An atlas's squares held between frames (beyond the papers). A square follows its face's need,
 // which follows the camera; a square that changed size every frame would change its face's texel
@@ -82,6 +67,23 @@ struct AtlasHold {
   std::vector<glm::ivec4> squares;
   int size = 0, minSide = 0;
 };
+
+// The faces in one atlas layer of shadowmap.size² (beyond the papers: the survey's focusing with
+// the texels shared by need): each needed face fitted as faceViews does, then given a square of
+// the layer whose area follows its screen footprint (the part of the screen its visible
+// receivers cover), with `borderTexels` drawn around its window so filter taps past the window's
+// edge read the same face (LightView::atlasRect). Faces no pixel needs get no square.
+// hold (a state's memory between frames, null for none): the squares are kept while the faces'
+// needs stay within atlas.hold of those they were sized for (heldAtlasSquares).
+FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInput& in, int borderTexels,
+                         const std::vector<ViewPixelBounds>* seen = nullptr, AtlasHold* hold = nullptr);
+
+// Squares for faces of the given needs (>= 0; 0: none) packed in rows into a size x size layer,
+// their areas in proportion to the needs, as large as fit, sides multiples of 8 texels of at
+// least minSide: x, y, side, side (zero for a need of 0).
+std::vector<glm::ivec4> atlasSquares(const std::vector<double>& needs, int size, int minSide);
+
+// atlasSquares, or the held ones while the needs stay within `band` of theirs (AtlasHold).
 std::vector<glm::ivec4> heldAtlasSquares(const std::vector<double>& needs, int size, int minSide, double band,
                                          AtlasHold& hold);
 
