@@ -27,64 +27,9 @@ ParamDecl layoutChoice() {
           .choices = layoutIds()};
 }
 
-}  // namespace
-
-const std::vector<ParamDecl>& commonParams() {
-  static const std::vector<ParamDecl> decls = {
-      layoutChoice(),
-      {.key = "shadowmap.size",
-       .type = ParamType::Int,
-       .min = 64,
-       .max = 8192,
-       .defaultValue = 2048,
-       .unit = "texels",
-       .help = "shadow-map texels per side",
-       .logScale = true},
-      {.key = "shadowmap.cull",
-       .type = ParamType::Enum,
-       .defaultValue = 0,
-       .help = "faces stored in the shadow map: front (standard), back (second-depth shadow mapping, Wang & Molnar "
-               "1994), or both",
-       .choices = {"front", "back", "both"}},
-      {.key = "shadowmap.cull_instances",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .help = "skip, per light view (each cascade, face or layer), instances whose bounds lie outside its window: "
-               "they cannot cast into it (same image, less drawing)"},
-      {.key = "bias.mode",
-       .type = ParamType::Enum,
-       .defaultValue = 2,
-       .help = "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
-               "(+constant), receiver plane (+constant: each filter tap compares against the receiver's plane "
-               "extrapolated to that texel; Isidoro 2006)",
-       .choices = {"none", "constant", "slope", "normal-offset", "receiver-plane"}},
-      {.key = "bias.constant",
-       .type = ParamType::Float,
-       .min = 0,
-       .max = 0.05,
-       .defaultValue = 0.0005,
-       .unit = "depth [0,1]",
-       .help = "constant depth offset",
-       .logScale = true},
-      {.key = "bias.slope",
-       .type = ParamType::Float,
-       .min = 0,
-       .max = 8,
-       .defaultValue = 1.0,
-       .unit = "texels",
-       .help = "slope-scaled bias: depth change across this many texels of a tilted receiver"},
-      {.key = "bias.normal",
-       .type = ParamType::Float,
-       .min = 0,
-       .max = 8,
-       .defaultValue = 1.0,
-       .unit = "texels",
-       .help =
-           "normal offset: receiver moved along its normal by this many texel sizes (times sin of the light angle)"},
-      {.key = "layout.snap",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .help = "move the light frustum by whole texels and keep the texel size on a fixed ladder (less flicker)"},
+// A scene of several lights: how many are shadowed and the texels their maps share.
+std::vector<ParamDecl> severalLightsParams() {
+  return {
       {.key = "lights.shadowed",
        .type = ParamType::Int,
        .min = 1,
@@ -102,7 +47,79 @@ const std::vector<ParamDecl>& commonParams() {
        .help = "a scene of several shadowed lights: the texels all their maps share (24 M: four cube lamps at "
                "1024² a face), given by the screen each light's range covers, each map shadowmap.size halved 0 or "
                "more times (at least 64); 0 = every light at shadowmap.size"},
+      {.key = "lights.one_atlas",
+       .type = ParamType::Bool,
+       .defaultValue = 0,
+       .help = "with a texel budget: every light's map a region of one depth layer shared by all the lights, "
+               "packed by the sizes the budget gave (one texture for all; a light of several layers, a paged or "
+               "pre-filtered map keeps maps of its own)"},
   };
+}
+
+}  // namespace
+
+const std::vector<ParamDecl>& commonParams() {
+  static const std::vector<ParamDecl> decls = [] {
+    std::vector<ParamDecl> d = {
+        layoutChoice(),
+        {.key = "shadowmap.size",
+         .type = ParamType::Int,
+         .min = 64,
+         .max = 8192,
+         .defaultValue = 2048,
+         .unit = "texels",
+         .help = "shadow-map texels per side",
+         .logScale = true},
+        {.key = "shadowmap.cull",
+         .type = ParamType::Enum,
+         .defaultValue = 0,
+         .help = "faces stored in the shadow map: front (standard), back (second-depth shadow mapping, Wang & Molnar "
+                 "1994), or both",
+         .choices = {"front", "back", "both"}},
+        {.key = "shadowmap.cull_instances",
+         .type = ParamType::Bool,
+         .defaultValue = 1,
+         .help = "skip, per light view (each cascade, face or layer), instances whose bounds lie outside its window: "
+                 "they cannot cast into it (same image, less drawing)"},
+        {.key = "bias.mode",
+         .type = ParamType::Enum,
+         .defaultValue = 2,
+         .help = "depth bias against self-shadowing (acne): none, constant, slope-scaled (+constant), normal offset "
+                 "(+constant), receiver plane (+constant: each filter tap compares against the receiver's plane "
+                 "extrapolated to that texel; Isidoro 2006)",
+         .choices = {"none", "constant", "slope", "normal-offset", "receiver-plane"}},
+        {.key = "bias.constant",
+         .type = ParamType::Float,
+         .min = 0,
+         .max = 0.05,
+         .defaultValue = 0.0005,
+         .unit = "depth [0,1]",
+         .help = "constant depth offset",
+         .logScale = true},
+        {.key = "bias.slope",
+         .type = ParamType::Float,
+         .min = 0,
+         .max = 8,
+         .defaultValue = 1.0,
+         .unit = "texels",
+         .help = "slope-scaled bias: depth change across this many texels of a tilted receiver"},
+        {.key = "bias.normal",
+         .type = ParamType::Float,
+         .min = 0,
+         .max = 8,
+         .defaultValue = 1.0,
+         .unit = "texels",
+         .help =
+             "normal offset: receiver moved along its normal by this many texel sizes (times sin of the light angle)"},
+        {.key = "layout.snap",
+         .type = ParamType::Bool,
+         .defaultValue = 1,
+         .help = "move the light frustum by whole texels and keep the texel size on a fixed ladder (less flicker)"},
+    };
+    const std::vector<ParamDecl> lights = severalLightsParams();
+    d.insert(d.end(), lights.begin(), lights.end());
+    return d;
+  }();
   return decls;
 }
 
@@ -139,9 +156,9 @@ std::vector<std::string> viewsWithColourKeys() {
 const std::vector<Family>& allFamilies() {
   static const std::vector<Family> list = [] {
     std::vector<Family> v;
-    for (Family (*make)() : {depthFamily, accumulationFamily, layoutsFamily, adaptiveFamily, prefilteredFamily,
-                             irregularFamily, reconstructionFamily, softFamily, deepFamily, optimizedPcfFamily,
-                             pointFamily})
+    for (Family (*make)() :
+         {depthFamily, accumulationFamily, layoutsFamily, adaptiveFamily, prefilteredFamily, irregularFamily,
+          reconstructionFamily, softFamily, deepFamily, optimizedPcfFamily, pointFamily})
       v.push_back(make());
     return v;
   }();

@@ -88,14 +88,14 @@ TEST(ExplorerState, ALightOfSeveralIsShownOrUnshadowed) {
   EXPECT_FALSE(state.cutPending);
 }
 
-// The panel shows the several-light parameters (lights.shadowed, lights.texel_budget) only in a
-// scene of several lights.
+// The panel shows the several-light parameters (lights.shadowed, lights.texel_budget,
+// lights.one_atlas) only in a scene of several lights.
 TEST(ExplorerState, LightParametersShowOnlyInScenesOfSeveralLights) {
   const Technique t = makeTechnique("cube");
   const Scene lamps = loadScene("street-lamps", defaultAssetsDir()), one = loadScene("street", defaultAssetsDir());
   EXPECT_TRUE(paramsWithoutEffect(t.params, &lamps).empty());
   const std::set<std::string> hidden = paramsWithoutEffect(t.params, &one);
-  EXPECT_EQ(hidden, (std::set<std::string>{"lights.shadowed", "lights.texel_budget"}));
+  EXPECT_EQ(hidden, (std::set<std::string>{"lights.one_atlas", "lights.shadowed", "lights.texel_budget"}));
   EXPECT_FALSE(hidden.count("shadowmap.size"));
 }
 

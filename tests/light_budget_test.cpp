@@ -5,6 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace sl {
@@ -139,6 +141,66 @@ TEST(LightBudget, AFootprintHoveringAtAStepDoesNotSwitchTheSizesEveryFrame) {
   }
   EXPECT_EQ(switchesRaw, 19);
   EXPECT_EQ(switchesHeld, 0);
+}
+
+// Squares of the budget's ladder: inside the layer, apart, and as many texels of it used as the
+// squares need, rounded up to whole cells of the largest side (a gap anywhere would show).
+TEST(LightBudget, AtlasRegionsPackTheLadderWithoutGaps) {
+  auto check = [](const std::vector<int>& sides, int wantSide) {
+    const AtlasRegions a = packAtlasRegions(sides);
+    ASSERT_EQ(a.side, wantSide);
+    ASSERT_EQ(a.rects.size(), sides.size());
+    for (size_t i = 0; i < sides.size(); ++i) {
+      const glm::ivec4 r = a.rects[i];
+      if (sides[i] <= 0) {
+        EXPECT_EQ(r, glm::ivec4(0));
+        continue;
+      }
+      EXPECT_EQ(r.z, sides[i]);
+      EXPECT_EQ(r.w, sides[i]);
+      EXPECT_TRUE(r.x >= 0 && r.y >= 0 && r.x + r.z <= a.side && r.y + r.w <= a.side) << i;
+      for (size_t j = 0; j < i; ++j) {
+        const glm::ivec4 q = a.rects[j];
+        if (q.z <= 0) continue;
+        const bool apart = r.x + r.z <= q.x || q.x + q.z <= r.x || r.y + r.w <= q.y || q.y + q.w <= r.y;
+        EXPECT_TRUE(apart) << i << " overlaps " << j;
+      }
+    }
+  };
+  check({}, 0);
+  check({0, 0}, 0);
+  check({1024}, 1024);
+  check({256, 1024, 0, 512, 256}, 2048);               // 1.375 cells: 2 x 2 cells
+  check({512, 512, 512, 512}, 1024);                   // four cells exactly: 2 x 2
+  check({1024, 1024, 1024, 1024, 64}, 3072);           // 4 cells and a bit: 3 x 3
+  check({1000, 500, 250, 125, 62, 62, 62, 62}, 2000);  // a size not a power of two halves too
+  // Random ladders: the squares tile the cells they use, so their first cells fill up in order.
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<int> sides(1 + rng() % 16);
+    for (int& s : sides) s = (rng() % 5 == 0) ? 0 : 2048 >> (rng() % 6);
+    const AtlasRegions a = packAtlasRegions(sides);
+    double area = 0.0;
+    int largest = 0;
+    for (int s : sides) {
+      area += double(s) * s;
+      largest = std::max(largest, s);
+    }
+    if (largest == 0) continue;
+    const int cells = int(std::ceil(area / (double(largest) * largest) - 1e-9));
+    int n = 1;
+    while (n * n < cells) ++n;
+    ASSERT_EQ(a.side, n * largest) << trial;
+    for (size_t i = 0; i < sides.size(); ++i) {
+      if (sides[i] == 0) continue;
+      EXPECT_EQ(a.rects[i].z, sides[i]) << trial << ": every square placed";
+      for (size_t j = 0; j < i; ++j) {
+        const glm::ivec4 r = a.rects[i], q = a.rects[j];
+        if (q.z == 0) continue;
+        EXPECT_TRUE(r.x + r.z <= q.x || q.x + q.z <= r.x || r.y + r.w <= q.y || q.y + q.w <= r.y) << trial;
+      }
+    }
+  }
 }
 
 }  // namespace

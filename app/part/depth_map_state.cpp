@@ -3,10 +3,12 @@
 #include "gl/texture_units.h"
 #include "scene/scene_effects.h"
 
+#include <stdexcept>
+
 namespace sl {
 
 // GL objects are made on first use: viewports (and their states) exist before a context does.
-DepthMapState::DepthMapState(bool compare) : compare_(compare) {}
+DepthMapState::DepthMapState(bool compare, bool shareable) : compare_(compare), shareable_(shareable) {}
 
 void DepthMapState::createSampler() {
   glCreateSamplers(1, &sampler_);
@@ -27,8 +29,18 @@ DepthMapState::~DepthMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
 }
 
+bool DepthMapState::shareDepthLayer(const SharedDepthLayer* shared) {
+  shared_ = shareable_ && shared && shared->depth && shared->framebuffer ? shared : nullptr;
+  if (shared_) {  // its own map no longer read: its memory given back
+    depth_ = Texture2D();
+    layers_.clear();
+  }
+  return shared_ != nullptr;
+}
+
 void DepthMapState::prepare(int size, int layers, int /*views*/) {
   if (!sampler_) createSampler();
+  if (shared_) return;
   if (depth_ && depth_.width() == size && depth_.layers() == layers) return;
   depth_ = Texture2D::array(GL_DEPTH_COMPONENT32F, size, size, layers, 1, "shadow map");
   layers_.clear();
@@ -39,17 +51,24 @@ void DepthMapState::prepare(int size, int layers, int /*views*/) {
 }
 
 void DepthMapState::beginShadowLayer(int layer) {
+  if (shared_) throw std::logic_error("a shared depth layer is cleared by region, never whole");
   layers_.at(static_cast<size_t>(layer)).bind();
   glClearNamedFramebufferfi(layers_[static_cast<size_t>(layer)].id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
-void DepthMapState::bindShadowLayer(int layer) { layers_.at(static_cast<size_t>(layer)).bind(); }
+void DepthMapState::bindShadowLayer(int layer) {
+  if (shared_)
+    shared_->framebuffer->bind();
+  else
+    layers_.at(static_cast<size_t>(layer)).bind();
+}
 
 void DepthMapState::bind(const Program& p, TextureUnits& units) const {
-  units.bind(p, "u_shadowMap", depth_.id(), sampler_);
+  units.bind(p, "u_shadowMap", depthTexture()->id(), sampler_);
 }
 
 long long DepthMapState::texels() const {
+  if (shared_) return 0;  // counted once, by the viewport that owns the shared layer
   return static_cast<long long>(depth_.width()) * depth_.height() * std::max(depth_.layers(), 1);
 }
 

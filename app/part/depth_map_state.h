@@ -11,7 +11,9 @@ namespace sl {
 
 class DepthMapState : public RepresentationState {
  public:
-  explicit DepthMapState(bool compare);
+  // shareable: the map may be drawn into a layer shared by several lights (shareDepthLayer); a
+  // state whose own passes read its map as a whole layer leaves it false.
+  explicit DepthMapState(bool compare, bool shareable = false);
   ~DepthMapState() override;
   void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override;
@@ -20,7 +22,9 @@ class DepthMapState : public RepresentationState {
   void bindShadowLayer(int layer) override;
   void continueShadowLayer(int layer) override { bindShadowLayer(layer); }
   void bind(const Program& p, TextureUnits& units) const override;
-  const Texture2D* depthTexture() const override { return &depth_; }
+  bool shareDepthLayer(const SharedDepthLayer* shared) override;
+  bool canShareDepthLayer() const override { return shareable_; }
+  const Texture2D* depthTexture() const override { return shared_ ? shared_->depth : &depth_; }
   long long texels() const override;
   // Remembers whether the scene has an area light, which a hard depth test ignores (status).
   std::string addPasses(FrameGraph& graph, const PartContext& ctx) override;
@@ -29,6 +33,8 @@ class DepthMapState : public RepresentationState {
  private:
   void createSampler();
   bool compare_;
+  bool shareable_;
+  const SharedDepthLayer* shared_ = nullptr;  // this frame's shared layer, or null: depth_
   GLuint sampler_ = 0;
   Texture2D depth_;
   std::vector<Framebuffer> layers_;

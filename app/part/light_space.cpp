@@ -28,6 +28,33 @@ bool LightSpace::packed() const {
 
 bool LightSpace::sharesLayers() const { return layerCount() < static_cast<int>(views.size()); }
 
+bool placeInAtlasRegion(LightSpace& space, const glm::ivec4& region, int atlasSize) {
+  if (region.z <= 0 || region.z != space.size || region.x < 0 || region.y < 0 || region.x + region.z > atlasSize ||
+      region.y + region.w > atlasSize || space.layerCount() != 1)
+    return false;
+  for (const LightView& v : space.views)
+    if (v.projection != LightView::Projection::Matrix) return false;
+  const float k = float(region.z) / float(atlasSize);
+  glm::mat4 place(1.0f);
+  place[0][0] = place[1][1] = k;
+  place[3][0] = (float(region.x) + 0.5f * float(region.z)) / float(atlasSize) * 2.0f - 1.0f;
+  place[3][1] = (float(region.y) + 0.5f * float(region.w)) / float(atlasSize) * 2.0f - 1.0f;
+  for (LightView& v : space.views) {
+    v.proj = place * v.proj;
+    v.viewProj = v.proj * v.view;
+    v.layer = 0;
+    // Several views in the layer: each in its rectangle (one without is not drawn: no room).
+    if (v.atlasRect.z > 0)
+      v.atlasRect += glm::ivec4(region.x, region.y, 0, 0);
+    else if (space.views.size() == 1 || v.packedTriangle >= 0)
+      v.atlasRect = region;
+    for (glm::vec2& uv : v.receiverHull) uv = (glm::vec2(region.x, region.y) + uv * float(region.z)) / float(atlasSize);
+  }
+  space.size = atlasSize;
+  space.atlasPlacement = glm::vec3(k, place[3][0], place[3][1]);
+  return true;
+}
+
 float logWarp(float t, float delta) {
   if (!(delta > 0.0f) || delta >= kNoWarpDelta) return t;
   const double x = std::max(double(t) / delta, -0.999);  // the pole at t = -δ

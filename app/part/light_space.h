@@ -100,6 +100,9 @@ constexpr int kMaxLightViews = 8;
 struct LightSpace {
   std::vector<LightView> views{LightView{}};
   int size = 1024;  // texels per side of every layer
+  // placeInAtlasRegion's scale and offset (x, y) of the layer's image in the atlas's [-1, 1]
+  // square: a packed view's triangle is tested in its layer's own square (light_views.glsl).
+  glm::vec3 atlasPlacement{1.0f, 0.0f, 0.0f};
   const LightView& primary() const { return views.front(); }
   bool perspective() const;  // any view perspective: stored depth is written per fragment
   static LightSpace single(const LightView& view, int size) { return LightSpace{{view}, size}; }
@@ -108,6 +111,16 @@ struct LightSpace {
   bool packed() const;             // some view owns a triangle of a shared layer
   bool sharesLayers() const;       // some layer holds several views (packed or in an atlas)
 };
+
+// A light's one-layer space moved into `region` (x, y, side, side in texels) of an atlas layer of
+// atlasSize² shared with other lights (lights.one_atlas): every view's projection followed by the
+// scale and offset that put its layer's image inside the region, its atlasRect (or, for a view
+// of the whole layer, the region) and receiver hull moved with it, and `size` the atlas's. Texel
+// sizes are unchanged; a view packed into a triangle gets the whole region (its clip keeps to its
+// triangle), another view of several without an atlasRect keeps none (the renderer draws no such
+// view of a shared layer). Only a single layer of the region's side, of matrix projections:
+// otherwise false, unchanged.
+bool placeInAtlasRegion(LightSpace& space, const glm::ivec4& region, int atlasSize);
 
 // What the visible pixels of an earlier frame covered (sample-distribution fitting, SDSM):
 // camera view depth and position in the light's fixed basis (lightViewMatrix), min and max.

@@ -26,6 +26,7 @@
 namespace sl {
 
 class FrameGraph;
+class Framebuffer;
 
 // The one shape of per-viewport state of every part (layout, representation, accumulation):
 // targets it owns, passes it adds to the frame graph (each subclass says where in the frame),
@@ -66,6 +67,9 @@ class LayoutState : public PartState {
   // (RepresentationState::keepsLayers), so tiles drawn in earlier frames are still there.
   // Called while the shadow pass runs, after this layout's own passes.
   virtual void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) {}
+  // False for a layout that draws its layers piecewise (pages): its views cannot be moved into
+  // another layer's region (lights.one_atlas), as the tiles are placed by the layout alone.
+  virtual bool drawsWholeViews() const { return true; }
 
  protected:
   const Layout& layout_;
@@ -107,6 +111,14 @@ struct CurveQuery {
   int samples = 256;
 };
 
+// One depth layer a viewport's lights share (lights.one_atlas): each light draws into its own
+// region of it (LightView::atlasRect, placeInAtlasRegion) and reads only that region.
+struct SharedDepthLayer {
+  const Texture2D* depth = nullptr;          // GL_DEPTH_COMPONENT32F, an array of one layer
+  const Framebuffer* framebuffer = nullptr;  // its layer as the depth attachment
+  int size = 0;                              // texels per side
+};
+
 // Per-viewport state of a representation: owns the shadow-map targets (depth and what a texel
 // stores, one layer per light view), may add passes after the shadow pass (blur, mip-maps,
 // summed-area tables) and binds what its GLSL module samples.
@@ -131,6 +143,11 @@ class RepresentationState : public PartState {
   // read the whole layer keep the default: cleared every frame.
   virtual bool keepsLayers() const { return false; }
   virtual void bindShadowLayer(int layer) { beginShadowLayer(layer); }
+  // Draws into `shared` instead of targets of its own from now on, when it can (a plain depth map
+  // that nothing but the lookups reads): returns whether it will. Null: its own targets again.
+  // While shared, the renderer clears only the light's region and never calls beginShadowLayer.
+  virtual bool shareDepthLayer(const SharedDepthLayer* shared) { return false; }
+  virtual bool canShareDepthLayer() const { return false; }
   // Adds passes after the shadow pass (reading ctx.shadowMap); returns the resource the
   // visibility and shading passes read.
   virtual std::string addPasses(FrameGraph& graph, const PartContext& ctx) { return ctx.shadowMap; }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <numeric>
 
 namespace sl {
 
@@ -95,6 +97,48 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
     used += layers * double(sizes[size_t(best)]) * sizes[size_t(best)];
   }
   return sizes;
+}
+
+AtlasRegions packAtlasRegions(const std::vector<int>& sides) {
+  AtlasRegions out;
+  out.rects.assign(sides.size(), glm::ivec4(0));
+  int cell = 0;
+  double area = 0.0;
+  for (int s : sides)
+    if (s > 0) {
+      cell = std::max(cell, s);
+      area += double(s) * double(s);
+    }
+  if (cell == 0) return out;
+  const int cells = static_cast<int>(std::ceil(area / (double(cell) * double(cell)) - 1e-9));
+  int perSide = 1;
+  while (perSide * perSide < cells) ++perSide;
+  out.side = perSide * cell;
+  // Free squares (x, y, side) in the order they are filled: after a square of side s is placed
+  // the front holds its siblings of side s, then theirs of 2s, so the front always fits the next
+  // (no larger) square.
+  std::deque<glm::ivec3> free;
+  for (int j = 0; j < perSide; ++j)
+    for (int i = 0; i < perSide; ++i) free.push_back({i * cell, j * cell, cell});
+  std::vector<size_t> order(sides.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return sides[a] > sides[b]; });
+  for (size_t i : order) {
+    const int s = sides[i];
+    if (s <= 0 || free.empty()) continue;
+    glm::ivec3 f = free.front();
+    free.pop_front();
+    while (f.z / 2 >= s) {  // split: the first quarter goes on, the other three wait in order
+      const int h = f.z / 2;
+      free.push_front({f.x + h, f.y + h, h});
+      free.push_front({f.x, f.y + h, h});
+      free.push_front({f.x + h, f.y, h});
+      f.z = h;
+    }
+    if (f.z < s) continue;  // not a halving of the largest side: left out of the atlas
+    out.rects[i] = {f.x, f.y, s, s};
+  }
+  return out;
 }
 
 }  // namespace sl

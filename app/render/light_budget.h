@@ -50,4 +50,15 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
 // The sum of layers · size² of those sizes.
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes);
 
+// Every light's map in one atlas layer (lights.one_atlas; beyond the papers: the shadow atlas of
+// engines that shade many lights from one texture). The budget's sizes are one size halved 0 or
+// more times, so squares of them taken largest first, each into the first free place of a
+// quadtree over cells of the largest side, leave no gap: the layer is the fewest such cells
+// that hold their sum, in a square. side 0: no square asked.
+struct AtlasRegions {
+  int side = 0;                   // texels per side of the atlas layer
+  std::vector<glm::ivec4> rects;  // per entry x, y, width, height in texels (0: none asked)
+};
+AtlasRegions packAtlasRegions(const std::vector<int>& sides);
+
 }  // namespace sl

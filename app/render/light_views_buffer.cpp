@@ -17,9 +17,9 @@ struct LightViewsBlock {
   float range[kMaxLightViews][4];    // near, far, texel world size, perspective (0/1)
   float split[kMaxLightViews][4];    // camera view depth: from, to, blend band, LogPSM delta
   float window[kMaxLightViews][4];   // a paraboloid's fitted window: centre xy, zoom, unused
-  float packing[kMaxLightViews][4];  // layer, packed triangle (-1: whole layer), unused, unused
+  float packing[kMaxLightViews][4];  // layer, packed triangle (-1: whole layer), offset in a shared layer
   float atlas[kMaxLightViews][4];    // the view's square of an atlas layer in uv: min xy, max xy (0: none)
-  float info[4];                     // views, texels per side, unused, unused
+  float info[4];                     // views, texels per side, scale in a shared layer, unused
 };
 
 }  // namespace
@@ -47,6 +47,8 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
     std::memcpy(block.window[i], window, sizeof(window));
     block.packing[i][0] = static_cast<float>(ls.layerOf(i));
     block.packing[i][1] = static_cast<float>(v.packedTriangle);
+    block.packing[i][2] = ls.atlasPlacement.y;
+    block.packing[i][3] = ls.atlasPlacement.z;
     if (v.atlasRect.z > 0 && ls.size > 0) {
       const float texel = 1.0f / static_cast<float>(ls.size);
       const float square[4] = {v.atlasRect.x * texel, v.atlasRect.y * texel, (v.atlasRect.x + v.atlasRect.z) * texel,
@@ -56,6 +58,7 @@ void LightViewsBuffer::upload(const LightSpace& ls) {
   }
   block.info[0] = static_cast<float>(n);
   block.info[1] = static_cast<float>(ls.size);
+  block.info[2] = ls.atlasPlacement.x;
   glNamedBufferSubData(buffer_, 0, sizeof(block), &block);
 }
 

@@ -59,6 +59,8 @@ int Renderer::lightLayerCount(Viewport& light, const FrameInput& in) {
 void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
   vp.mapSize_ = 0;
   vp.budgetTexels_ = 0.0;
+  vp.atlasRegion_ = glm::ivec4(0);
+  vp.oneAtlasLayer_ = nullptr;
   std::vector<Viewport*> lights = {&vp};
   std::vector<const Light*> sources = {&scene_->light};
   for (size_t k = 0; k < vp.otherLights_.size(); ++k)
@@ -66,7 +68,10 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
       lights.push_back(vp.otherLights_[k].get());
       sources.push_back(&scene_->otherLights[k]);
     }
-  if (lights.size() == 1) return;
+  if (lights.size() == 1) {
+    vp.oneAtlas_.reset();
+    return;
+  }
   const ParamSet& params = vp.technique.params;
   const double budget = params.has("lights.texel_budget") ? params.get("lights.texel_budget") * 1e6 : 0.0;
   const Bounds bounds = scene_->boundsAt(in.time);
@@ -92,12 +97,15 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
     if (!light.drawn_) {
       light.prev_.epoch = 0;  // drawn again later: from a cut
       light.visibilityHeld_ = false;
+      light.placedRegion_ = glm::ivec4(-1);  // its region may be another light's meanwhile
       continue;
     }
     vp.sizeRange_[0] = std::min(vp.sizeRange_[0], sizes[k]);
     vp.sizeRange_[1] = std::max(vp.sizeRange_[1], sizes[k]);
   }
   if (budget > 0.0) vp.budgetTexels_ = budgetedTexels(demand, sizes);
+  const bool oneAtlas = budget > 0.0 && params.has("lights.one_atlas") && params.b("lights.one_atlas");
+  assignOneAtlas(vp, lights, demand, oneAtlas ? sizes : std::vector<int>(lights.size(), 0));
 }
 
 namespace {

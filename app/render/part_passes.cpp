@@ -20,6 +20,8 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
   for (size_t v = 0; v < plan.layers.size(); ++v) {
     const glm::ivec4& rect = vp.lightSpace.views[v].atlasRect;
     if (!plan.layers[v].tiled && rect.z > 0 && rect.w > 0) plan.layers[v] = {.tiled = true, .tiles = {atlasTile(rect)}};
+    // A layer other lights draw into: a view outside every rectangle of it is not drawn at all.
+    if (vp.inOneAtlas_ && !(rect.z > 0 && rect.w > 0)) plan.layers[v] = {.tiled = true, .tiles = {}};
   }
   return plan;
 }
@@ -43,10 +45,19 @@ void Renderer::bindShadowLayerFor(Viewport& vp, const ShadowDrawPlan& plan, int 
     const bool atlasDrawn = space.views[v].atlasRect.z > 0 && !plan.layers[v].tiles.empty();
     whole = whole || (space.layerOf(v) == layer && (!plan.layers[v].tiled || atlasDrawn));
   }
-  if (whole)
-    vp.representation->beginShadowLayer(layer);
-  else
+  if (!whole) {
     vp.representation->bindShadowLayer(layer);
+  } else if (vp.inOneAtlas_) {  // a layer other lights draw into too: this light's region alone
+    vp.representation->bindShadowLayer(layer);
+    const glm::ivec4 r = vp.atlasRegion_;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, r.y, r.z, r.w);
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    vp.representation->beginShadowLayer(layer);
+  }
 }
 
 // Draws one light view of the plan into its layer (whole, or tile by tile into its rectangles).
@@ -78,7 +89,9 @@ void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const P
       glViewport(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glScissor(tile.rect.x, tile.rect.y, tile.rect.z, tile.rect.w);
     glDepthMask(GL_TRUE);
-    glClear(GL_DEPTH_BUFFER_BIT);  // the scissor limits the clear to the tile
+    // The scissor limits the clear to the tile. A light's region of a shared layer was cleared
+    // whole when it began (bindShadowLayerFor): views packed into it draw beside each other.
+    if (!vp.inOneAtlas_) glClear(GL_DEPTH_BUFFER_BIT);
     PassPrograms programs(shaders_, spec, [this, &vp, view, &tile](const Program& p, TextureUnits& units) {
       bindTechnique(p, units, vp);
       p.set("u_shadowView", view);
@@ -144,8 +157,9 @@ PartContext Renderer::partContext(Viewport& vp, const std::string& tag, const Fr
     gpu_->draw(programs, in.time, in.time, 0, GpuScene::Only::SemiTransparent);
   };
   part.bindVolumes = [this] { bindVolumes(); };
-  part.replaceLightSpace = [&vp](const LightSpace& ls) {
+  part.replaceLightSpace = [this, &vp](const LightSpace& ls) {
     vp.lightSpace = ls;
+    placeInOneAtlas(vp);  // a refit's views into the light's region again
     vp.lightViews_->upload(vp.lightSpace);
   };
   return part;

@@ -56,6 +56,7 @@ std::map<std::string, Texture2D*> Viewport::shownViewTargets() {
 
 long long Viewport::shadowTexels() const {
   long long texels = layout->texels() + representation->texels() + accumulation->texels();
+  if (oneAtlas_) texels += static_cast<long long>(oneAtlas_->width()) * oneAtlas_->height();
   for (const auto& other : otherLights_)
     if (other) texels += other->shadowTexels();
   return texels;
@@ -87,6 +88,13 @@ std::string Viewport::status() const {
       char text[96];
       std::snprintf(text, sizeof text, "; maps %d to %d per side, %.1f M texels", sizeRange_[0], sizeRange_[1],
                     budgetTexels_ * 1e-6);
+      out += text;
+    }
+    if (oneAtlas_) {
+      const double side = oneAtlas_->width();
+      char text[128];
+      std::snprintf(text, sizeof text, "; one atlas %d² for %d lights (%.0f %% of it)", oneAtlas_->width(),
+                    oneAtlasLights_, 100.0 * oneAtlasUsed_ / (side * side));
       out += text;
     }
   }
@@ -401,6 +409,7 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
   if (vp.lightSpace.views.empty() || vp.lightSpace.views.size() > static_cast<size_t>(kMaxLightViews))
     throw std::runtime_error("layout '" + t.layout->id() + "' returned " + std::to_string(vp.lightSpace.views.size()) +
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
+  placeInOneAtlas(vp);
   vp.lightViews_->upload(vp.lightSpace);
   vp.representation->setScene(*scene_);
   vp.representation->configure(vp.frameParams_);

@@ -9,6 +9,7 @@
 #include "part/frame_graph.h"
 #include "part/part.h"
 #include "part/transient_textures.h"
+#include "render/light_budget.h"
 #include "render/light_views_buffer.h"
 #include "render/volumes_buffer.h"
 #include "part/uniforms.h"
@@ -96,8 +97,22 @@ class Viewport {
   glm::ivec4 scissor_{0};
   double heldFootprint_ = 0.0;  // what the texel budget last gave this light (light_budget.h)
   bool laidOut_ = false;        // lightSpace is its technique's layout's (not a default, nor a former technique's)
-  double budgetTexels_ = 0.0;   // the user's viewport: texels the budget gave its lights this frame
-  int sizeRange_[2] = {0, 0};   // and their smallest and largest map size
+  // lights.one_atlas (render/one_atlas.cpp): this light's region of the shared layer this frame
+  // (width 0: none; its own maps), the layer, whether this frame's views were placed there, and
+  // where they were placed last (a move redraws the light: its layout is reset).
+  glm::ivec4 atlasRegion_{0};
+  const SharedDepthLayer* oneAtlasLayer_ = nullptr;
+  bool inOneAtlas_ = false;
+  glm::ivec4 placedRegion_{0};
+  int placedAtlasSide_ = 0;
+  // The user's viewport: the shared layer itself and the texels its regions use.
+  std::unique_ptr<Texture2D> oneAtlas_;
+  Framebuffer oneAtlasFbo_;
+  SharedDepthLayer oneAtlasShared_;
+  double oneAtlasUsed_ = 0.0;
+  int oneAtlasLights_ = 0;
+  double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
+  int sizeRange_[2] = {0, 0};  // and their smallest and largest map size
   // Scene::otherLights' shadowed entries: the same technique with its own part states and
   // targets, one viewport per light (null for an unshadowed one). See render/other_lights.cpp.
   std::vector<std::unique_ptr<Viewport>> otherLights_;
@@ -177,6 +192,13 @@ class Renderer {
   void syncOtherLightViewports(Viewport& vp);
   // Which other lights this frame draws and every light's map size (render/light_budget.h).
   void budgetLightMaps(Viewport& vp, const FrameInput& in);
+  // lights.one_atlas: a region of one shared depth layer for each drawn light of one layer whose
+  // layout and representation can draw there (the others keep maps of their own).
+  // sides: the budget's map sizes (0 everywhere: no shared layer).
+  void assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights, const std::vector<LightDemand>& demand,
+                      const std::vector<int>& sides);
+  // After a light's layout computed its views: moved into its region when it has one.
+  void placeInOneAtlas(Viewport& light);
   int lightLayerCount(Viewport& light, const FrameInput& in);
   LayoutInput layoutInput(Viewport& vp, const FrameInput& in);
   void ensureOtherDirectTarget(Viewport& vp, int w, int h);

@@ -8,9 +8,11 @@ layout(std140, binding = 1) uniform LightViews {
   vec4 lightViewRange[SL_MAX_LIGHT_VIEWS];  // near, far (light-view distances), texel world size, perspective
   vec4 lightViewSplit[SL_MAX_LIGHT_VIEWS];  // camera view depth the view serves: from, to, blend band; w: LogPSM delta
   vec4 lightViewWindow[SL_MAX_LIGHT_VIEWS];  // a paraboloid's fitted window: map = (disk - xy) * zw
-  vec4 lightViewPacking[SL_MAX_LIGHT_VIEWS];  // x: the layer the view is drawn into, y: its packed triangle (-1: none)
+  // x: the layer the view is drawn into, y: its packed triangle (-1: none), zw: where its layer's
+  // image lies in a layer shared by several lights (LightSpace::atlasPlacement; 0 alone)
+  vec4 lightViewPacking[SL_MAX_LIGHT_VIEWS];
   vec4 lightViewAtlas[SL_MAX_LIGHT_VIEWS];    // the view's square of an atlas layer in uv: min xy, max xy; 0: none
-  vec4 lightViewInfo;                       // x: number of views, y: texels per side
+  vec4 lightViewInfo;  // x: number of views, y: texels per side, z: the layer image's scale in a shared layer (1 alone)
 };
 
 // The shadow-map layer view `view` reads and writes: its index, unless views share a layer
@@ -21,6 +23,10 @@ float lightViewLayer(int view) { return lightViewPacking[view].x; }
 // the layer's square split by its diagonals, 0 top, 1 right, 2 bottom, 3 left. ndc: the point in
 // the layer's [-1, 1] square, or a clip position (the tests are linear, so w > 0 may stay). Both
 // >= 0 inside; a view that owns the whole layer is inside everywhere.
+// A clip position in the layer the views are drawn into, back in their own layer's square: the
+// same unless the light's layer is a region of one shared by several lights.
+vec2 lightViewOwnClip(vec4 clip) { return (clip.xy - lightViewPacking[0].zw * clip.w) / lightViewInfo.z; }
+
 vec2 packedTriangleSides(vec2 ndc, int view) {
   int triangle = int(lightViewPacking[view].y + 0.5);
   if (lightViewPacking[view].y < -0.5) return vec2(1.0);

@@ -13,7 +13,7 @@ void main() {
 #ifdef SL_PACKED_VIEWS
   // Views packed into one layer: each draws only its own triangle of it (the renderer enables
   // the two clip distances for such a shadow pass).
-  vec2 sides = packedTriangleSides(gl_Position.xy, u_shadowView);
+  vec2 sides = packedTriangleSides(lightViewOwnClip(gl_Position), u_shadowView);
   gl_ClipDistance[0] = sides.x;
   gl_ClipDistance[1] = sides.y;
 #endif

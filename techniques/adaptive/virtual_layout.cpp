@@ -112,6 +112,8 @@ class VirtualState : public LayoutState {
     return {res};
   }
 
+  // Its pages are tiles it places itself: never moved into a region of a shared atlas.
+  bool drawsWholeViews() const override { return false; }
   // Every layer in tiles: the pages marked this frame, or every resident page when the
   // representation cleared the layer.
   void planShadowLayers(std::vector<ShadowLayerDraw>& layers, bool keepsLayers) override {

@@ -24,7 +24,7 @@ class DepthRepresentation : public Representation {
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
   std::unique_ptr<RepresentationState> createState() const override {
-    return std::make_unique<DepthMapState>(compare_);
+    return std::make_unique<DepthMapState>(compare_, /*shareable=*/true);
   }
   float filterReachTexels(const ParamSet& params, const Light&) const override {
     return reach_ ? reach_(params) : 0.0f;

@@ -1,5 +1,6 @@
 #include "point/directions_view.h"
 
+#include "gl/gl_util.h"
 #include "gl/texture_units.h"
 #include "part/colour_key.h"
 #include "part/frame_graph.h"

@@ -1,0 +1,75 @@
+// One atlas for every light's map (lights.one_atlas; beyond the papers: the shadow atlas engines
+// shade many lights from). The texel budget sizes each light's map by the screen its range
+// covers (render/light_budget.h); here those maps become regions of one depth layer, packed
+// without gaps (packAtlasRegions), and each light's layout's views are moved into its region
+// (placeInAtlasRegion). Inside a region a layout keeps its own packing: cube-atlas's faces by
+// need. A light draws only its region (the shadow pass clears it alone) and its lookups stay in
+// it (lightViewTap), so the lights' parts still know nothing of each other.
+#include "render/light_budget.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+
+namespace sl {
+
+namespace {
+
+// Larger shared layers are not made (256 MB of 32-bit depth): the lights keep their own maps.
+constexpr int kMaxOneAtlasSide = 8192;
+
+}  // namespace
+
+void Renderer::assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights,
+                              const std::vector<LightDemand>& demand, const std::vector<int>& sides) {
+  std::vector<int> asked(lights.size(), 0);
+  for (size_t k = 0; k < lights.size() && k < sides.size() && k < demand.size(); ++k) {
+    const Viewport& light = *lights[k];
+    // One layer (an atlas of faces, a focused map: the budget's count, Renderer::lightLayerCount),
+    // drawn whole, by a plain depth map.
+    if (sides[k] > 0 && demand[k].layers == 1 && light.layout->drawsWholeViews() &&
+        light.representation->canShareDepthLayer())
+      asked[k] = sides[k];
+  }
+  AtlasRegions regions = packAtlasRegions(asked);
+  if (regions.side > kMaxOneAtlasSide) regions = packAtlasRegions(std::vector<int>(lights.size(), 0));
+  if (regions.side == 0) {
+    vp.oneAtlas_.reset();
+    vp.oneAtlasShared_ = {};
+  } else if (!vp.oneAtlas_ || vp.oneAtlas_->width() != regions.side) {
+    vp.oneAtlas_ = std::make_unique<Texture2D>(
+        Texture2D::array(GL_DEPTH_COMPONENT32F, regions.side, regions.side, 1, 1, "one atlas of every light's maps"));
+    vp.oneAtlasFbo_ = Framebuffer("one atlas of every light's maps");
+    vp.oneAtlasFbo_.attachLayer({}, vp.oneAtlas_.get(), 0);
+    // Cleared once: a region is cleared when its light draws, the gaps never (the debug view).
+    glClearNamedFramebufferfi(vp.oneAtlasFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  }
+  if (vp.oneAtlas_) vp.oneAtlasShared_ = {vp.oneAtlas_.get(), &vp.oneAtlasFbo_, regions.side};
+  vp.oneAtlasUsed_ = 0.0;
+  vp.oneAtlasLights_ = 0;
+  for (size_t k = 0; k < lights.size(); ++k) {
+    const glm::ivec4 r = regions.rects[k];
+    lights[k]->atlasRegion_ = r;
+    lights[k]->oneAtlasLayer_ = r.z > 0 ? &vp.oneAtlasShared_ : nullptr;
+    vp.oneAtlasUsed_ += double(r.z) * double(r.w);
+    vp.oneAtlasLights_ += r.z > 0 ? 1 : 0;
+  }
+}
+
+void Renderer::placeInOneAtlas(Viewport& light) {
+  const SharedDepthLayer* layer = light.oneAtlasLayer_;
+  light.inOneAtlas_ = layer && light.atlasRegion_.z > 0 && light.layout->drawsWholeViews() &&
+                      light.representation->canShareDepthLayer() &&
+                      placeInAtlasRegion(light.lightSpace, light.atlasRegion_, layer->size);
+  light.representation->shareDepthLayer(light.inOneAtlas_ ? layer : nullptr);
+  // Drawn elsewhere than last frame (another region, another layer, or in or out of the atlas):
+  // what the layout kept of earlier frames (faces cached in the old place) is forgotten.
+  const glm::ivec4 placed = light.inOneAtlas_ ? light.atlasRegion_ : glm::ivec4(0);
+  const int side = light.inOneAtlas_ ? layer->size : 0;
+  if (placed != light.placedRegion_ || side != light.placedAtlasSide_) {
+    light.layout->reset();
+    light.placedRegion_ = placed;
+    light.placedAtlasSide_ = side;
+  }
+}
+
+}  // namespace sl
