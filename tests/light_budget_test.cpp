@@ -203,5 +203,48 @@ TEST(LightBudget, AtlasRegionsPackTheLadderWithoutGaps) {
   }
 }
 
+// The atlas's free cells go to the lights in it, most footprint per texel first, on the ladder,
+// never past the largest map nor out of the square; a light outside the atlas keeps its size.
+TEST(LightBudget, AtlasSizesGrowIntoTheSquaresFreeCells) {
+  // 1254, 1254, 1254, 627 under 2508: 3.25 cells of 1254 in a square of 2 x 2 cells.
+  const std::vector<LightDemand> lights = {{0.4, 1}, {0.3, 1}, {0.2, 1}, {0.1, 1}, {0.5, 6}};
+  std::vector<bool> inAtlas = {true, true, true, true, false};
+  const std::vector<int> grown = fillAtlasSizes(lights, {1254, 1254, 1254, 627, 313}, inAtlas);
+  EXPECT_EQ(grown, (std::vector<int>{1254, 1254, 1254, 1254, 313}));
+  // 627 and 156: a square of 2 x 2 cells of 627, which holds the second at 627 too.
+  std::vector<bool> two = {true, true};
+  const std::vector<int> small = fillAtlasSizes({{0.1, 1}, {0.9, 1}}, {627, 156}, two);
+  EXPECT_EQ(packAtlasRegions(small).side, packAtlasRegions({627, 156}).side);
+  EXPECT_EQ(small, (std::vector<int>{627, 627}));
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 100; ++trial) {
+    std::vector<LightDemand> d(1 + rng() % 12);
+    std::vector<int> sizes;
+    std::vector<bool> in;
+    for (LightDemand& l : d) {
+      l.footprint = 0.01 + (rng() % 100) / 100.0;
+      sizes.push_back(2048 >> (rng() % 5));
+      in.push_back(rng() % 4 != 0);
+    }
+    std::vector<bool> inAfter = in;
+    const std::vector<int> g = fillAtlasSizes(d, sizes, inAfter);
+    ASSERT_EQ(inAfter, in);
+    std::vector<int> before(sizes.size(), 0), after(sizes.size(), 0);
+    int largest = 0;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+      before[k] = in[k] ? sizes[k] : 0;
+      after[k] = in[k] ? g[k] : 0;
+      largest = std::max(largest, before[k]);
+      if (!in[k]) EXPECT_EQ(g[k], sizes[k]) << trial;
+      EXPECT_GE(g[k], sizes[k]) << trial;
+    }
+    for (size_t k = 0; k < sizes.size(); ++k) {
+      EXPECT_LE(after[k], largest) << trial;
+      EXPECT_EQ(largest % std::max(after[k], 1), 0) << trial << ": on the ladder";
+    }
+    EXPECT_EQ(packAtlasRegions(after).side, packAtlasRegions(before).side) << trial;
+  }
+}
+
 }  // namespace
 }  // namespace sl

@@ -72,7 +72,9 @@ TEST(OneAtlasGl, FilterTapsStayInTheirLightsRegion) {
 
 // Liao's packed tetrahedron: the four faces' triangles of each light share its region, each
 // kept to its triangle by clip distances tested in the region's own square.
-TEST(OneAtlasGl, PackedTrianglesKeepToTheirOwnInTheRegion) { expectEveryLightAsWithItsOwnMap("tetrahedron-packed", {}); }
+TEST(OneAtlasGl, PackedTrianglesKeepToTheirOwnInTheRegion) {
+  expectEveryLightAsWithItsOwnMap("tetrahedron-packed", {});
+}
 
 // Under `cube` the lamps' maps are six layers each: they keep them, and the spot (one focused
 // layer) is alone in the shared layer; the picture is the same.

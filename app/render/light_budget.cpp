@@ -141,4 +141,49 @@ AtlasRegions packAtlasRegions(const std::vector<int>& sides) {
   return out;
 }
 
+namespace {
+
+// The next size above `size` on the ladder of halvings of `top` (top >> j, as the budget makes
+// them: 627 above 313 under 2508, not 626).
+int ladderStepAbove(int top, int size) {
+  int larger = top;
+  while ((larger >> 1) > size) larger >>= 1;
+  return larger;
+}
+
+}  // namespace
+
+std::vector<int> fillAtlasSizes(const std::vector<LightDemand>& lights, std::vector<int> sizes,
+                                std::vector<bool>& inAtlas) {
+  auto sidesOf = [&](const std::vector<int>& s) {
+    std::vector<int> sides(s.size(), 0);
+    for (size_t k = 0; k < s.size() && k < inAtlas.size(); ++k) sides[k] = inAtlas[k] ? s[k] : 0;
+    return sides;
+  };
+  const int side = packAtlasRegions(sidesOf(sizes)).side;
+  if (side > kMaxOneAtlasSide) {
+    inAtlas.assign(inAtlas.size(), false);
+    return sizes;
+  }
+  int cell = 0;
+  for (int s : sidesOf(sizes)) cell = std::max(cell, s);
+  for (;;) {
+    int best = -1;
+    double bestNeed = 0.0;
+    for (size_t k = 0; k < sizes.size() && k < lights.size() && k < inAtlas.size(); ++k) {
+      if (!inAtlas[k] || sizes[k] <= 0 || sizes[k] >= cell) continue;
+      std::vector<int> trial = sizes;
+      trial[k] = ladderStepAbove(cell, sizes[k]);
+      if (packAtlasRegions(sidesOf(trial)).side != side) continue;
+      const double need = lights[k].footprint / (double(sizes[k]) * sizes[k]);
+      if (need > bestNeed) {
+        bestNeed = need;
+        best = static_cast<int>(k);
+      }
+    }
+    if (best < 0) return sizes;
+    sizes[size_t(best)] = ladderStepAbove(cell, sizes[size_t(best)]);
+  }
+}
+
 }  // namespace sl

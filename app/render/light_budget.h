@@ -61,4 +61,15 @@ struct AtlasRegions {
 };
 AtlasRegions packAtlasRegions(const std::vector<int>& sides);
 
+// Larger shared layers are not made (256 MB of 32-bit depth): the lights keep maps of their own.
+constexpr int kMaxOneAtlasSide = 8192;
+
+// The budget's sizes with those of the lights in one atlas (inAtlas[k]) grown into the free
+// cells of the square packAtlasRegions makes for them: the light with the most footprint per
+// texel doubles while they all still pack into a square of that side, none beyond the largest.
+// The atlas's texels are allocated whatever the lights draw into them; the others are unchanged.
+// When that square would be over kMaxOneAtlasSide, none is in the atlas (inAtlas cleared).
+std::vector<int> fillAtlasSizes(const std::vector<LightDemand>& lights, std::vector<int> sizes,
+                                std::vector<bool>& inAtlas);
+
 }  // namespace sl

@@ -1,37 +1,26 @@
 // One atlas for every light's map (lights.one_atlas; beyond the papers: the shadow atlas engines
 // shade many lights from). The texel budget sizes each light's map by the screen its range
 // covers (render/light_budget.h); here those maps become regions of one depth layer, packed
-// without gaps (packAtlasRegions), and each light's layout's views are moved into its region
+// without gaps into the smallest square of whole cells (packAtlasRegions), the cells left free
+// given to the lights by the budget's own rule (fillAtlasSizes, before the sizes are handed
+// out), and each light's layout's views are moved into its region
 // (placeInAtlasRegion). Inside a region a layout keeps its own packing: cube-atlas's faces by
 // need. A light draws only its region (the shadow pass clears it alone) and its lookups stay in
 // it (lightViewTap), so the lights' parts still know nothing of each other.
 #include "render/light_budget.h"
 #include "render/renderer.h"
 
-#include <algorithm>
-
 namespace sl {
 
-namespace {
+bool Renderer::canJoinOneAtlas(const Viewport& light, const LightDemand& demand) const {
+  // One layer (an atlas of faces, a focused map: the budget's count, Renderer::lightLayerCount),
+  // drawn whole, by a plain depth map.
+  return demand.footprint > 0.0 && demand.layers == 1 && light.layout->drawsWholeViews() &&
+         light.representation->canShareDepthLayer();
+}
 
-// Larger shared layers are not made (256 MB of 32-bit depth): the lights keep their own maps.
-constexpr int kMaxOneAtlasSide = 8192;
-
-}  // namespace
-
-void Renderer::assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights,
-                              const std::vector<LightDemand>& demand, const std::vector<int>& sides) {
-  std::vector<int> asked(lights.size(), 0);
-  for (size_t k = 0; k < lights.size() && k < sides.size() && k < demand.size(); ++k) {
-    const Viewport& light = *lights[k];
-    // One layer (an atlas of faces, a focused map: the budget's count, Renderer::lightLayerCount),
-    // drawn whole, by a plain depth map.
-    if (sides[k] > 0 && demand[k].layers == 1 && light.layout->drawsWholeViews() &&
-        light.representation->canShareDepthLayer())
-      asked[k] = sides[k];
-  }
-  AtlasRegions regions = packAtlasRegions(asked);
-  if (regions.side > kMaxOneAtlasSide) regions = packAtlasRegions(std::vector<int>(lights.size(), 0));
+void Renderer::assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights, const std::vector<int>& asked) {
+  const AtlasRegions regions = packAtlasRegions(asked);
   if (regions.side == 0) {
     vp.oneAtlas_.reset();
     vp.oneAtlasShared_ = {};

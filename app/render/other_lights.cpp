@@ -87,7 +87,13 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
     demand[k].layers = budget > 0.0 && demand[k].footprint > 0.0 ? lightLayerCount(*lights[k], in) : 1;
   }
   const int size = params.has("shadowmap.size") ? params.i("shadowmap.size") : 2048;
-  const std::vector<int> sizes = budgetMapSizes(demand, budget, size, 64);
+  std::vector<int> sizes = budgetMapSizes(demand, budget, size, 64);
+  // lights.one_atlas: the lights that can share one layer, grown into its free cells.
+  std::vector<bool> inAtlas(lights.size(), false);
+  if (budget > 0.0 && params.has("lights.one_atlas") && params.b("lights.one_atlas")) {
+    for (size_t k = 0; k < lights.size(); ++k) inAtlas[k] = canJoinOneAtlas(*lights[k], demand[k]);
+    sizes = fillAtlasSizes(demand, sizes, inAtlas);
+  }
   vp.sizeRange_[0] = size;
   vp.sizeRange_[1] = 0;
   for (size_t k = 0; k < lights.size(); ++k) {
@@ -104,8 +110,9 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
     vp.sizeRange_[1] = std::max(vp.sizeRange_[1], sizes[k]);
   }
   if (budget > 0.0) vp.budgetTexels_ = budgetedTexels(demand, sizes);
-  const bool oneAtlas = budget > 0.0 && params.has("lights.one_atlas") && params.b("lights.one_atlas");
-  assignOneAtlas(vp, lights, demand, oneAtlas ? sizes : std::vector<int>(lights.size(), 0));
+  for (size_t k = 0; k < lights.size(); ++k)
+    if (!inAtlas[k]) sizes[k] = 0;
+  assignOneAtlas(vp, lights, sizes);
 }
 
 namespace {

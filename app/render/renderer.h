@@ -193,10 +193,10 @@ class Renderer {
   // Which other lights this frame draws and every light's map size (render/light_budget.h).
   void budgetLightMaps(Viewport& vp, const FrameInput& in);
   // lights.one_atlas: a region of one shared depth layer for each drawn light of one layer whose
-  // layout and representation can draw there (the others keep maps of their own).
-  // sides: the budget's map sizes (0 everywhere: no shared layer).
-  void assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights, const std::vector<LightDemand>& demand,
-                      const std::vector<int>& sides);
+  // layout and representation can draw there (canJoinOneAtlas; the others keep maps of their own).
+  // asked: the map size of each light in the shared layer (0: not in it; 0 everywhere: no layer).
+  bool canJoinOneAtlas(const Viewport& light, const LightDemand& demand) const;
+  void assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights, const std::vector<int>& asked);
   // After a light's layout computed its views: moved into its region when it has one.
   void placeInOneAtlas(Viewport& light);
   int lightLayerCount(Viewport& light, const FrameInput& in);
