@@ -91,5 +91,24 @@ TEST(OneAtlasGl, LightsOfSeveralLayersKeepTheirOwnMaps) {
     EXPECT_LE(differing(own.visibility[k], shared.visibility[k]), own.visibility[k].size() / 200) << "light " << k + 1;
 }
 
+// The lights' states point at the shared layer between frames: it lives on the heap, not in the
+// viewport, so a viewport moved (the explorer's list of them grows) keeps a valid layer, and
+// ASan finds a read of the moved-from one.
+TEST(OneAtlasGl, AViewportMovedBetweenFramesKeepsItsLayer) {
+  test::GlHarness h;
+  const test::SceneTruth t = test::sceneTruth(h, "street-lamps", 160, 90);
+  auto first = std::make_unique<Viewport>(makeTechnique(
+      "cube-atlas", {"shadowmap.size=256", "lights.texel_budget=0.3", "lights.one_atlas=1", "point.keep_faces=1"}));
+  test::renderFromCut(h, t.in, *first);
+  const std::vector<float> before = visibilityChannel(*first->otherLightVisibility(0));
+  Viewport moved(std::move(*first));
+  first.reset();
+  ASSERT_NE(moved.representation->depthTexture(), nullptr);
+  EXPECT_EQ(moved.representation->depthTexture()->width(), 512) << moved.status();
+  FrameInput in = t.in;
+  h.renderer.render(in, {&moved});  // no cut: the kept faces are read from the layer
+  EXPECT_LE(differing(before, visibilityChannel(*moved.otherLightVisibility(0))), before.size() / 200);
+}
+
 }  // namespace
 }  // namespace sl

@@ -20,25 +20,32 @@ bool Renderer::canJoinOneAtlas(const Viewport& light, const LightDemand& demand)
 }
 
 void Renderer::assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights, const std::vector<int>& asked) {
+  // Every light leaves the layer first (its state may point at a layer about to be replaced);
+  // the ones drawn this frame join it again when their views are placed.
+  for (Viewport* light : lights) {
+    light->representation->shareDepthLayer(nullptr);
+    light->inOneAtlas_ = false;
+  }
   const AtlasRegions regions = packAtlasRegions(asked);
   if (regions.side == 0) {
     vp.oneAtlas_.reset();
-    vp.oneAtlasShared_ = {};
-  } else if (!vp.oneAtlas_ || vp.oneAtlas_->width() != regions.side) {
-    vp.oneAtlas_ = std::make_unique<Texture2D>(
-        Texture2D::array(GL_DEPTH_COMPONENT32F, regions.side, regions.side, 1, 1, "one atlas of every light's maps"));
-    vp.oneAtlasFbo_ = Framebuffer("one atlas of every light's maps");
-    vp.oneAtlasFbo_.attachLayer({}, vp.oneAtlas_.get(), 0);
+  } else if (!vp.oneAtlas_ || vp.oneAtlas_->layer.size != regions.side) {
+    auto atlas = std::make_unique<OneAtlas>();
+    atlas->depth =
+        Texture2D::array(GL_DEPTH_COMPONENT32F, regions.side, regions.side, 1, 1, "one atlas of every light's maps");
+    atlas->framebuffer = Framebuffer("one atlas of every light's maps");
+    atlas->framebuffer.attachLayer({}, &atlas->depth, 0);
     // Cleared once: a region is cleared when its light draws, the gaps never (the debug view).
-    glClearNamedFramebufferfi(vp.oneAtlasFbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glClearNamedFramebufferfi(atlas->framebuffer.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    atlas->layer = {&atlas->depth, &atlas->framebuffer, regions.side};
+    vp.oneAtlas_ = std::move(atlas);
   }
-  if (vp.oneAtlas_) vp.oneAtlasShared_ = {vp.oneAtlas_.get(), &vp.oneAtlasFbo_, regions.side};
   vp.oneAtlasUsed_ = 0.0;
   vp.oneAtlasLights_ = 0;
   for (size_t k = 0; k < lights.size(); ++k) {
     const glm::ivec4 r = regions.rects[k];
     lights[k]->atlasRegion_ = r;
-    lights[k]->oneAtlasLayer_ = r.z > 0 ? &vp.oneAtlasShared_ : nullptr;
+    lights[k]->oneAtlasLayer_ = r.z > 0 ? &vp.oneAtlas_->layer : nullptr;
     vp.oneAtlasUsed_ += double(r.z) * double(r.w);
     vp.oneAtlasLights_ += r.z > 0 ? 1 : 0;
   }

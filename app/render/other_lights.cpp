@@ -69,6 +69,8 @@ void Renderer::budgetLightMaps(Viewport& vp, const FrameInput& in) {
       sources.push_back(&scene_->otherLights[k]);
     }
   if (lights.size() == 1) {
+    vp.representation->shareDepthLayer(nullptr);
+    vp.inOneAtlas_ = false;
     vp.oneAtlas_.reset();
     return;
   }

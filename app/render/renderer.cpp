@@ -56,7 +56,7 @@ std::map<std::string, Texture2D*> Viewport::shownViewTargets() {
 
 long long Viewport::shadowTexels() const {
   long long texels = layout->texels() + representation->texels() + accumulation->texels();
-  if (oneAtlas_) texels += static_cast<long long>(oneAtlas_->width()) * oneAtlas_->height();
+  if (oneAtlas_) texels += static_cast<long long>(oneAtlas_->depth.width()) * oneAtlas_->depth.height();
   for (const auto& other : otherLights_)
     if (other) texels += other->shadowTexels();
   return texels;
@@ -91,9 +91,9 @@ std::string Viewport::status() const {
       out += text;
     }
     if (oneAtlas_) {
-      const double side = oneAtlas_->width();
+      const double side = oneAtlas_->layer.size;
       char text[128];
-      std::snprintf(text, sizeof text, "; one atlas %d² for %d lights (%.0f %% of it)", oneAtlas_->width(),
+      std::snprintf(text, sizeof text, "; one atlas %d² for %d lights (%.0f %% of it)", oneAtlas_->layer.size,
                     oneAtlasLights_, 100.0 * oneAtlasUsed_ / (side * side));
       out += text;
     }

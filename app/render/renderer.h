@@ -37,6 +37,14 @@ struct PreviousFrame {
   uint64_t epoch = 0;  // the renderer's scene/size generation it belongs to (0 = none yet)
 };
 
+// lights.one_atlas's shared layer (render/one_atlas.cpp), on the heap: the lights' states point
+// at it (SharedDepthLayer) while the viewport that owns it may move.
+struct OneAtlas {
+  Texture2D depth;
+  Framebuffer framebuffer;
+  SharedDepthLayer layer;
+};
+
 // A viewport: one technique with its own state and targets, sharing the camera with the others.
 // Its previous frame is its own too, so viewports rendered in separate calls (the bench renders
 // entries in turn, A B A B ...) see the same history as when rendered alone.
@@ -106,9 +114,7 @@ class Viewport {
   glm::ivec4 placedRegion_{0};
   int placedAtlasSide_ = 0;
   // The user's viewport: the shared layer itself and the texels its regions use.
-  std::unique_ptr<Texture2D> oneAtlas_;
-  Framebuffer oneAtlasFbo_;
-  SharedDepthLayer oneAtlasShared_;
+  std::unique_ptr<OneAtlas> oneAtlas_;
   double oneAtlasUsed_ = 0.0;
   int oneAtlasLights_ = 0;
   double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
