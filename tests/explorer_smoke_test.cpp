@@ -34,6 +34,10 @@ CommandResult runCommand(const std::string& command) {
   while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  // The explorer's own status where explorerUnderXvfb printed it, not xvfb-run's.
+  const std::string marker = "[explorer exit status ";
+  const size_t at = result.output.rfind(marker);
+  if (at != std::string::npos) result.exitCode = std::atoi(result.output.c_str() + at + marker.size());
   sl::test::expectNoSanitizerReport(result.output, command);
   return result;
 }
@@ -42,6 +46,16 @@ std::string shellQuote(const std::string& text) {
   std::string quoted = "'";
   for (char c : text) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
+}
+
+// The explorer with `args` under `timeout` and `xvfb-run` on one screen of `screen` (WxHxD), its
+// own exit status printed last, which runCommand reports: xvfb-run now and then fails to remove
+// its temporary folder after the program ended (exit 5, "problem while cleaning up temporary
+// directory"), which says nothing of the explorer.
+std::string explorerUnderXvfb(int timeoutSeconds, const std::string& screen, const std::string& args) {
+  const std::string program = shellQuote(SHADOWLAB_BINARY) + " " + args + "; echo \"[explorer exit status $?]\"";
+  return "timeout " + std::to_string(timeoutSeconds) + " xvfb-run -a -s " + shellQuote("-screen 0 " + screen) +
+         " sh -c " + shellQuote(program);
 }
 
 bool onPath(const std::string& program) {
@@ -73,8 +87,8 @@ TEST(ExplorerSmoke, DrawsFramesUnderXvfbAndWritesAScreenshot) {
   std::filesystem::create_directories(dir);
   const std::string shot = (dir / "shot.png").string();
 
-  const std::string command = "timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " + shellQuote(SHADOWLAB_BINARY) +
-                              " --frames 5 --screenshot-on-exit " + shellQuote(shot);
+  const std::string command =
+      explorerUnderXvfb(240, "1280x800x24", "--frames 5 --screenshot-on-exit " + shellQuote(shot));
   const CommandResult result = runCommand(command);
   ASSERT_EQ(result.exitCode, 0) << command << "\n" << result.output;
   ASSERT_TRUE(std::filesystem::exists(shot)) << result.output;
@@ -158,9 +172,9 @@ TEST(ExplorerSmoke, SettingsPersistAndACorruptFileIsSetAside) {
   const fs::path dir = fs::temp_directory_path() / ("shadowlab-explorer-settings-" + std::to_string(getpid()));
   fs::remove_all(dir);
   const std::string settings = (dir / "config" / "settings.json").string();
-  const std::string base = "timeout 240 xvfb-run -a -s \"-screen 0 1280x720x24\" " + shellQuote(SHADOWLAB_BINARY) +
-                           " --size 640x360 --frames 3 --settings " + shellQuote(settings);
-  CommandResult first = runCommand(base + " --scene columns --technique vsm --set shadowmap.size=512 --view shadowmap");
+  const std::string base = "--size 640x360 --frames 3 --settings " + shellQuote(settings);
+  auto explorer = [&](const std::string& args) { return runCommand(explorerUnderXvfb(240, "1280x720x24", args)); };
+  CommandResult first = explorer(base + " --scene columns --technique vsm --set shadowmap.size=512 --view shadowmap");
   ASSERT_EQ(first.exitCode, 0) << first.output;
   ASSERT_TRUE(fs::exists(settings)) << first.output;
   const sl::SettingsLoad saved = sl::loadSettings(settings);
@@ -172,12 +186,12 @@ TEST(ExplorerSmoke, SettingsPersistAndACorruptFileIsSetAside) {
 
   // Restored: the window title names the scene, and it exits cleanly; a saved view the
   // technique no longer offers would not be fatal either.
-  CommandResult second = runCommand(base + " --screenshot-on-exit " + shellQuote((dir / "shot.png").string()));
+  CommandResult second = explorer(base + " --screenshot-on-exit " + shellQuote((dir / "shot.png").string()));
   EXPECT_EQ(second.exitCode, 0) << second.output;
   EXPECT_EQ(sl::loadSettings(settings).settings->viewports[0].preset, "vsm") << "a plain start changed them";
 
   { std::ofstream(settings) << "{\"viewports\": [ oops"; }
-  CommandResult corrupt = runCommand(base);
+  CommandResult corrupt = explorer(base);
   EXPECT_EQ(corrupt.exitCode, 0) << corrupt.output;
   EXPECT_NE(corrupt.output.find("is corrupt"), std::string::npos) << corrupt.output;
   int setAside = 0;
@@ -199,9 +213,8 @@ TEST(ExplorerSmoke, ShortSoakRecoversFromABrokenShaderAndReportsMemory) {
   const std::string shading = (dir / "shaders" / "common" / "shading.glsl").string();
   std::ifstream before(shading);
   const std::string original((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>());
-  const std::string command = "timeout 300 xvfb-run -a -s \"-screen 0 1280x720x24\" " + shellQuote(SHADOWLAB_BINARY) +
-                              " --soak 15 --size 640x360 --no-settings --shaders " +
-                              shellQuote((dir / "shaders").string());
+  const std::string command = explorerUnderXvfb(
+      300, "1280x720x24", "--soak 15 --size 640x360 --no-settings --shaders " + shellQuote((dir / "shaders").string()));
   const CommandResult result = runCommand(command);
   EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("soak: PASSED"), std::string::npos) << result.output;
@@ -277,7 +290,8 @@ TEST(ExplorerSmoke, ReturnClosesACtrlClickEditBoxAtALowFrameRate) {
       "xdotool mousemove --window \"$wid\" 138 643; sleep 0.5; "
       "xdotool keydown ctrl; xdotool click 1; xdotool keyup ctrl; sleep 0.5; xdotool type 3; sleep 0.5; "
       "xdotool key Return; sleep 1; xdotool mousemove --window \"$wid\" 600 300; sleep 0.5; "
-      "xdotool key ctrl+q; sleep 5; kill $pid 2>/dev/null && echo 'still running'; wait $pid; echo \"explorer exit $?\"";
+      "xdotool key ctrl+q; sleep 5; kill $pid 2>/dev/null && echo 'still running'; wait $pid; echo \"explorer exit "
+      "$?\"";
   const CommandResult r =
       runCommand("timeout 180 xvfb-run -a -s '-screen 0 1280x720x24' sh -c " + shellQuote(explorer + " " + keys));
   std::ifstream in(log);
@@ -300,9 +314,9 @@ TEST(ExplorerSmoke, PresenterModeFillsTheDisplay) {
   std::filesystem::create_directories(dir);
   const std::string shot = (dir / "shot.png").string();
   const std::string tour = std::string(SHADOWLAB_SOURCE_DIR) + "/tours/pixel-correct.json";
-  const std::string command = "timeout 240 xvfb-run -a -s \"-screen 0 1600x900x24\" " + shellQuote(SHADOWLAB_BINARY) +
-                              " --no-settings --tour " + shellQuote(tour) + " --presenter --frames 6 " +
-                              "--screenshot-on-exit " + shellQuote(shot);
+  const std::string command = explorerUnderXvfb(
+      240, "1600x900x24",
+      "--no-settings --tour " + shellQuote(tour) + " --presenter --frames 6 --screenshot-on-exit " + shellQuote(shot));
   const CommandResult result = runCommand(command);
   ASSERT_EQ(result.exitCode, 0) << command << "\n" << result.output;
   int width = 0, height = 0, channels = 0;
@@ -311,9 +325,8 @@ TEST(ExplorerSmoke, PresenterModeFillsTheDisplay) {
   stbi_image_free(rgb);
   EXPECT_EQ(width, 1600);
   EXPECT_EQ(height, 900);
-  const CommandResult bad =
-      runCommand("timeout 60 xvfb-run -a " + shellQuote(SHADOWLAB_BINARY) + " --no-settings --tour " +
-                 shellQuote(tour) + " --presenter --monitor 3 --frames 2");
+  const CommandResult bad = runCommand(explorerUnderXvfb(
+      60, "1280x1024x24", "--no-settings --tour " + shellQuote(tour) + " --presenter --monitor 3 --frames 2"));
   EXPECT_EQ(bad.exitCode, 1) << bad.output;
   EXPECT_NE(bad.output.find("--monitor 3: this display has 1 monitor"), std::string::npos) << bad.output;
   std::filesystem::remove_all(dir);

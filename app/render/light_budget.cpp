@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <numeric>
 
 namespace sl {
@@ -99,46 +98,79 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
   return sizes;
 }
 
-AtlasRegions packAtlasRegions(const std::vector<int>& sides) {
-  AtlasRegions out;
-  out.rects.assign(sides.size(), glm::ivec4(0));
-  int cell = 0;
-  double area = 0.0;
-  for (int s : sides)
-    if (s > 0) {
-      cell = std::max(cell, s);
-      area += double(s) * double(s);
-    }
-  if (cell == 0) return out;
-  const int cells = static_cast<int>(std::ceil(area / (double(cell) * double(cell)) - 1e-9));
-  int perSide = 1;
-  while (perSide * perSide < cells) ++perSide;
-  out.side = perSide * cell;
-  // Free squares (x, y, side) in the order they are filled: after a square of side s is placed
-  // the front holds its siblings of side s, then theirs of 2s, so the front always fits the next
-  // (no larger) square.
-  std::deque<glm::ivec3> free;
-  for (int j = 0; j < perSide; ++j)
-    for (int i = 0; i < perSide; ++i) free.push_back({i * cell, j * cell, cell});
+namespace {
+
+// Squares (0: none) placed largest first, bottom-left on a skyline in a layer of side² texels:
+// each at the lowest, then leftmost, start of a skyline segment where it fits. Empty when one
+// does not fit.
+std::vector<glm::ivec4> skylinePack(const std::vector<int>& sides, int side) {
   std::vector<size_t> order(sides.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return sides[a] > sides[b]; });
+  struct Segment {
+    int x, width, y;
+  };
+  std::vector<Segment> sky = {{0, side, 0}};
+  std::vector<glm::ivec4> out(sides.size(), glm::ivec4(0));
   for (size_t i : order) {
     const int s = sides[i];
-    if (s <= 0 || free.empty()) continue;
-    glm::ivec3 f = free.front();
-    free.pop_front();
-    while (f.z / 2 >= s) {  // split: the first quarter goes on, the other three wait in order
-      const int h = f.z / 2;
-      free.push_front({f.x + h, f.y + h, h});
-      free.push_front({f.x, f.y + h, h});
-      free.push_front({f.x + h, f.y, h});
-      f.z = h;
+    if (s <= 0) continue;
+    int bestY = side + 1, bestX = 0;
+    for (size_t j = 0; j < sky.size() && sky[j].x + s <= side; ++j) {
+      int y = 0;
+      for (size_t m = j; m < sky.size() && sky[m].x < sky[j].x + s; ++m) y = std::max(y, sky[m].y);
+      if (y + s <= side && y < bestY) {
+        bestY = y;
+        bestX = sky[j].x;
+      }
     }
-    if (f.z < s) continue;  // not a halving of the largest side: left out of the atlas
-    out.rects[i] = {f.x, f.y, s, s};
+    if (bestY > side) return {};
+    out[i] = {bestX, bestY, s, s};
+    // The skyline under the square rises to its top.
+    std::vector<Segment> next;
+    for (const Segment& g : sky) {
+      if (g.x < bestX) next.push_back({g.x, std::min(g.width, bestX - g.x), g.y});
+      if (g.x + g.width > bestX + s) {
+        const int from = std::max(g.x, bestX + s);
+        next.push_back({from, g.x + g.width - from, g.y});
+      }
+    }
+    next.push_back({bestX, s, bestY + s});
+    std::sort(next.begin(), next.end(), [](const Segment& a, const Segment& b) { return a.x < b.x; });
+    sky.clear();
+    for (const Segment& g : next) {
+      if (!sky.empty() && sky.back().y == g.y)
+        sky.back().width += g.width;
+      else
+        sky.push_back(g);
+    }
   }
   return out;
+}
+
+}  // namespace
+
+AtlasRegions packAtlasRegions(const std::vector<int>& sides) {
+  AtlasRegions out;
+  out.rects.assign(sides.size(), glm::ivec4(0));
+  int largest = 0;
+  double area = 0.0;
+  for (int s : sides)
+    if (s > 0) {
+      largest = std::max(largest, s);
+      area += double(s) * double(s);
+    }
+  if (largest == 0) return out;
+  // From the side that holds their area upward, 8 texels at a time: the first that holds them
+  // all (a row of them always does).
+  for (int side = (std::max(largest, static_cast<int>(std::ceil(std::sqrt(area)))) + 7) / 8 * 8;; side += 8) {
+    std::vector<glm::ivec4> rects = skylinePack(sides, side);
+    if (!rects.empty()) {
+      out.side = side;
+      out.rects = std::move(rects);
+      return out;
+    }
+  }
 }
 
 namespace {
@@ -174,7 +206,7 @@ std::vector<int> fillAtlasSizes(const std::vector<LightDemand>& lights, std::vec
       if (!inAtlas[k] || sizes[k] <= 0 || sizes[k] >= cell) continue;
       std::vector<int> trial = sizes;
       trial[k] = ladderStepAbove(cell, sizes[k]);
-      if (packAtlasRegions(sidesOf(trial)).side != side) continue;
+      if (skylinePack(sidesOf(trial), side).empty()) continue;
       const double need = lights[k].footprint / (double(sizes[k]) * sizes[k]);
       if (need > bestNeed) {
         bestNeed = need;

@@ -51,10 +51,10 @@ std::vector<int> budgetMapSizes(const std::vector<LightDemand>& lights, double b
 double budgetedTexels(const std::vector<LightDemand>& lights, const std::vector<int>& sizes);
 
 // Every light's map in one atlas layer (lights.one_atlas; beyond the papers: the shadow atlas of
-// engines that shade many lights from one texture). The budget's sizes are one size halved 0 or
-// more times, so squares of them taken largest first, each into the first free place of a
-// quadtree over cells of the largest side, leave no gap: the layer is the fewest such cells
-// that hold their sum, in a square. side 0: no square asked.
+// engines that shade many lights from one texture): squares of the given sides (0: none), largest
+// first, each at the lowest then leftmost place on a skyline (bottom-left packing), in the
+// smallest square layer that holds them, searched from the side of their total area upward in
+// steps of 1/64 (sides multiples of 8). side 0: no square asked.
 struct AtlasRegions {
   int side = 0;                   // texels per side of the atlas layer
   std::vector<glm::ivec4> rects;  // per entry x, y, width, height in texels (0: none asked)
@@ -64,9 +64,10 @@ AtlasRegions packAtlasRegions(const std::vector<int>& sides);
 // Larger shared layers are not made (256 MB of 32-bit depth): the lights keep maps of their own.
 constexpr int kMaxOneAtlasSide = 8192;
 
-// The budget's sizes with those of the lights in one atlas (inAtlas[k]) grown into the free
-// cells of the square packAtlasRegions makes for them: the light with the most footprint per
-// texel doubles while they all still pack into a square of that side, none beyond the largest.
+// The budget's sizes with those of the lights in one atlas (inAtlas[k]) grown into the room left
+// in the square packAtlasRegions makes for them: the light with the most footprint per texel
+// goes a step up the ladder while they all still pack into a square of that side, none beyond
+// the largest.
 // The atlas's texels are allocated whatever the lights draw into them; the others are unchanged.
 // When that square would be over kMaxOneAtlasSide, none is in the atlas (inAtlas cleared).
 std::vector<int> fillAtlasSizes(const std::vector<LightDemand>& lights, std::vector<int> sizes,

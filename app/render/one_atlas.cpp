@@ -1,9 +1,9 @@
 // One atlas for every light's map (lights.one_atlas; beyond the papers: the shadow atlas engines
 // shade many lights from). The texel budget sizes each light's map by the screen its range
 // covers (render/light_budget.h); here those maps become regions of one depth layer, packed
-// without gaps into the smallest square of whole cells (packAtlasRegions), the cells left free
-// given to the lights by the budget's own rule (fillAtlasSizes, before the sizes are handed
-// out), and each light's layout's views are moved into its region
+// bottom-left into the smallest square that holds them (packAtlasRegions), the room left given
+// to the lights by the budget's own rule (fillAtlasSizes, before the sizes are handed out), and
+// each light's layout's views are moved into its region
 // (placeInAtlasRegion). Inside a region a layout keeps its own packing: cube-atlas's faces by
 // need. A light draws only its region (the shadow pass clears it alone) and its lookups stay in
 // it (lightViewTap), so the lights' parts still know nothing of each other.
