@@ -145,9 +145,10 @@ TEST(ExplorerSmoke, BrokenAccumulationShaderKeepsTheWindowRunning) {
   const std::string script =
       "(sleep 4; cp " + shellQuote(frag.string()) + " " + shellQuote(frag.string() + ".good") +
       "; printf 'x+;\\n' >> " + shellQuote(frag.string()) + "; sleep 3; cp " + shellQuote(frag.string() + ".good") +
-      " " + shellQuote(frag.string()) + ") & timeout 240 xvfb-run -a -s \"-screen 0 1280x800x24\" " +
-      shellQuote(SHADOWLAB_BINARY) + " --technique pixel-correct --size 640x360 --frames 500 --shaders " +
-      shellQuote((dir / "shaders").string()) + " --screenshot-on-exit " + shellQuote(shot) +
+      " " + shellQuote(frag.string()) + ") & " +
+      explorerUnderXvfb(240, "1280x800x24",
+                        "--technique pixel-correct --size 640x360 --frames 500 --shaders " +
+                            shellQuote((dir / "shaders").string()) + " --screenshot-on-exit " + shellQuote(shot)) +
       "; status=$?; wait; exit $status";
   const CommandResult result = runCommand("sh -c " + shellQuote(script));
   EXPECT_EQ(result.exitCode, 0) << result.output;
