@@ -28,17 +28,21 @@ bool LightSpace::packed() const {
 
 bool LightSpace::sharesLayers() const { return layerCount() < static_cast<int>(views.size()); }
 
+glm::mat4 squareOntoRect(const glm::ivec4& rect, float side, int layerSize) {
+  glm::mat4 place(1.0f);
+  place[0][0] = place[1][1] = side / float(layerSize);
+  place[3][0] = (float(rect.x) + 0.5f * float(rect.z)) / float(layerSize) * 2.0f - 1.0f;
+  place[3][1] = (float(rect.y) + 0.5f * float(rect.w)) / float(layerSize) * 2.0f - 1.0f;
+  return place;
+}
+
 bool placeInAtlasRegion(LightSpace& space, const glm::ivec4& region, int atlasSize) {
   if (region.z <= 0 || region.z != space.size || region.x < 0 || region.y < 0 || region.x + region.z > atlasSize ||
       region.y + region.w > atlasSize || space.layerCount() != 1)
     return false;
   for (const LightView& v : space.views)
     if (v.projection != LightView::Projection::Matrix) return false;
-  const float k = float(region.z) / float(atlasSize);
-  glm::mat4 place(1.0f);
-  place[0][0] = place[1][1] = k;
-  place[3][0] = (float(region.x) + 0.5f * float(region.z)) / float(atlasSize) * 2.0f - 1.0f;
-  place[3][1] = (float(region.y) + 0.5f * float(region.w)) / float(atlasSize) * 2.0f - 1.0f;
+  const glm::mat4 place = squareOntoRect(region, float(region.z), atlasSize);
   for (LightView& v : space.views) {
     v.proj = place * v.proj;
     v.viewProj = v.proj * v.view;
@@ -51,7 +55,7 @@ bool placeInAtlasRegion(LightSpace& space, const glm::ivec4& region, int atlasSi
     for (glm::vec2& uv : v.receiverHull) uv = (glm::vec2(region.x, region.y) + uv * float(region.z)) / float(atlasSize);
   }
   space.size = atlasSize;
-  space.atlasPlacement = glm::vec3(k, place[3][0], place[3][1]);
+  space.atlasPlacement = glm::vec3(place[0][0], place[3][0], place[3][1]);
   return true;
 }
 

@@ -112,6 +112,11 @@ struct LightSpace {
   bool sharesLayers() const;       // some layer holds several views (packed or in an atlas)
 };
 
+// The map's [-1, 1] square scaled to `side` texels and centred on `rect` (x, y, width, height in
+// texels) of a layer of layerSize² texels: what follows a view's projection to draw it into a
+// rectangle of a shared layer (an atlas face's square, a light's region of one atlas).
+glm::mat4 squareOntoRect(const glm::ivec4& rect, float side, int layerSize);
+
 // A light's one-layer space moved into `region` (x, y, side, side in texels) of an atlas layer of
 // atlasSize² shared with other lights (lights.one_atlas): every view's projection followed by the
 // scale and offset that put its layer's image inside the region, its atlasRect (or, for a view

@@ -40,22 +40,17 @@ void Renderer::assignOneAtlas(Viewport& vp, const std::vector<Viewport*>& lights
     atlas->layer = {&atlas->depth, &atlas->framebuffer, regions.side};
     vp.oneAtlas_ = std::move(atlas);
   }
-  vp.oneAtlasUsed_ = 0.0;
-  vp.oneAtlasLights_ = 0;
   for (size_t k = 0; k < lights.size(); ++k) {
-    const glm::ivec4 r = regions.rects[k];
-    lights[k]->atlasRegion_ = r;
-    lights[k]->oneAtlasLayer_ = r.z > 0 ? &vp.oneAtlas_->layer : nullptr;
-    vp.oneAtlasUsed_ += double(r.z) * double(r.w);
-    vp.oneAtlasLights_ += r.z > 0 ? 1 : 0;
+    lights[k]->atlasRegion_ = regions.rects[k];
+    lights[k]->oneAtlasLayer_ = regions.rects[k].z > 0 ? &vp.oneAtlas_->layer : nullptr;
   }
 }
 
 void Renderer::placeInOneAtlas(Viewport& light) {
   const SharedDepthLayer* layer = light.oneAtlasLayer_;
-  light.inOneAtlas_ = layer && light.atlasRegion_.z > 0 && light.layout->drawsWholeViews() &&
-                      light.representation->canShareDepthLayer() &&
-                      placeInAtlasRegion(light.lightSpace, light.atlasRegion_, layer->size);
+  // A region is given only to a light that can join (canJoinOneAtlas); its views must still fit.
+  light.inOneAtlas_ =
+      layer && light.atlasRegion_.z > 0 && placeInAtlasRegion(light.lightSpace, light.atlasRegion_, layer->size);
   light.representation->shareDepthLayer(light.inOneAtlas_ ? layer : nullptr);
   // Drawn elsewhere than last frame (another region, another layer, or in or out of the atlas):
   // what the layout kept of earlier frames (faces cached in the old place) is forgotten.

@@ -67,6 +67,24 @@ const Texture2D* Viewport::otherLightVisibility(size_t k) const {
   return otherLights_[k]->visibilityTexture();
 }
 
+// The shared layer of lights.one_atlas: its side, and how many lights' regions fill how much of it.
+std::string Viewport::oneAtlasStatus() const {
+  int lights = 0;
+  double used = 0.0;
+  auto count = [&](const Viewport& light) {
+    lights += light.atlasRegion_.z > 0 ? 1 : 0;
+    used += double(light.atlasRegion_.z) * double(light.atlasRegion_.w);
+  };
+  count(*this);
+  for (const auto& other : otherLights_)
+    if (other) count(*other);
+  const double side = oneAtlas_->layer.size;
+  char text[128];
+  std::snprintf(text, sizeof text, "; one atlas %d² for %d lights (%.0f %% of it)", oneAtlas_->layer.size, lights,
+                100.0 * used / (side * side));
+  return text;
+}
+
 std::string Viewport::status() const {
   std::string out;
   for (const PartState* part :
@@ -90,13 +108,7 @@ std::string Viewport::status() const {
                     budgetTexels_ * 1e-6);
       out += text;
     }
-    if (oneAtlas_) {
-      const double side = oneAtlas_->layer.size;
-      char text[128];
-      std::snprintf(text, sizeof text, "; one atlas %d² for %d lights (%.0f %% of it)", oneAtlas_->layer.size,
-                    oneAtlasLights_, 100.0 * oneAtlasUsed_ / (side * side));
-      out += text;
-    }
+    if (oneAtlas_) out += oneAtlasStatus();
   }
   return out;
 }

@@ -82,6 +82,7 @@ class Viewport {
   void setTechnique(Technique t);  // keeps targets, resets history
 
  private:
+  std::string oneAtlasStatus() const;  // status()'s words on lights.one_atlas's shared layer
   friend class Renderer;
   std::unique_ptr<Texture2D> rawVisibility_, finalVisibility_, color_, depth_;
   std::map<std::string, std::unique_ptr<Texture2D>> views_;
@@ -113,10 +114,8 @@ class Viewport {
   bool inOneAtlas_ = false;
   glm::ivec4 placedRegion_{0};
   int placedAtlasSide_ = 0;
-  // The user's viewport: the shared layer itself and the texels its regions use.
+  // The user's viewport: the shared layer itself.
   std::unique_ptr<OneAtlas> oneAtlas_;
-  double oneAtlasUsed_ = 0.0;
-  int oneAtlasLights_ = 0;
   double budgetTexels_ = 0.0;  // the user's viewport: texels the budget gave its lights this frame
   int sizeRange_[2] = {0, 0};  // and their smallest and largest map size
   // Scene::otherLights' shadowed entries: the same technique with its own part states and

@@ -320,11 +320,7 @@ FaceViews atlasFaceViews(const FaceSet& set, const Light& light, const LayoutInp
     // to the square, lightViewTap).
     const int squareBorder = std::max(border, std::min(reach, sq.z / 8));
     const float inner = float(sq.z - 2 * std::min(squareBorder, std::max(0, (sq.z - 8) / 2)));
-    glm::mat4 place(1.0f);
-    place[0][0] = place[1][1] = inner / float(size);
-    place[3][0] = (float(sq.x) + 0.5f * float(sq.z)) / float(size) * 2.0f - 1.0f;
-    place[3][1] = (float(sq.y) + 0.5f * float(sq.w)) / float(size) * 2.0f - 1.0f;
-    v.proj = place * v.proj;
+    v.proj = squareOntoRect(sq, inner, size) * v.proj;
     v.viewProj = v.proj * v.view;
     v.texelWorldSize *= float(size) / inner;
     v.atlasRect = sq;
