@@ -16,7 +16,7 @@ set(_unit_suites
   SceneEffects FrameGraph ShadowDrawPlan ExplorerCaption Layout Params ParamDefines SceneFuzzRegressions SceneBuiltin SceneMotion
   SceneCameraPath SceneGltf SceneJson SceneShapes SceneRealGltf MeshFixups Metrics TourParse
   DeepScene ExplorerErrorPanel ExplorerLink ExplorerViews ExplorerSettings ExplorerColourKeys
-  ExplorerExports ExplorerShortcuts ExplorerCamera ExplorerLight ExplorerLayout Reference DeepFit PointLight LightFaces DualParaboloid PointSeams FaceCache LightBudget VisibleFit BlurSpans)
+  ExplorerExports ExplorerShortcuts ExplorerCamera ExplorerLight ExplorerLayout Reference DeepFit PointLight LightFaces DualParaboloid PointSeams FaceCache LightBudget VisibleFit BlurSpans IzbViews)
 # Suites whose subject is the ray-traced reference (Embree).
 set(_reference_suites Reference ReferenceScale ReferenceIndependent ReferenceIndependentReal ReferenceCache)
 set(_golden_suites Golden)

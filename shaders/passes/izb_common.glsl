@@ -30,7 +30,9 @@ layout(std430) buffer IzbSamples { Sample samples[]; };   // by pixel
 layout(std430) buffer IzbList { uint list[]; };           // pixel indices, by cell
 layout(std430) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
 layout(std430) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
-layout(std430) buffer IzbCounters { uint counters[]; };  // 0: overflowed, 1: listed
+// 0: overflowed, 1: listed, 2: large-triangle rows queued, 3: ~bits of the least listed clip w,
+// 4: bits of the greatest (w > 0: a positive float's bits order as it does)
+layout(std430) buffer IzbCounters { uint counters[]; };
 
 uniform int u_izbGrid;      // cells per side
 uniform vec2 u_izbSize;     // eye samples: the viewport's pixels (whole numbers)

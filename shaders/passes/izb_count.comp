@@ -107,4 +107,7 @@ void main() {
   pixelCell[pixel] = index;
   atomicAdd(counts[index], 1u);
   atomicAdd(counters[1], 1u);
+  float w = (u_izbViewProj * vec4(P.xyz, 1.0)).w;  // > 0: izbGridPos held
+  atomicMax(counters[3], ~floatBitsToUint(w));
+  atomicMax(counters[4], floatBitsToUint(w));
 }

@@ -14,6 +14,7 @@ layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
+uniform int u_izbRaysKeepW;  // 1: a directional light (its rays keep their clip w)
 layout(std430) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
 layout(std430) buffer IzbDispatch { uint dispatchArgs[3]; };
 const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
@@ -66,24 +67,36 @@ struct Caster {
   vec3 edge[3];    // inward edge lines in grid units: dot(xy, 1) >= -margin inside
 };
 
-bool setup(uint id, out Caster c) {
-  c.id = id;
-  c.t = triangles[id];
-  c.m = materials[floatBitsToUint(c.t.c.w)];
-  c.masked = c.m.texture.w != 0u;
-  c.lo = ivec2(0);
-  c.hi = ivec2(u_izbGrid - 1);
-  c.edges = false;
-  // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
-  if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
-  vec2 g[3];
-  // Wholly behind a perspective light's plane (w <= 0; an orthographic view's w is 1): no point of
-  // it lies between a listed sample (w > 0) and the light (w = 0), where w falls linearly to 0.
-  vec3 w = vec3((u_izbViewProj * vec4(c.t.a.xyz, 1.0)).w, (u_izbViewProj * vec4(c.t.b.xyz, 1.0)).w,
-                (u_izbViewProj * vec4(c.t.c.xyz, 1.0)).w);
-  if (all(lessThanEqual(w, vec3(0.0)))) return false;
-  // Partly behind it the projection wraps around: walk the whole grid.
-  if (!(izbGridPos(c.t.a.xyz, g[0]) && izbGridPos(c.t.b.xyz, g[1]) && izbGridPos(c.t.c.xyz, g[2]))) return true;
+// Grid coordinates of a clip-space point in front of the view (w > 0).
+vec2 gridOf(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * float(u_izbGrid); }
+
+void growBounds(vec4 clip, inout vec2 lo, inout vec2 hi) {
+  vec2 g = gridOf(clip);
+  lo = min(lo, g);
+  hi = max(hi, g);
+}
+
+// A triangle crossing the listed samples' w range under a directional light: the bounds of its
+// part inside the range (the edges' points at the range's ends where they cross them, and the
+// vertices inside). No edge spans: its projected edges are not those of the clipped part.
+void clippedBounds(inout Caster c, vec4 v[3], float lo, float hi) {
+  vec2 gmin = vec2(1e30), gmax = vec2(-1e30);
+  for (int k = 0; k < 3; ++k) {
+    vec4 p = v[k], q = v[(k + 1) % 3];
+    if (p.w >= lo && p.w <= hi) growBounds(p, gmin, gmax);
+    for (int end = 0; end < 2; ++end) {
+      float plane = end == 0 ? lo : hi;
+      if ((p.w - plane) * (q.w - plane) < 0.0) growBounds(mix(p, q, (plane - p.w) / (q.w - p.w)), gmin, gmax);
+    }
+  }
+  c.lo = izbCell(gmin - 0.01);
+  c.hi = izbCell(gmax + 0.01);
+}
+
+// The bounds and the three inward edge lines of a triangle wholly in front of the view.
+void spanEdges(inout Caster c, vec4 v[3]) {
+  vec2 g[3] = vec2[3](gridOf(v[0]), gridOf(v[1]), gridOf(v[2]));
+  if (any(isnan(vec3(g[0].x + g[0].y, g[1].x + g[1].y, g[2].x + g[2].y)))) return;  // whole grid
   c.lo = izbCell(min(g[0], min(g[1], g[2])) - 0.01);
   c.hi = izbCell(max(g[0], max(g[1], g[2])) + 0.01);
   vec2 e1 = g[1] - g[0], e2 = g[2] - g[0];
@@ -96,6 +109,42 @@ bool setup(uint id, out Caster c) {
     // Inside (widened): dot(n, x - p) >= -0.01 * |n|.
     c.edge[k] = vec3(n, -dot(n, p) + 0.01 * length(n));
   }
+}
+
+bool setup(uint id, out Caster c) {
+  c.id = id;
+  c.t = triangles[id];
+  c.m = materials[floatBitsToUint(c.t.c.w)];
+  c.masked = c.m.texture.w != 0u;
+  c.lo = ivec2(0);
+  c.hi = ivec2(u_izbGrid - 1);
+  c.edges = false;
+  // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
+  if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
+  vec4 v[3] = vec4[3](u_izbViewProj * vec4(c.t.a.xyz, 1.0), u_izbViewProj * vec4(c.t.b.xyz, 1.0),
+                      u_izbViewProj * vec4(c.t.c.xyz, 1.0));
+  vec3 w = vec3(v[0].w, v[1].w, v[2].w);
+  if (u_izbRaysKeepW != 0) {
+    // A directional light's views send a sample's ray to one point of the grid
+    // (izb_state.cpp, raysProjectToPoints): clip w stays the sample's along it, so only a
+    // triangle's part within the listed samples' w range can hit one (an orthographic view's w
+    // is 1 throughout). The range is widened against the rounding of w between the passes.
+    float lo = max(uintBitsToFloat(~counters[3]) * (1.0 - 1e-5), 1e-6);
+    float hi = uintBitsToFloat(counters[4]) * (1.0 + 1e-5);
+    if (all(lessThan(w, vec3(lo))) || all(greaterThan(w, vec3(hi)))) return false;
+    // Partly behind a warped view's centre of projection (casters behind the camera).
+    if (any(lessThanEqual(w, vec3(1e-6)))) {
+      clippedBounds(c, v, lo, hi);
+      return true;
+    }
+  } else {
+    // Wholly behind a perspective light's plane (w <= 0): no point of it lies between a listed
+    // sample (w > 0) and the light (w = 0), where w falls linearly to 0.
+    if (all(lessThanEqual(w, vec3(0.0)))) return false;
+    // Partly behind it the projection wraps around: walk the whole grid.
+    if (any(lessThanEqual(w, vec3(1e-6)))) return true;
+  }
+  spanEdges(c, v);
   return true;
 }
 

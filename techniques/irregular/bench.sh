@@ -34,5 +34,10 @@ PY
   bench --scene "$tmp/basic-$seg.json" --techniques standard,alias-free --size 320x180 --frames 5 --warmup 2 \
     --json "$out/tris-basic-$seg.json"
 done
+# The grid's light view: the focused map's against LiSPSM's (the preset's), at 1280x720.
+for scene in basic columns terrain sponza; do
+  bench --scene "$scene" --techniques standard,alias-free --sweep technique.layout=focused,lispsm --size 1280x720 \
+    --frames 6 --warmup 2 --samples 1 --json "$out/grid-layout-$scene-1280x720.json"
+done
 python3 techniques/irregular/bench_table.py "$out" > "$out/tables.md"
 rm -rf "$tmp"

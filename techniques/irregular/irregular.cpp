@@ -51,15 +51,16 @@ void registerIrregularRepresentations(std::vector<std::unique_ptr<Representation
 void addIrregularPresets(std::vector<Preset>& out) {
   out.push_back({"alias-free",
                  "irregular z-buffer (Johnson et al. 2004, Aila & Laine 2004, Sintorn et al. 2008): exact hard "
-                 "shadows of every visible pixel, ray-traced-reference quality; a small map is kept for overflow",
-                 "focused",
+                 "shadows of every visible pixel, ray-traced-reference quality; samples listed in LiSPSM's light-space "
+                 "grid (more cells near the viewer, where the samples are dense); a small map is kept for overflow",
+                 "lispsm",
                  "irregular",
                  "none",
                  {"shadowmap.size=512"}});
   out.push_back({"alias-free-pixel-correct",
                  "the irregular z-buffer under pixel-correct accumulation: exact from the first frame, so the history "
                  "only repeats it",
-                 "focused",
+                 "lispsm",
                  "irregular",
                  "pixel-correct",
                  {"shadowmap.size=512"}});

@@ -252,12 +252,12 @@ INSTANTIATE_TEST_SUITE_P(PointLayouts, IrregularPointLayoutGl,
                            return name;
                          });
 
-// Views no matrix places points in get a clear status and the map test everywhere: a warped view
-// under a sun (LiSPSM) and the paraboloids.
-TEST(Irregular, WarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {
+// Views no matrix places points in get a clear status and the map test everywhere: the log warp
+// under a sun (LogPSM) and the paraboloids.
+TEST(Irregular, LogWarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {
   test::GlHarness h;
   for (const auto& [sceneId, layout, word] :
-       {std::tuple<const char*, const char*, const char*>{"basic", "lispsm", "warped"},
+       {std::tuple<const char*, const char*, const char*>{"basic", "logpsm", "warped"},
         {"street", "dual-paraboloid", "paraboloid"}}) {
     const Scene scene = loadScene(sceneId, defaultAssetsDir());
     Viewport vp(makeTechnique("alias-free", {std::string("technique.layout=") + layout}));
@@ -268,6 +268,40 @@ TEST(Irregular, WarpedAndParaboloidViewsGiveAStatusAndTheMapTest) {
     const Result r = compareWithReference(scene, f);
     EXPECT_EQ(r.nonfinite, 0) << layout;
     EXPECT_LT(r.error.wrongPixelPct, 5.0) << layout << ": the map's test, not garbage";
+  }
+}
+
+// A beam from behind the camera to far ahead under a sun from behind: under a light-space warp
+// (LiSPSM, TSM) its long faces cross the warp's centre of projection, where the projection of
+// its corners wraps around; the grid takes the part of it within the listed samples' clip w
+// (izb_triangles.comp, clippedBounds), and its shadow on the ground ahead is exact.
+Scene beamScene() {
+  Scene scene;
+  scene.name = "beam";
+  scene.materials.push_back(Material{});
+  scene.meshes.push_back(makePlane(80.0f, 80.0f, 8));
+  scene.meshes.push_back(makeBox({0.4f, 0.4f, 40.0f}));
+  scene.instances.push_back({"ground", 0, glm::mat4(1.0f), {}});
+  scene.instances.push_back({"beam", 1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 2.5f, 0.0f)), {}});
+  scene.light.direction = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.5f));
+  Camera cam;
+  cam.position = {0.5f, 1.7f, 12.0f};
+  cam.target = {0.0f, 0.5f, -10.0f};
+  scene.cameras.push_back(cam);
+  return scene;
+}
+
+TEST(Irregular, WarpedGridsAcrossTheLightMatchTheReferenceWithCastersBehindTheirCentre) {
+  test::GlHarness h;
+  const Scene scene = beamScene();
+  for (const char* layout : {"lispsm", "tsm"}) {
+    Viewport vp(makeTechnique("alias-free", {std::string("technique.layout=") + layout}));
+    const Result r = compareWithReference(scene, renderWith(h, scene, vp, scene.cameras.front()));
+    const std::string status = vp.representation->status();
+    EXPECT_NE(status.find("samples in"), std::string::npos) << layout << ": " << status;
+    EXPECT_EQ(r.nonfinite, 0) << layout;
+    EXPECT_GT(r.shadowed, 200) << layout << ": the beam's shadow on the ground";
+    EXPECT_LE(r.wrong, 3) << layout;
   }
 }
 

@@ -32,6 +32,26 @@ GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1)
 
 }  // namespace
 
+// p + t d projects where p does for every t when M d has no x, y or w. The light view is
+// orthographic along the light and a light-space warp (LiSPSM, TSM) has its perspective axis
+// across it: both are so but for the rounding of their matrices' products (a relative 1e-6 at
+// most in the layouts' views; izb_views_test.cpp), which the grid removes: M - (M d without its
+// z) d^T / |d|^2 sends d to depth alone, and moves a point by that rounding only.
+bool sunGridMatrix(const glm::mat4& viewProj, const glm::vec3& toLight, glm::mat4& grid) {
+  const glm::dmat4 m(viewProj);
+  const glm::dvec3 d(toLight);
+  glm::dvec4 image = m * glm::dvec4(d, 0.0);
+  double scale = 0.0;
+  for (int column = 0; column < 3; ++column) scale = std::max(scale, glm::length(m[column]));
+  const double off = std::max({std::abs(image.x), std::abs(image.y), std::abs(image.w)});
+  if (!(off <= 1e-3 * scale) || !(glm::dot(d, d) > 0.0)) return false;
+  image.z = 0.0;
+  glm::dmat4 corrected = m;
+  for (int column = 0; column < 3; ++column) corrected[column] -= image * (d[column] / glm::dot(d, d));
+  grid = glm::mat4(corrected);
+  return true;
+}
+
 IzbState::IzbState() : DepthMapState(false) {}
 
 IzbState::~IzbState() {
@@ -55,7 +75,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     resize(samples_, pixels * kSampleBytes, "izb samples");
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
-    if (!counters_) resize(counters_, 16, "izb counters");
+    if (!counters_) resize(counters_, 32, "izb counters");  // izb_common.glsl: IzbCounters
     if (!queue_) resize(queue_, kQueueCapacity * 8, "izb large-triangle queue");
     if (!dispatch_) resize(dispatch_, 16, "izb queue dispatch");
   }
@@ -74,21 +94,28 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
 
 namespace {
 
-// Why the lists cannot be built over these views ("" when they can). Each view needs a grid its
-// matrix alone places points in: orthographic, or perspective from a light with a position (a
-// spot, a point light's faces). A warped view under a sun (PSM, LiSPSM, TSM) would bin correctly
-// too, but its matrix can put receivers behind its centre of projection; the log warp and the
-// paraboloid are not matrices.
-std::string unlistableViews(const LightSpace& ls, bool positionalLight) {
-  for (const LightView& v : ls.views)
-    if (v.projection != LightView::Projection::Matrix || (v.perspective && !positionalLight))
-      return "irregular z-buffer needs light views a matrix places points in (orthographic, or perspective from "
-             "a spot or point light); this layout gives " +
-             std::to_string(ls.views.size()) +
-             (v.projection == LightView::Projection::Paraboloid ? " paraboloid"
-              : v.perspective                                   ? " warped"
-                                                                : " log-warped") +
-             " view(s): every pixel uses the shadow-map test";
+// Why the lists cannot be built over these views ("" when they can), and each view's grid
+// matrix. Each view needs a grid its matrix alone places points in and that sends each sample's
+// ray to the light onto the cell of its start: perspective from a light with a position (a spot,
+// a point light's faces), or under a sun a view sunGridMatrix accepts (orthographic, LiSPSM,
+// TSM). The log warp and the paraboloid are not matrices.
+std::string listableViews(const LightSpace& ls, const Light& light, std::vector<glm::mat4>& grids) {
+  grids.clear();
+  for (const LightView& v : ls.views) {
+    glm::mat4 grid = v.viewProj;
+    const bool matrix = v.projection == LightView::Projection::Matrix;
+    if (matrix && (light.positional() || sunGridMatrix(v.viewProj, -light.direction, grid))) {
+      grids.push_back(grid);
+      continue;
+    }
+    return "irregular z-buffer needs light views a matrix places points in (orthographic, a warp across the "
+           "light, or perspective from a spot or point light); this layout gives " +
+           std::to_string(ls.views.size()) +
+           (v.projection == LightView::Projection::Paraboloid ? " paraboloid"
+            : v.perspective                                   ? " warped"
+                                                              : " log-warped") +
+           " view(s): every pixel uses the shadow-map test";
+  }
   return "";
 }
 
@@ -96,10 +123,10 @@ std::string unlistableViews(const LightSpace& ls, bool positionalLight) {
 
 std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   const LightSpace& ls = *ctx.lightSpace;
-  error_ = unlistableViews(ls, ctx.shadowedLight().positional());  // a point light's one view is a spot's
+  error_ = listableViews(ls, ctx.shadowedLight(), gridViewProjs_);  // a point light's one view is a spot's
   ensureBuffers(ctx.width, ctx.height, gridParam_);
   views_ = static_cast<int>(ls.views.size());
-  gridViewProj_ = ls.primary().viewProj;
+  gridViewProj_ = gridViewProjs_.empty() ? ls.primary().viewProj : gridViewProjs_.front();
   scene_.update(*ctx.scene, ctx.time);
   const std::string lists = "izb.lists" + ctx.viewportTag, out = "izb" + ctx.viewportTag;
   graph.add({lists, {"gbuffer"}, {lists}, [this, ctx] { runLists(ctx); }});
@@ -165,12 +192,13 @@ void IzbState::runLists(const PartContext& ctx) {
 // Count, prefix sum and scatter: the samples of each light-space cell of `view`, contiguous in
 // one buffer.
 void IzbState::listView(const PartContext& ctx, int view) {
-  gridViewProj_ = ctx.lightSpace->views[size_t(view)].viewProj;
+  gridViewProj_ = gridViewProjs_[size_t(view)];
   const long long cells = static_cast<long long>(grid_) * grid_;
   clearBuffer(counts_);
   // The large-triangle queue is per view: its rows are cells of this view's grid.
+  // So are the listed samples' w range (counters 3 and 4).
   const uint32_t zero = 0;
-  glClearNamedBufferSubData(counters_, GL_R32UI, 8, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(counters_, GL_R32UI, 8, 12, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   ProgramSpec count{"izb count", {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}}, ""};
   Program& pc = ctx.shaders->get(count);
   if (!pc.valid()) return;
@@ -220,6 +248,7 @@ void IzbState::runTriangles(const PartContext& ctx) {
       setCommon(p, ctx);
       p.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
       p.set("u_izbQueueCapacity", static_cast<int>(kQueueCapacity));
+      p.set("u_izbRaysKeepW", ctx.shadowedLight().positional() ? 0 : 1);
       if (step == 1) glDispatchCompute(groups(scene_.triangleCount, 64), 1, 1);
       if (step == 2) glDispatchCompute(1, 1, 1);
       if (step == 3) {

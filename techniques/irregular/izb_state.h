@@ -26,6 +26,13 @@ struct IzbSceneBuffers {
   size_t signature_ = 0;
 };
 
+// Under a sun (toLight: the direction to it), the matrix of a view's grid: the view's own with
+// the direction's clip image moved to depth alone, so that a sample's whole ray to the sun
+// projects onto its own cell, where its occluders are tested. False when the view's matrix is
+// not already so up to rounding (a relative 1e-3): a warp along the light (a camera-space PSM in
+// general), whose grid would be another one than the view shows.
+bool sunGridMatrix(const glm::mat4& viewProj, const glm::vec3& toLight, glm::mat4& grid);
+
 class IzbState : public DepthMapState {
  public:
   IzbState();
@@ -52,7 +59,8 @@ class IzbState : public DepthMapState {
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], samples[pixels],
   // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters (overflowed,
-  // listed, queued chunks), the queue of large triangles' chunks and its indirect dispatch
+  // listed, queued chunks, the listed samples' clip w range), the queue of large triangles'
+  // chunks and its indirect dispatch
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
          counters_ = 0, queue_ = 0, dispatch_ = 0;
   int width_ = 0, height_ = 0, grid_ = 0;
@@ -61,7 +69,8 @@ class IzbState : public DepthMapState {
   int gridParam_ = 512;
   double capacityPct_ = 100.0;
   std::string error_;  // why the lists are not built (views no matrix places points in), shown as status
-  glm::mat4 gridViewProj_{1.0f};
+  std::vector<glm::mat4> gridViewProjs_;  // each view's grid (listableViews)
+  glm::mat4 gridViewProj_{1.0f};          // the grid of the view being listed and tested
 };
 
 }  // namespace sl
