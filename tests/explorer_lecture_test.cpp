@@ -291,6 +291,25 @@ TEST(ExplorerColourKeys, EveryHeatMapViewHasAKeyThatSaysWhatBlackMeans) {
 
 // The aliasing key and the shader must agree: the key's ends are 2^range px/texel and the
 // shader divides log2 by the same range, with the same five colours.
+// A thumbnail's key prints its last label with the unit: never the unit twice ("64+ samples
+// samples" under izb-lists, "32 texels (pcss.max_radius) texels" under penumbra before
+// labelWithUnit).
+TEST(ExplorerColourKeys, EndLabelsNameTheirUnitOnce) {
+  EXPECT_EQ(labelWithUnit("64+ samples", "samples"), "64+ samples");
+  EXPECT_EQ(labelWithUnit("64", "samples"), "64 samples");
+  EXPECT_EQ(labelWithUnit("1", ""), "1");
+  EXPECT_EQ(labelWithUnit("8 nodes (deep.nodes)", "nodes"), "8 nodes (deep.nodes)");
+  for (const std::string& view : viewsWithColourKeys()) {
+    const ColourKey* key = viewColourKey(view);
+    ASSERT_NE(key, nullptr) << view;
+    if (key->stops.empty() || key->unit.empty()) continue;
+    const std::string& label = key->stops.back().label;
+    const std::string end = labelWithUnit(label, key->unit);
+    EXPECT_NE(end.find(key->unit), std::string::npos) << view << ": " << end;
+    if (label.find(key->unit) != std::string::npos) EXPECT_EQ(end, label) << view;
+  }
+}
+
 TEST(ExplorerColourKeys, AliasingKeyMatchesTheShader) {
   const ColourKey& key = *viewColourKey("aliasing");
   ASSERT_EQ(key.stops.size(), 5u);

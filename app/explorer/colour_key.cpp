@@ -112,7 +112,7 @@ void drawCompactColourKey(ImDrawList* draw, const ColourKey& key, ImVec2 imageMi
   gradientBar(draw, key, barMin, barMax);
   // End labels, with the unit when there is room (a thumbnail can be narrow).
   const std::string& lo = key.stops.front().label;
-  std::string hi = key.stops.back().label + (key.unit.empty() ? "" : " " + key.unit);
+  std::string hi = labelWithUnit(key.stops.back().label, key.unit);
   const float room = barMax.x - barMin.x;
   if (ImGui::CalcTextSize((lo + "  " + hi).c_str()).x > room) hi = key.stops.back().label;
   if (ImGui::CalcTextSize((lo + "  " + hi).c_str()).x <= room) {

@@ -4,6 +4,11 @@
 
 namespace sl {
 
+std::string labelWithUnit(const std::string& label, const std::string& unit) {
+  if (unit.empty() || label.find(unit) != std::string::npos) return label;
+  return label + " " + unit;
+}
+
 glm::vec3 sampleColourKey(const ColourKey& key, float t) {
   if (key.stops.empty()) return glm::vec3(0.0f);
   t = std::clamp(t, 0.0f, 1.0f);

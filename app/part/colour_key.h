@@ -35,6 +35,11 @@ struct ColourKey {
 // The background of views drawn over the G-buffer where no geometry is.
 inline const SpecialColour kBlackNoGeometry{{0.0f, 0.0f, 0.0f}, "black: no geometry (sky)"};
 
+// A stop's label with the key's unit after it, unless the label already names it ("64+ samples"
+// and "32 texels (pcss.max_radius)" stay so, "64" becomes "64 samples"): what a thumbnail's key
+// prints at its end.
+std::string labelWithUnit(const std::string& label, const std::string& unit);
+
 // Colour of the gradient at t in [0, 1] (linear between stops; clamped).
 glm::vec3 sampleColourKey(const ColourKey& key, float t);
 
