@@ -34,9 +34,9 @@ GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1)
 
 // p + t d projects where p does for every t when M d has no x, y or w. The light view is
 // orthographic along the light and a light-space warp (LiSPSM, TSM) has its perspective axis
-// across it: both are so but for the rounding of their matrices' products (a relative 1e-6 at
-// most in the layouts' views; izb_views_test.cpp), which the grid removes: M - (M d without its
-// z) d^T / |d|^2 sends d to depth alone, and moves a point by that rounding only.
+// across it: both are so but for the rounding of their matrices' products (up to a relative
+// 1.4e-6 in the layouts' views; izb_views_test.cpp), which the grid removes: M - (M d without
+// its z) d^T / |d|^2 sends d to depth alone, and moves a point by that rounding only.
 bool sunGridMatrix(const glm::mat4& viewProj, const glm::vec3& toLight, glm::mat4& grid) {
   const glm::dmat4 m(viewProj);
   const glm::dvec3 d(toLight);
