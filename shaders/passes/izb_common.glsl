@@ -41,12 +41,15 @@ uniform mat4 u_izbViewProj; // the layout's light view: where cells are
 
 const uint kNoCell = 0xffffffffu;
 
+// Grid coordinates (cells, fractional) of a clip-space point in front of the view (w > 0).
+vec2 izbGridOf(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * float(u_izbGrid); }
+
 // Grid coordinates (cells, fractional) of a world point; false behind a perspective light.
 bool izbGridPos(vec3 p, out vec2 g) {
   vec4 c = u_izbViewProj * vec4(p, 1.0);
   g = vec2(0.0);
   if (!(c.w > 1e-6)) return false;
-  g = (c.xy / c.w * 0.5 + 0.5) * float(u_izbGrid);
+  g = izbGridOf(c);
   return !any(isnan(g));
 }
 

@@ -67,11 +67,8 @@ struct Caster {
   vec3 edge[3];    // inward edge lines in grid units: dot(xy, 1) >= -margin inside
 };
 
-// Grid coordinates of a clip-space point in front of the view (w > 0).
-vec2 gridOf(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * float(u_izbGrid); }
-
 void growBounds(vec4 clip, inout vec2 lo, inout vec2 hi) {
-  vec2 g = gridOf(clip);
+  vec2 g = izbGridOf(clip);
   lo = min(lo, g);
   hi = max(hi, g);
 }
@@ -95,7 +92,7 @@ void clippedBounds(inout Caster c, vec4 v[3], float lo, float hi) {
 
 // The bounds and the three inward edge lines of a triangle wholly in front of the view.
 void spanEdges(inout Caster c, vec4 v[3]) {
-  vec2 g[3] = vec2[3](gridOf(v[0]), gridOf(v[1]), gridOf(v[2]));
+  vec2 g[3] = vec2[3](izbGridOf(v[0]), izbGridOf(v[1]), izbGridOf(v[2]));
   if (any(isnan(vec3(g[0].x + g[0].y, g[1].x + g[1].y, g[2].x + g[2].y)))) return;  // whole grid
   c.lo = izbCell(min(g[0], min(g[1], g[2])) - 0.01);
   c.hi = izbCell(max(g[0], max(g[1], g[2])) + 0.01);
