@@ -44,10 +44,12 @@ const uint kNoCell = 0xffffffffu;
 // Grid coordinates (cells, fractional) of a clip-space point in front of the view (w > 0).
 vec2 izbGridOf(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * float(u_izbGrid); }
 
-// Grid coordinates (cells, fractional) of a world point; false behind a perspective light.
-bool izbGridPos(vec3 p, out vec2 g) {
+// Grid coordinates (cells, fractional) of a world point and its clip w; false behind a
+// perspective light.
+bool izbGridPos(vec3 p, out vec2 g, out float w) {
   vec4 c = u_izbViewProj * vec4(p, 1.0);
   g = vec2(0.0);
+  w = c.w;
   if (!(c.w > 1e-6)) return false;
   g = izbGridOf(c);
   return !any(isnan(g));

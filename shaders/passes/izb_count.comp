@@ -94,7 +94,8 @@ float listSample() {
   }
   samples[pixel] = Sample(vec4(vec3(origin), float(tnear)), vec4(toLight, tfar), own, 0u, 0u, 0u);
   vec2 g;
-  bool onGrid = izbGridPos(P.xyz, g);
+  float w;
+  bool onGrid = izbGridPos(P.xyz, g, w);
   if (u_izbViews > 1) {
     // Outside this view's window: another view lists it, or none and it keeps its fallback bit.
     if (!onGrid || any(lessThan(g, vec2(0.0))) || any(greaterThanEqual(g, vec2(float(u_izbGrid))))) return 0.0;
@@ -108,7 +109,7 @@ float listSample() {
   uint index = uint(cell.y * u_izbGrid + cell.x);
   pixelCell[pixel] = index;
   atomicAdd(counts[index], 1u);
-  return (u_izbViewProj * vec4(P.xyz, 1.0)).w;  // > 0: izbGridPos held
+  return w;  // > 0: izbGridPos held
 }
 
 // The group's listed samples and their w range, added to the frame's counters once per group:
