@@ -13,4 +13,28 @@ float logWarp(float t, float delta) {
   return logWarpLog1p(max(t / delta, -0.999)) / logWarpLog1p(1.0 / delta);
 }
 
+// The inverse: the t whose warp is u (u = 0 at the map's near side, 1 at its far side).
+float logWarpInverse(float u, float delta) {
+  if (!(delta > 0.0)) return u;
+  float x = u * logWarpLog1p(1.0 / delta);
+  return delta * (abs(x) < 1e-3 ? x * (1.0 + x * (0.5 + x / 6.0)) : exp(x) - 1.0);  // δ (e^x - 1)
+}
+
 #include "layouts/single_matrix.glsl"
+
+// A fragment's light ray in the view the shadow pass draws: the points p with rowX.(p, 1) = 0
+// and rowY.(p, 1) = 0 land on its map position ndc (x' = X / W; y through the log warp's t,
+// which W does not divide; δ <= 0, a spot's fallback: y' = Y / W). Their cross product is the
+// ray's direction. Used by the exact caster fragments (passes/warp_caster.glsl).
+void warpRayRows(vec2 ndc, out vec4 rowX, out vec4 rowY) {
+  mat4 m = lightViewProjMatrix[u_shadowView];
+  vec4 r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+  vec4 r3 = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+  rowX = r0 - ndc.x * r3;
+  float delta = lightViewSplit[u_shadowView].w;
+  rowY = delta > 0.0 ? r1 - vec4(0.0, 0.0, 0.0, 2.0 * logWarpInverse(ndc.y * 0.5 + 0.5, delta) - 1.0)
+                     : r1 - ndc.y * r3;
+}
+
+// Below this |cos| between a caster's plane normal and its rays the cut is ill-conditioned.
+const float kWarpEdgeOnCos = 0.05;

@@ -13,8 +13,13 @@ layout(std430) buffer DeepOverflow { uint deepOverflow[3]; };  // dropped, relax
 in vec3 v_world;
 in vec2 v_uv;
 
+#include "passes/caster_fragment.glsl"
+
 void main() {
-  float alpha = clamp(materialColor(v_uv).a, 0.0, 1.0);
+  CasterFragment caster = casterFragment(v_world, v_uv);
+  if (!caster.covered) return;
+  vec2 uv = caster.uv;
+  float alpha = clamp(materialColor(uv).a, 0.0, 1.0);
   if (!(alpha > 0.0)) return;  // fully clear (or NaN): no attenuation
 #ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
   if (layoutCullsCasterFragment(v_world)) return;  // e.g. behind a paraboloid's hemisphere
@@ -25,7 +30,7 @@ void main() {
   uint index = uint((u_shadowView * size + texel.y) * size + texel.x);
   uint slot = atomicAdd(deepCount[index], 1u);
   if (slot < uint(SL_DEEP_FRAGMENTS))
-    deepFragment[index * uint(SL_DEEP_FRAGMENTS) + slot] = vec2(clamp(layoutDepth(v_world), 0.0, 1.0), float(gl_SampleID) + alpha);
+    deepFragment[index * uint(SL_DEEP_FRAGMENTS) + slot] = vec2(clamp(caster.depth, 0.0, 1.0), float(gl_SampleID) + alpha);
   else
     atomicAdd(deepOverflow[0], 1u);
 }

@@ -2,11 +2,12 @@
 in vec3 v_world;
 in vec2 v_uv;
 
+#include "passes/caster_fragment.glsl"
+
 void main() {
-  materialAlphaTest(v_uv);
-#ifdef SL_LOG_WARP
-  if (layoutBehindPole(v_world)) discard;
-#endif
+  CasterFragment caster = casterFragment(v_world, v_uv);
+  if (!caster.covered) discard;
+  materialAlphaTest(caster.uv);
 #ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
   if (layoutCullsCasterFragment(v_world)) discard;  // e.g. behind a paraboloid's hemisphere
 #endif
@@ -14,6 +15,6 @@ void main() {
   // Perspective maps store light-view linear depth like orthographic ones do, so biases mean
   // the same everywhere. (Orthographic depth is already linear: no per-fragment write, which
   // keeps the shadow pass cheap on a software rasterizer.)
-  gl_FragDepth = clamp(layoutDepth(v_world), 0.0, 1.0);
+  gl_FragDepth = clamp(caster.depth, 0.0, 1.0);
 #endif
 }

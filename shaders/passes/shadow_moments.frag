@@ -28,16 +28,17 @@ layout(location = 6) out vec4 o_moments6;
 layout(location = 7) out vec4 o_moments7;
 #endif
 
+#include "passes/caster_fragment.glsl"
+
 void main() {
-  materialAlphaTest(v_uv);
-#ifdef SL_LOG_WARP
-  if (layoutBehindPole(v_world)) discard;
-#endif
+  CasterFragment caster = casterFragment(v_world, v_uv);
+  if (!caster.covered) discard;
+  materialAlphaTest(caster.uv);
 #ifdef SL_LAYOUT_CULLS_CASTER_FRAGMENTS
   if (layoutCullsCasterFragment(v_world)) discard;  // e.g. behind a paraboloid's hemisphere
 #endif
 #ifdef SL_PERSPECTIVE_MAP
-  float z = layoutDepth(v_world);
+  float z = caster.depth;
   gl_FragDepth = clamp(z, 0.0, 1.0);
 #else
   float z = gl_FragCoord.z;

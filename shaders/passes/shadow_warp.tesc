@@ -6,7 +6,10 @@
 // and X linear in the edge parameter s, x'' = -2 dW (dX W - X dW) / W^3, whose numerator is the
 // same all along the edge, so |x''| is largest at the smaller W, and n pieces err by that / (8 n^2).
 // In front of the pole x' is monotonic along an edge (its derivative is (dX W - X dW) / W^2): an
-// edge with both ends beyond one side of the map stays off it and needs no pieces for x.
+// edge with both ends beyond one side of the map stays off it and needs no pieces for x. Nor
+// does one with both ends before or beyond the map in t: the warp keeps t's order, so its chords
+// stay off the map as well. A patch wholly beyond one side is not drawn at all (outer levels 0):
+// on a software tessellator (llvmpipe) every patch drawn costs, whatever its levels.
 layout(vertices = 3) out;
 in vec3 v_world[];
 in vec2 v_uv[];
@@ -14,21 +17,78 @@ out vec3 tc_world[];
 out vec2 tc_uv[];
 uniform float u_logpsm_max_error;
 uniform float u_logpsm_tessellate;  // 0: no subdivision (what a plain rasterizer would draw)
+// Per patch, for exact caster fragments (passes/warp_caster.glsl): the barycentric weights as a
+// function of the view's clip X and Y (both affine over the triangle's plane), the corners'
+// depths, the least weights a kept fragment may have, and W's dependence on Y with the log's C.
+patch out float tc_exactCaster;
+patch out vec3 tc_weightRows[3];
+patch out vec3 tc_cornerDepth;
+patch out vec3 tc_leastWeights;
+patch out vec4 tc_warpTerms;
 
 vec4 patchClip(int i) { return lightViewProjMatrix[u_shadowView] * vec4(v_world[i], 1.0); }
 
-float edgeLevel(vec4 a, vec4 b, float delta, float c) {
-  float ta = a.y * 0.5 + 0.5, tb = b.y * 0.5 + 0.5;  // y is linear before the warp (layouts/logpsm.glsl)
-  float lo = clamp(min(ta, tb), 0.0, 1.0), hi = clamp(max(ta, tb), 0.0, 1.0);
-  if (!(delta > 0.0) || hi <= lo || u_logpsm_tessellate < 0.5) return 1.0;  // straight: no warp, off the map
-  float errorU = u_logpsm_max_error / u_shadowMapSize;
-  float pieces = (hi - lo) / ((delta + lo) * sqrt(8.0 * c * errorU));
-  float dW = b.w - a.w, wMin = max(min(a.w, b.w), 1e-3);
+// Pieces for the edge a-b so that those which reach the map, t >= tLow along it, err within the
+// budget: along t (u'' in the edge parameter is (t_b - t_a)² u''(t)) and across (x'' above, W
+// affine in t with the perspective part, constant without).
+float piecesFrom(vec4 a, vec4 b, float tLow, float delta, float c) {
+  float ta = a.y * 0.5 + 0.5, tb = b.y * 0.5 + 0.5, dW = b.w - a.w;
+  float pieces = abs(tb - ta) / ((delta + tLow) * sqrt(8.0 * c * u_logpsm_max_error / u_shadowMapSize));
   float xa = a.x / max(a.w, 1e-3), xb = b.x / max(b.w, 1e-3);
   bool offSide = a.w > 0.0 && b.w > 0.0 && ((xa > 1.0 && xb > 1.0) || (xa < -1.0 && xb < -1.0));
-  float curveX = offSide ? 0.0 : 2.0 * abs(dW) * abs((b.x - a.x) * a.w - a.x * dW) / (wMin * wMin * wMin);
-  pieces = max(pieces, sqrt(curveX * u_shadowMapSize / (16.0 * u_logpsm_max_error)));  // 0 when W = 1
-  return clamp(ceil(pieces), 1.0, 64.0);
+  if (offSide || dW == 0.0) return pieces;
+  float wLow = tb == ta ? min(a.w, b.w) : a.w + (tLow - ta) / (tb - ta) * dW;
+  wLow = max(wLow, 1e-3);
+  float curveX = 2.0 * abs(dW) * abs((b.x - a.x) * a.w - a.x * dW) / (wLow * wLow * wLow);
+  return max(pieces, sqrt(curveX * u_shadowMapSize / (16.0 * u_logpsm_max_error)));
+}
+
+// The pieces are equal over the whole edge, and only those that reach the map need to follow the
+// curve: the one that crosses the map's near side (t = 0, where the warp bends most) starts up to
+// one piece before it. A first count from the map's part alone says how far that is; the count
+// for pieces from there is at least as large, so its pieces are no longer and start no earlier.
+float edgeLevel(vec4 a, vec4 b, float delta, float c) {
+  float ta = a.y * 0.5 + 0.5, tb = b.y * 0.5 + 0.5;  // y is linear before the warp (layouts/logpsm.glsl)
+  bool offMapT = max(ta, tb) < 0.0 || min(ta, tb) > 1.0;
+  if (!(delta > 0.0) || offMapT || u_logpsm_tessellate < 0.5) return 1.0;  // straight: no warp, off the map
+  float lo = clamp(min(ta, tb), 0.0, 1.0);
+  float first = max(piecesFrom(a, b, lo, delta, c), 1.0);
+  float tLow = max(max(lo - abs(tb - ta) / first, min(ta, tb)), -0.999 * delta);
+  return clamp(ceil(piecesFrom(a, b, tLow, delta, c)), 1.0, 64.0);
+}
+
+// All three corners beyond one side of the map: in t (linear along y before the warp, which keeps
+// its order) or in x' = X/W where W > 0 at every corner (X > W is then a half-space in front of
+// the pole, and the triangle lies in it).
+bool patchOffMap(vec4 a, vec4 b, vec4 c) {
+  vec3 t = vec3(a.y, b.y, c.y) * 0.5 + 0.5;
+  if (max(t.x, max(t.y, t.z)) < 0.0 || min(t.x, min(t.y, t.z)) > 1.0) return true;
+  if (min(a.w, min(b.w, c.w)) <= 0.0) return false;
+  vec3 x = vec3(a.x, b.x, c.x) / vec3(a.w, b.w, c.w);
+  return max(x.x, max(x.y, x.z)) < -1.0 || min(x.x, min(x.y, x.z)) > 1.0;
+}
+
+// slack: how far (world) outside the triangle a fragment may lie and still be kept.
+void casterConstants(vec3 n, float slack, float delta, float c) {
+  mat4 m = lightViewProjMatrix[u_shadowView];
+  vec4 r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+  vec4 r3 = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+  mat3 corners;  // columns (X, Y, 1) of each corner: (X, Y, 1) = corners * weights
+  for (int i = 0; i < 3; ++i) {
+    vec4 q = vec4(v_world[i], 1.0);
+    corners[i] = vec3(dot(r0, q), dot(r1, q), 1.0);
+    tc_cornerDepth[i] = layoutDepth(v_world[i]);
+    float edge = length(v_world[(i + 2) % 3] - v_world[(i + 1) % 3]);
+    tc_leastWeights[i] = -max(slack * edge / length(n), 1e-5);  // weight i times corner i's height
+  }
+  mat3 weights = inverse(corners);
+  tc_weightRows[0] = vec3(weights[0][0], weights[1][0], weights[2][0]);
+  tc_weightRows[1] = vec3(weights[0][1], weights[1][1], weights[2][1]);
+  tc_weightRows[2] = vec3(weights[0][2], weights[1][2], weights[2][2]);
+  // W depends on the light view's y alone (layouts/logpsm.glsl): W = a Y + b (0 and 1 without
+  // the perspective part).
+  float a = dot(r3.xyz, r1.xyz) / dot(r1.xyz, r1.xyz);
+  tc_warpTerms = vec4(a, r3.w - a * r1.w, c, delta);
 }
 
 void main() {
@@ -38,10 +98,30 @@ void main() {
     float delta = lightViewSplit[u_shadowView].w;
     float c = delta > 0.0 ? logWarpLog1p(1.0 / delta) : 1.0;
     vec4 c0 = patchClip(0), c1 = patchClip(1), c2 = patchClip(2);
+    if (patchOffMap(c0, c1, c2)) {
+      gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = 0.0;
+      gl_TessLevelInner[0] = 0.0;
+      return;
+    }
     // Outer level i is the edge opposite vertex i.
     gl_TessLevelOuter[0] = edgeLevel(c1, c2, delta, c);
     gl_TessLevelOuter[1] = edgeLevel(c2, c0, delta, c);
     gl_TessLevelOuter[2] = edgeLevel(c0, c1, delta, c);
-    gl_TessLevelInner[0] = max(gl_TessLevelOuter[0], max(gl_TessLevelOuter[1], gl_TessLevelOuter[2]));
+    // A patch with a fine edge would get as fine an interior: pieces squared (64 pieces: about
+    // 6000 triangles). Its fragments instead take depth and coverage from the triangle itself
+    // (passes/warp_caster.glsl), which needs no interior pieces, only a small solve per fragment.
+    // A caster seen nearly edge on keeps the fine interior and interpolated values (twice the
+    // solve's threshold: the ray's angle varies across a spot's map).
+    float finest = max(gl_TessLevelOuter[0], max(gl_TessLevelOuter[1], gl_TessLevelOuter[2]));
+    vec3 n = cross(v_world[1] - v_world[0], v_world[2] - v_world[0]);
+    vec3 middle = (v_world[0] + v_world[1] + v_world[2]) / 3.0;
+    vec4 centre = layoutClip(middle), rowX, rowY;
+    warpRayRows(centre.xy / centre.w, rowX, rowY);
+    vec3 ray = cross(rowX.xyz, rowY.xyz);
+    bool edgeOn = !(abs(dot(n, ray)) > 2.0 * kWarpEdgeOnCos * length(n) * length(ray));
+    bool exact = finest > 1.0 && !edgeOn;
+    tc_exactCaster = exact ? 1.0 : 0.0;
+    if (exact) casterConstants(n, (u_logpsm_max_error + 1.0) * layoutTexelWorldSize(middle, u_shadowView), delta, c);
+    gl_TessLevelInner[0] = exact ? 1.0 : finest;
   }
 }

@@ -1,0 +1,41 @@
+// A warped map's caster fragment (LogPSM: passes/shadow_warp.tesc/.tese), solved exactly. The
+// tessellated chords only approximate the bent image of a caster triangle, and a world position
+// interpolated over them is off wherever the chords are. Instead the fragment's light ray (the
+// points that land on its map position, from the map coordinates the rasterizer interpolated
+// linearly) is cut with the triangle's plane: that point's depth is the caster's true depth
+// there, and the fragment belongs to the caster only where the point lies inside the triangle.
+// So no chord and no coarse interior mesh draws depth or coverage that is not the caster's: the
+// control stage needs fine pieces on the edges only (the mesh's union covers the polygon of its
+// edge chords whatever its interior does, and what it draws beyond is rejected here).
+// Beyond the paper: Lloyd et al. (2008) propose rasterizing the warped edges in hardware.
+flat in float v_exactCaster;  // 1: the patch's interior is coarse (shadow_warp.tesc)
+flat in vec3 v_weightRow0;    // barycentric weight i = dot(v_weightRow_i, (X, Y, 1))
+flat in vec3 v_weightRow1;
+flat in vec3 v_weightRow2;
+flat in vec3 v_cornerDepth;
+flat in vec3 v_leastWeights;  // a fragment is the caster's while every weight is at least this
+flat in vec4 v_warpTerms;     // W = x Y + y; the log's C and δ
+flat in vec2 v_cornerUv0;
+flat in vec2 v_cornerUv1;
+flat in vec2 v_cornerUv2;
+noperspective in vec2 v_mapNdc;  // the fragment's position in the view's normalized coordinates
+
+CasterFragment warpCasterFragment(vec3 interpolatedWorld, vec2 interpolatedUv) {
+  if (v_exactCaster < 0.5)
+    return CasterFragment(layoutDepth(interpolatedWorld), interpolatedUv, !layoutBehindPole(interpolatedWorld));
+  // The clip coordinates the fragment's map position comes from: t through the log's inverse,
+  // Y = 2t - 1 undivided, X = x' W. Over the triangle's plane the weights are affine in X and Y
+  // (a patch seen edge on keeps the interpolated path: shadow_warp.tesc).
+  float x = v_mapNdc.y * 0.5 + 0.5, delta = v_warpTerms.w;
+  float cu = x * v_warpTerms.z;
+  float t = delta * (abs(cu) < 1e-3 ? cu * (1.0 + cu * (0.5 + cu / 6.0)) : exp(cu) - 1.0);  // logWarpInverse
+  float y = 2.0 * t - 1.0, w = v_warpTerms.x * y + v_warpTerms.y;
+  vec3 clip = vec3(v_mapNdc.x * w, y, 1.0);
+  vec3 weights = vec3(dot(v_weightRow0, clip), dot(v_weightRow1, clip), dot(v_weightRow2, clip));
+  // Beside a bent edge the chords of the neighbouring triangle cover what this one's leave out,
+  // up to the chords' error: those fragments stay (the plane continues across a smooth surface).
+  // What a coarse interior folds farther out does not. NaN fails every comparison: not covered.
+  bool inside = all(greaterThanEqual(weights, v_leastWeights)) && w >= 1e-3;
+  vec2 uv = weights.x * v_cornerUv0 + weights.y * v_cornerUv1 + weights.z * v_cornerUv2;
+  return CasterFragment(dot(weights, v_cornerDepth), uv, inside);
+}
