@@ -1,6 +1,7 @@
 // JSON and CSV output of `shadowlab bench`; see bench.h and docs/benchmarks.md.
 #include "bench/bench.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -82,6 +83,9 @@ nlohmann::json benchToJson(const BenchResult& r) {
   j["provenance"] = {{"commit", r.commit.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.commit)},
                      {"dirty", r.dirty},
                      {"build_type", r.buildType}};
+  // Shaders are read at run time: a run with another folder's shaders says so (an A/B of shader
+  // versions under one build has the same commit on both sides).
+  if (const char* shaders = std::getenv("SHADOWLAB_SHADERS")) j["provenance"]["shaders"] = shaders;
   j["warmup"] = r.options.warmup;
   // Entries are rendered in turn at each frame index; ms_ratio is relative to the first entry.
   j["timing_order"] = "interleaved";
