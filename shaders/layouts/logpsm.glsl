@@ -25,7 +25,7 @@ float logWarpInverse(float u, float delta) {
 // A fragment's light ray in the view the shadow pass draws: the points p with rowX.(p, 1) = 0
 // and rowY.(p, 1) = 0 land on its map position ndc (x' = X / W; y through the log warp's t,
 // which W does not divide; δ <= 0, a spot's fallback: y' = Y / W). Their cross product is the
-// ray's direction. Used by the exact caster fragments (passes/warp_caster.glsl).
+// ray's direction. Used to tell casters seen edge on (passes/shadow_warp.tesc).
 void warpRayRows(vec2 ndc, out vec4 rowX, out vec4 rowY) {
   mat4 m = lightViewProjMatrix[u_shadowView];
   vec4 r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
@@ -36,5 +36,6 @@ void warpRayRows(vec2 ndc, out vec4 rowX, out vec4 rowY) {
                      : r1 - ndc.y * r3;
 }
 
-// Below this |cos| between a caster's plane normal and its rays the cut is ill-conditioned.
-const float kWarpEdgeOnCos = 0.05;
+// Below this |cos| between a caster's plane normal and its rays the triangle is nearly edge on
+// to the light, and its barycentric weights as functions of clip X and Y ill-conditioned.
+const float kWarpEdgeOnCos = 0.1;

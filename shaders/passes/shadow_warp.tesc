@@ -110,15 +110,14 @@ void main() {
     // A patch with a fine edge would get as fine an interior: pieces squared (64 pieces: about
     // 6000 triangles). Its fragments instead take depth and coverage from the triangle itself
     // (passes/warp_caster.glsl), which needs no interior pieces, only a small solve per fragment.
-    // A caster seen nearly edge on keeps the fine interior and interpolated values (twice the
-    // solve's threshold: the ray's angle varies across a spot's map).
+    // A caster seen nearly edge on keeps the fine interior and interpolated values.
     float finest = max(gl_TessLevelOuter[0], max(gl_TessLevelOuter[1], gl_TessLevelOuter[2]));
     vec3 n = cross(v_world[1] - v_world[0], v_world[2] - v_world[0]);
     vec3 middle = (v_world[0] + v_world[1] + v_world[2]) / 3.0;
     vec4 centre = layoutClip(middle), rowX, rowY;
     warpRayRows(centre.xy / centre.w, rowX, rowY);
     vec3 ray = cross(rowX.xyz, rowY.xyz);
-    bool edgeOn = !(abs(dot(n, ray)) > 2.0 * kWarpEdgeOnCos * length(n) * length(ray));
+    bool edgeOn = !(abs(dot(n, ray)) > kWarpEdgeOnCos * length(n) * length(ray));
     bool exact = finest > 1.0 && !edgeOn;
     tc_exactCaster = exact ? 1.0 : 0.0;
     if (exact) casterConstants(n, (u_logpsm_max_error + 1.0) * layoutTexelWorldSize(middle, u_shadowView), delta, c);

@@ -1,12 +1,13 @@
 // A warped map's caster fragment (LogPSM: passes/shadow_warp.tesc/.tese), solved exactly. The
-// tessellated chords only approximate the bent image of a caster triangle, and a world position
-// interpolated over them is off wherever the chords are. Instead the fragment's light ray (the
-// points that land on its map position, from the map coordinates the rasterizer interpolated
-// linearly) is cut with the triangle's plane: that point's depth is the caster's true depth
-// there, and the fragment belongs to the caster only where the point lies inside the triangle.
-// So no chord and no coarse interior mesh draws depth or coverage that is not the caster's: the
-// control stage needs fine pieces on the edges only (the mesh's union covers the polygon of its
-// edge chords whatever its interior does, and what it draws beyond is rejected here).
+// tessellated chords only approximate the bent image of a caster triangle, and values
+// interpolated over them are off wherever the chords are. Instead the fragment's map position
+// (interpolated linearly, which is exact) is taken back through the warp to the view's clip X
+// and Y, and over the triangle's plane the barycentric weights are affine in those: they give
+// the caster's true depth and texture coordinate there, and whether the fragment lies on the
+// triangle at all. So no chord and no coarse interior mesh draws depth or coverage that is not
+// the caster's: the control stage needs fine pieces on the edges only (the mesh's union covers
+// the polygon of its edge chords whatever its interior does, and what it draws beyond is
+// rejected here).
 // Beyond the paper: Lloyd et al. (2008) propose rasterizing the warped edges in hardware.
 flat in float v_exactCaster;  // 1: the patch's interior is coarse (shadow_warp.tesc)
 flat in vec3 v_weightRow0;    // barycentric weight i = dot(v_weightRow_i, (X, Y, 1))
