@@ -52,7 +52,10 @@ bool virtualNearDepthDiscontinuity(vec2 uv) {
   return !(bend <= u_virtual_depth_step);  // NaN from an undefined texel counts as a discontinuity
 }
 
-// Whether last frame's visibility changes within two pixels (a shadow edge passes here).
+// Whether last frame's visibility changes within two pixels (a shadow edge passes here): some
+// value of the 5x5 window around the pixel differs from the centre by more than 0.25, or lies
+// strictly between 0.02 and 0.98. The marking pass reads the same from a shared tile
+// (passes/virtual_mark.comp); this is the views' per-pixel form.
 bool virtualNearShadowEdge(ivec2 pixel) {
   if (u_hasPreviousVisibility == 0) return true;
   ivec2 size = textureSize(u_previousVisibility, 0);
@@ -66,7 +69,9 @@ bool virtualNearShadowEdge(ivec2 pixel) {
 }
 
 // -1 when the pixel is not covered or falls off the map; uv: where it falls in the virtual map.
-int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
+// nearShadowEdge: virtualNearShadowEdge(pixel), read by the edges criterion only (the marking
+// pass has it from a shared tile: passes/virtual_mark.comp).
+int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearShadowEdge, out vec2 uv) {
   uv = vec2(-1.0);
   float footprint = virtualFootprint(gPosition, pixel);
   if (footprint < 0.0) return -1;
@@ -75,8 +80,14 @@ int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
   bool distance = virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE);
   if (distance) footprint = virtualWorldFootprint(gPosition, pixel);
   int level = virtualLevelFor(footprint);
-  if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !virtualNearShadowEdge(pixel)) ||
+  if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !nearShadowEdge) ||
       (distance && !virtualNearDepthDiscontinuity(uv)))
     level = min(level + int(u_virtual_edge_coarsen + 0.5), SL_VIRTUAL_LEVELS - 1);
   return level;
+}
+
+// The same with the shadow-edge test per pixel (the views' form).
+int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
+  bool edge = virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && virtualNearShadowEdge(pixel);
+  return virtualRequestedLevelNearEdge(gPosition, pixel, edge, uv);
 }
