@@ -35,17 +35,24 @@ vec2 packedTriangleSides(vec2 ndc, int view) {
   return vec2(p.y - p.x, p.y + p.x);
 }
 
-// A filter tap around a lookup in view `view` (uv of its layer of mapSize texels), kept inside the
+// Filter taps around a lookup in view `view` (uv of its layer of mapSize texels), kept inside the
 // view's square when the view has one in an atlas layer (LightView::atlasRect): past the square
 // lie another face's depths, which mean nothing here, while its own edge texel (in the border
 // drawn past the face's window) is what a layer of its own would clamp the tap to. Views that own
 // their layer are left alone (their sampler's wrap decides).
-vec2 lightViewTap(vec2 uv, int view, vec2 mapSize) {
+// A filter takes the range once (lightViewTapRange) and clamps each tap to it (lightViewTapIn):
+// per tap, the view's square read by a varying index cost llvmpipe half of `pcf`'s shading pass.
+vec4 lightViewTapRange(int view, vec2 mapSize) {
   vec4 square = lightViewAtlas[view];
-  if (!(square.z > square.x)) return uv;
+  if (!(square.z > square.x)) return vec4(vec2(-1e30), vec2(1e30));  // no square: taps as they are
   vec2 halfTexel = 0.5 / mapSize;
-  return clamp(uv, square.xy + halfTexel, square.zw - halfTexel);
+  return vec4(square.xy + halfTexel, square.zw - halfTexel);
 }
+
+vec2 lightViewTapIn(vec2 uv, vec4 range) { return clamp(uv, range.xy, range.zw); }
+
+// One tap alone.
+vec2 lightViewTap(vec2 uv, int view, vec2 mapSize) { return lightViewTapIn(uv, lightViewTapRange(view, mapSize)); }
 
 // The view of the last map lookup the visibility test set up (common/visibility_term.glsl,
 // representations/soft/receiver_coord.glsl): a representation is handed uv and layer, and reads

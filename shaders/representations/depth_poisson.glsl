@@ -25,10 +25,11 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec2 texel = 1.0 / vec2(textureSize(u_shadowMap, 0).xy);
   float angle = u_poisson_rotate > 0.5 ? 6.2831853 * interleavedGradientNoise(gl_FragCoord.xy) : 0.0;
   mat2 rot = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+  vec4 range = lightViewTapRange(sl_view, 1.0 / texel);
   float lit = 0.0;
   for (int i = 0; i < n; ++i) {
     vec2 offset = rot * kPoisson[i] * u_poisson_radius * texel;
-    vec2 tap = lightViewTap(uv + offset, sl_view, 1.0 / texel);
+    vec2 tap = lightViewTapIn(uv + offset, range);
     float depth = receiverDepthAt(receiverDepth, tap, 1.0 / texel);
     lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
   }

@@ -22,10 +22,11 @@ mat2 pcssRotation() {
 float pcssFilter(vec3 uvLayer, float receiverDepth, float radius, int samples) {
   vec2 mapSize = vec2(textureSize(u_shadowMap, 0).xy);
   mat2 rot = pcssRotation();
+  vec4 range = lightViewTapRange(sl_view, mapSize);
   float lit = 0.0;
   int n = clamp(samples, 1, kSoftPoissonCount);
   for (int i = 0; i < n; ++i) {
-    vec2 tap = lightViewTap(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, sl_view, mapSize);
+    vec2 tap = lightViewTapIn(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, range);
     float depth = receiverDepthAt(receiverDepth, tap, mapSize);
     lit += depth <= texture(u_shadowMap, vec3(tap, uvLayer.z)).r ? 1.0 : 0.0;
   }
@@ -41,9 +42,10 @@ vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
   float radius = pcssSearchTexels(view, dR);
   mat2 rot = pcssRotation();
   int n = clamp(int(u_pcss_blocker_samples + 0.5), 1, kSoftPoissonCount);
+  vec4 range = lightViewTapRange(view, mapSize);
   float sum = 0.0, count = 0.0;
   for (int i = 0; i < n; ++i) {
-    vec2 tap = lightViewTap(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, view, mapSize);
+    vec2 tap = lightViewTapIn(uvLayer.xy + rot * kSoftPoisson[i] * radius / mapSize, range);
     float stored = texture(u_shadowMap, vec3(tap, uvLayer.z)).r;
     if (stored < receiverDepthAt(receiverDepth, tap, mapSize)) {
       sum += stored;
