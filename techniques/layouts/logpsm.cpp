@@ -187,12 +187,15 @@ class LogPsmState : public LayoutState {
   }
   std::string status() const override {
     if (fit_.delta <= 0.0f) return "logpsm: spot light, focused map (no warp)";
-    char text[240];
+    char text[300];
+    // Tessellated, only the edges are cut into chords: interiors are one fan whose fragments
+    // solve depth and coverage from their triangle (shaders/passes/warp_caster.glsl).
     std::snprintf(
-        text, sizeof text, "delta %.3g (%s); texel density near/far %.1fx; %s <= %.2f texels%s", double(fit_.delta),
+        text, sizeof text, "delta %.3g (%s); texel density near/far %.1fx; %s <= %.2f texels%s%s", double(fit_.delta),
         fit_.deltaBudget > fit_.deltaView ? "limited by the error budget" : "viewer", double(1.0f + 1.0f / fit_.delta),
         fit_.tessellated ? "chords along the view" : "untessellated edges (tessellate off)", double(fit_.errorTexels),
-        fit_.perspective && fit_.tessellated ? "; across it (perspective part) per edge, up to 64 pieces" : "");
+        fit_.perspective && fit_.tessellated ? "; across it (perspective part) per edge, up to 64 pieces" : "",
+        fit_.tessellated ? "; a cut patch's interior solved per fragment" : "");
     return text;
   }
 
