@@ -13,11 +13,14 @@ float logWarp(float t, float delta) {
   return logWarpLog1p(max(t / delta, -0.999)) / logWarpLog1p(1.0 / delta);
 }
 
+// δ (e^x - 1) without the cancellation of exp(x) - 1 for tiny x: the inverse warp's t for
+// x = u ln(1 + 1/δ) (callers that know ln(1 + 1/δ) already pass it multiplied in).
+float logWarpExpm1(float x, float delta) { return delta * (abs(x) < 1e-3 ? x * (1.0 + x * (0.5 + x / 6.0)) : exp(x) - 1.0); }
+
 // The inverse: the t whose warp is u (u = 0 at the map's near side, 1 at its far side).
 float logWarpInverse(float u, float delta) {
   if (!(delta > 0.0)) return u;
-  float x = u * logWarpLog1p(1.0 / delta);
-  return delta * (abs(x) < 1e-3 ? x * (1.0 + x * (0.5 + x / 6.0)) : exp(x) - 1.0);  // δ (e^x - 1)
+  return logWarpExpm1(u * logWarpLog1p(1.0 / delta), delta);
 }
 
 #include "layouts/single_matrix.glsl"
@@ -26,10 +29,14 @@ float logWarpInverse(float u, float delta) {
 // and rowY.(p, 1) = 0 land on its map position ndc (x' = X / W; y through the log warp's t,
 // which W does not divide; δ <= 0, a spot's fallback: y' = Y / W). Their cross product is the
 // ray's direction. Used to tell casters seen edge on (passes/shadow_warp.tesc).
-void warpRayRows(vec2 ndc, out vec4 rowX, out vec4 rowY) {
+// Row i of the drawn view's matrix: clip coordinate i of p is dot(row, (p, 1)).
+vec4 warpMatrixRow(int i) {
   mat4 m = lightViewProjMatrix[u_shadowView];
-  vec4 r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
-  vec4 r3 = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+  return vec4(m[0][i], m[1][i], m[2][i], m[3][i]);
+}
+
+void warpRayRows(vec2 ndc, out vec4 rowX, out vec4 rowY) {
+  vec4 r0 = warpMatrixRow(0), r1 = warpMatrixRow(1), r3 = warpMatrixRow(3);
   rowX = r0 - ndc.x * r3;
   float delta = lightViewSplit[u_shadowView].w;
   rowY = delta > 0.0 ? r1 - vec4(0.0, 0.0, 0.0, 2.0 * logWarpInverse(ndc.y * 0.5 + 0.5, delta) - 1.0)

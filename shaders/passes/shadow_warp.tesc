@@ -68,15 +68,13 @@ bool patchOffMap(vec4 a, vec4 b, vec4 c) {
   return max(x.x, max(x.y, x.z)) < -1.0 || min(x.x, min(x.y, x.z)) > 1.0;
 }
 
-// slack: how far (world) outside the triangle a fragment may lie and still be kept.
-void casterConstants(vec3 n, float slack, float delta, float c) {
-  mat4 m = lightViewProjMatrix[u_shadowView];
-  vec4 r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
-  vec4 r3 = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+// clip: the corners' patchClip; slack: how far (world) outside the triangle a fragment may lie
+// and still be kept.
+void casterConstants(vec4 clip[3], vec3 n, float slack, float delta, float c) {
+  vec4 r1 = warpMatrixRow(1), r3 = warpMatrixRow(3);
   mat3 corners;  // columns (X, Y, 1) of each corner: (X, Y, 1) = corners * weights
   for (int i = 0; i < 3; ++i) {
-    vec4 q = vec4(v_world[i], 1.0);
-    corners[i] = vec3(dot(r0, q), dot(r1, q), 1.0);
+    corners[i] = vec3(clip[i].xy, 1.0);
     tc_cornerDepth[i] = layoutDepth(v_world[i]);
     float edge = length(v_world[(i + 2) % 3] - v_world[(i + 1) % 3]);
     tc_leastWeights[i] = -max(slack * edge / length(n), 1e-5);  // weight i times corner i's height
@@ -120,7 +118,8 @@ void main() {
     bool edgeOn = !(abs(dot(n, ray)) > kWarpEdgeOnCos * length(n) * length(ray));
     bool exact = finest > 1.0 && !edgeOn;
     tc_exactCaster = exact ? 1.0 : 0.0;
-    if (exact) casterConstants(n, (u_logpsm_max_error + 1.0) * layoutTexelWorldSize(middle, u_shadowView), delta, c);
+    vec4 clip[3] = vec4[3](c0, c1, c2);
+    if (exact) casterConstants(clip, n, (u_logpsm_max_error + 1.0) * layoutTexelWorldSize(middle, u_shadowView), delta, c);
     gl_TessLevelInner[0] = exact ? 1.0 : finest;
   }
 }

@@ -27,9 +27,7 @@ CasterFragment warpCasterFragment(vec3 interpolatedWorld, vec2 interpolatedUv) {
   // The clip coordinates the fragment's map position comes from: t through the log's inverse,
   // Y = 2t - 1 undivided, X = x' W. Over the triangle's plane the weights are affine in X and Y
   // (a patch seen edge on keeps the interpolated path: shadow_warp.tesc).
-  float x = v_mapNdc.y * 0.5 + 0.5, delta = v_warpTerms.w;
-  float cu = x * v_warpTerms.z;
-  float t = delta * (abs(cu) < 1e-3 ? cu * (1.0 + cu * (0.5 + cu / 6.0)) : exp(cu) - 1.0);  // logWarpInverse
+  float t = logWarpExpm1((v_mapNdc.y * 0.5 + 0.5) * v_warpTerms.z, v_warpTerms.w);  // logWarpInverse, C given
   float y = 2.0 * t - 1.0, w = v_warpTerms.x * y + v_warpTerms.y;
   vec3 clip = vec3(v_mapNdc.x * w, y, 1.0);
   vec3 weights = vec3(dot(v_weightRow0, clip), dot(v_weightRow1, clip), dot(v_weightRow2, clip));
