@@ -21,8 +21,13 @@ ShadowCoord layoutShadowCoord(vec3 worldPos) {
   }
   // A point on a split's rim (rounding, or a receiver outside the camera frustum: the overview)
   // goes to the first later split that holds it.
-  ShadowCoord sc = layoutShadowCoordIn(worldPos, view);
-  while (!layoutCovers(sc) && view + 1 < count) sc = layoutShadowCoordIn(worldPos, ++view);
+  // A do-while: llvmpipe runs a loop's body once even when every lane skips it, so the first
+  // lookup is the body.
+  ShadowCoord sc;
+  --view;
+  do {
+    sc = layoutShadowCoordIn(worldPos, ++view);
+  } while (!layoutCovers(sc) && view + 1 < count);
   float band = lightViewSplit[view].z;
   if (view + 1 < count && band > 0.0) {
     float w = (depth - (lightViewSplit[view].y - band)) / band;
