@@ -17,14 +17,14 @@ float tentWeight(float k, float s, float h) { return max(h - abs(k - s), 0.0); }
 ivec2 tentTexels(float s, float h) { return ivec2(int(floor(s - h)) + 1, int(ceil(s + h)) - 1); }
 
 #ifdef SL_TENT_TEXEL_BY_TEXEL
-float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth) {
+float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
   ivec2 rx = tentTexels(s.x, h), ry = tentTexels(s.y, h);
   float lit = 0.0, total = 0.0;
   for (int y = ry.x; y <= ry.y; ++y)
     for (int x = rx.x; x <= rx.y; ++x) {
       float w = tentWeight(float(x), s.x, h) * tentWeight(float(y), s.y, h);
       // At a texel's centre the bilinear compare reads that texel alone.
-      vec2 uv = (base + vec2(x, y) + 0.5) / size;
+      vec2 uv = lightViewTapIn((base + vec2(x, y) + 0.5) / size, range);
       lit += w * texture(u_shadowMap, vec4(uv, layer, receiverDepthAt(receiverDepth, uv, size)));
       total += w;
     }
@@ -45,13 +45,15 @@ int tentTaps(float s, float h, out float position[kMaxTexels / 2], out float wei
   return taps;
 }
 
-float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth) {
+float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
   float px[kMaxTexels / 2], wx[kMaxTexels / 2], py[kMaxTexels / 2], wy[kMaxTexels / 2];
   int nx = tentTaps(s.x, h, px, wx), ny = tentTaps(s.y, h, py, wy);
   float lit = 0.0, total = 0.0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      vec2 uv = (base + vec2(px[i], py[j]) + 0.5) / size;
+      // Kept inside the view's atlas square (lightViewTapIn): a tap at its edge texel's centre
+      // reads that texel alone, as a layer of its own clamps.
+      vec2 uv = lightViewTapIn((base + vec2(px[i], py[j]) + 0.5) / size, range);
       // A tap compares four texels: the receiver's plane at the one it falls in, less the
       // plane's change over one texel (receiver-plane bias; other modes leave the depth as is).
       float depth = receiverDepthForFootprint(receiverDepthAt(receiverDepth, uv, size), size);
@@ -68,7 +70,7 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   vec2 t = uvLayer.xy * size - 0.5;  // texel centres at whole numbers
   vec2 base = floor(t);
   float h = 0.5 * (u_pcf_kernel + 1.0);
-  return tentVisibility(base, t - base, h, size, uvLayer.z, receiverDepth);
+  return tentVisibility(base, t - base, h, size, uvLayer.z, receiverDepth, lightViewTapRange(sl_view, size));
 }
 
 // How far from the receiver (in texels) the filter reads with most of its weight: scales the

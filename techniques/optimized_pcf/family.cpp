@@ -44,6 +44,11 @@ class OptimizedPcf : public Representation {
              .choices = {"bilinear-taps", "every-texel"}}};
   }
   std::unique_ptr<RepresentationState> createState() const override { return std::make_unique<OptimizedPcfState>(); }
+  // The tent weighs texels up to its half-width (N + 1) / 2 from the receiver: a point layout
+  // draws each face that far past its window (an atlas widens its border to it).
+  float filterReachTexels(const ParamSet& params, const Light&) const override {
+    return params.has("pcf.kernel") ? 0.5f * float(params.i("pcf.kernel") + 1) : 0.0f;
+  }
 };
 
 }  // namespace

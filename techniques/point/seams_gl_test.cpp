@@ -92,8 +92,9 @@ TEST_P(PointSeamsGl, SeamErrorIsMeasuredApartFromTheRest) {
 // A beam and a rail 1.5 under a lamp 3 up (of `radius`, 0: a point) throw shadows from 1.6 to
 // 4.8 out, across the ground's cube-face edges at 3 (45 degrees), the tetrahedron's and, with a
 // post, into the far field; the paraboloids' equator is level with the lamp, out of view. `preset`
-// at 512² per view against the reference (`samples` per pixel), 320×180, split at the seams.
-SeamSplit seamsCrossed(const std::string& preset, float radius, int samples) {
+// at 512² per view (and `overrides`) against the reference (`samples` per pixel), 320×180, split
+// at the seams.
+SeamSplit seamsCrossed(const std::string& preset, float radius, int samples, std::vector<std::string> overrides = {}) {
   test::GlHarness h;
   const std::string light = R"({"type":"point","position":[0,3,0],"radius":)" + std::to_string(radius) + "}";
   const Scene scene = loadScene(test::writeTempFile("seams_" + std::to_string(::getpid()) + ".json", R"({
@@ -112,7 +113,8 @@ SeamSplit seamsCrossed(const std::string& preset, float radius, int samples) {
   ReferenceSettings rs;
   rs.samples = samples;
   const ReferenceImage reference = ReferenceCache(scene, rs).forFrame(h.renderer, in);
-  Viewport vp(techniqueOfParam(preset, {"shadowmap.size=512"}));
+  overrides.push_back("shadowmap.size=512");
+  Viewport vp(techniqueOfParam(preset, overrides));
   test::renderFromCut(h, in, vp);
   const SeamSplit s = splitAtSeams(test::readFrame(h.renderer, vp, 320, 180), reference, vp, scene.light.position);
   std::printf("seams%s %s: seam pixels %ld, wrong %.3f %%; other pixels %ld, wrong %.3f %%\n",
@@ -140,6 +142,24 @@ TEST_P(PointSeamsSoftGl, SoftShadowsCastAcrossTheSeams) {
   EXPECT_LE(s.seamPct(), std::max(4.0, 5.0 * s.restPct())) << GetParam();
   EXPECT_LE(s.restPct(), 4.0) << GetParam();
 }
+
+// Optimized PCF's widest tent (pcf.kernel = 7: 16 bilinear taps) reads up to 4 texels past the
+// receiver's: each face drawn that far past its window (its reach), and in the atlas each tap
+// kept inside the face's square (with no border at all, atlas.border = 0, the square's edge).
+class PointSeamsTentGl : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PointSeamsTentGl, WideTentsReadTheirOwnFace) {
+  std::vector<std::string> overrides = {"pcf.kernel=7"};
+  if (GetParam().find("atlas") != std::string::npos) overrides.push_back("atlas.border=0");
+  const SeamSplit s = seamsCrossed(GetParam(), 0.0f, 16, overrides);
+  EXPECT_GT(s.seam, 500) << "the shadows cross the seams";
+  EXPECT_LE(s.seamPct(), std::max(2.0, 5.0 * s.restPct())) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(PointSeamsTent, PointSeamsTentGl,
+                         ::testing::Values("optimized-pcf@cube", "optimized-pcf@cube-atlas",
+                                           "optimized-pcf@tetrahedron"),
+                         test::presetTestName);
 
 INSTANTIATE_TEST_SUITE_P(PointSeamsSoft, PointSeamsSoftGl,
                          ::testing::Values("pcss@cube", "pcss@cube-atlas", "pcss@tetrahedron",
