@@ -19,7 +19,9 @@ const int kVirtualCriterion = SL_VIRTUAL_CRITERION_FOOTPRINT;
 #endif
 bool virtualCriterionIs(int choice) { return choice == kVirtualCriterion; }
 
-uniform usampler2D u_pageTable;  // the layout's page table (PageAllocator::table())
+// Per page of level 0 the entry of the finest resident page over it, its level in bits 18..23
+// (PageAllocator::finestTable()).
+uniform usampler2D u_pageTable;
 
 struct VirtualPage {
   int level;
@@ -29,19 +31,18 @@ struct VirtualPage {
 };
 
 // The finest resident page over virtual uv; false when none is (before the first allocation).
+// One fetch at the level-0 page: the table names the finest page over it and its level.
 bool virtualFindPage(vec2 uv, out VirtualPage page) {
   page = VirtualPage(-1, -1, 0u, vec2(0.0));
-  for (int m = 0; m < SL_VIRTUAL_LEVELS; ++m) {
-    int n = SL_VIRTUAL_PAGES >> m;
-    vec2 q = uv * float(n);
-    ivec2 cell = clamp(ivec2(floor(q)), ivec2(0), ivec2(n - 1));
-    uint e = texelFetch(u_pageTable, cell, m).r;
-    if ((e & 0xffffu) != 0u) {
-      page = VirtualPage(m, int(e & 0xffffu) - 1, e, q - vec2(cell));
-      return true;
-    }
-  }
-  return false;
+  ivec2 cell = clamp(ivec2(floor(uv * float(SL_VIRTUAL_PAGES))), ivec2(0), ivec2(SL_VIRTUAL_PAGES - 1));
+  uint e = texelFetch(u_pageTable, cell, 0).r;
+  if ((e & 0xffffu) == 0u) return false;
+  int m = int((e >> 18) & 0x3fu);
+  int n = SL_VIRTUAL_PAGES >> m;
+  vec2 q = uv * float(n);
+  // floor(uv n / 2^m) = floor(uv n) >> m: the level-m page over this cell.
+  page = VirtualPage(m, int(e & 0xffffu) - 1, e, q - vec2(cell >> m));
+  return true;
 }
 
 // Virtual uv in [0,1] (outside: off the map); z = 0 when the point cannot be projected.

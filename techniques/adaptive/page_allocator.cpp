@@ -64,6 +64,20 @@ int PageAllocator::encode(int level, int x, int y) const {
   return offsets_[static_cast<size_t>(level)] + y * (pages_ >> level) + x;
 }
 
+std::vector<uint32_t> PageAllocator::finestTable() const {
+  std::vector<uint32_t> finest(static_cast<size_t>(pages_) * static_cast<size_t>(pages_), 0u);
+  for (int y = 0; y < pages_; ++y)
+    for (int x = 0; x < pages_; ++x)
+      for (int m = 0; m < levels_; ++m) {
+        const uint32_t e = table_[static_cast<size_t>(encode(m, x >> m, y >> m))];
+        if ((e & kTileMask) == 0u) continue;
+        finest[static_cast<size_t>(y) * static_cast<size_t>(pages_) + static_cast<size_t>(x)] =
+            e | (static_cast<uint32_t>(m) << kLevelShift);
+        break;
+      }
+  return finest;
+}
+
 int PageAllocator::tileOf(int flatIndex) const {
   auto it = resident_.find(flatIndex);
   return it == resident_.end() ? -1 : it->second.tile;

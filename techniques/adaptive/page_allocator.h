@@ -17,6 +17,8 @@ class PageAllocator {
   static constexpr uint32_t kTileMask = 0xffffu;      // tile index + 1 (0: no page)
   static constexpr uint32_t kRenderedBit = 1u << 16;  // drawn this frame (a cache miss)
   static constexpr uint32_t kNeededBit = 1u << 17;    // asked for (or a fallback) this frame
+  static constexpr int kLevelShift = 18;              // finestTable(): the level of the page named
+  static constexpr uint32_t kLevelMask = 0x3fu;       // (6 bits, below the hits)
   static constexpr int kHitShift = 24;                // frames served from the cache, capped 255
 
   // pagesPerSide: pages along one side at level 0 (a power of two); levels down to one page.
@@ -54,6 +56,10 @@ class PageAllocator {
   int tileOf(int flatIndex) const;  // -1 when not resident
   // Page table: flatSize() entries (kTileMask, bits above) for the resident pages.
   const std::vector<uint32_t>& table() const { return table_; }
+  // Per page of level 0 (pagesPerSide² entries, row by row): the entry of the finest resident
+  // page over it, its level in the bits at kLevelShift; 0 where no page is. What a lookup reads
+  // (shaders/layouts/virtual_common.glsl): one fetch instead of a walk through the levels.
+  std::vector<uint32_t> finestTable() const;
   // Level, x and y of a flat index.
   void decode(int flatIndex, int& level, int& x, int& y) const;
   int encode(int level, int x, int y) const;

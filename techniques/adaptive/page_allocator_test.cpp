@@ -55,6 +55,35 @@ TEST(PageAllocator, DrawsMissesOnceThenHitsTheCache) {
   EXPECT_EQ(f.draw.size(), 4u);
 }
 
+// The finest resident page over each level-0 page, worked by hand on 8² pages: (1, 1) and
+// (2, 1) of level 0, (3, 3) of level 1 (level-0 pages 6..7 x 6..7) and the one page of level 3.
+TEST(PageAllocator, FinestTableNamesTheFinestResidentPageAndItsLevel) {
+  PageAllocator a;
+  a.configure(8, 16);
+  a.update(marksOf(a, {a.encode(0, 1, 1), a.encode(0, 2, 1), a.encode(1, 3, 3)}));
+  const std::vector<uint32_t> finest = a.finestTable();
+  ASSERT_EQ(finest.size(), 64u);
+  auto at = [&](int x, int y) { return finest[static_cast<size_t>(y * 8 + x)]; };
+  auto levelOf = [](uint32_t e) { return int((e >> PageAllocator::kLevelShift) & PageAllocator::kLevelMask); };
+  auto tileOf = [](uint32_t e) { return int(e & PageAllocator::kTileMask) - 1; };
+  EXPECT_EQ(levelOf(at(1, 1)), 0);
+  EXPECT_EQ(tileOf(at(1, 1)), a.tileOf(a.encode(0, 1, 1)));
+  EXPECT_EQ(tileOf(at(2, 1)), a.tileOf(a.encode(0, 2, 1)));
+  for (int y = 6; y < 8; ++y)
+    for (int x = 6; x < 8; ++x) {
+      EXPECT_EQ(levelOf(at(x, y)), 1);
+      EXPECT_EQ(tileOf(at(x, y)), a.tileOf(a.encode(1, 3, 3)));
+    }
+  // Everywhere else the coarsest page (level 3), with the entry's own bits kept.
+  EXPECT_EQ(levelOf(at(0, 0)), 3);
+  EXPECT_EQ(tileOf(at(5, 7)), a.tileOf(a.encode(3, 0, 0)));
+  EXPECT_NE(at(0, 0) & PageAllocator::kRenderedBit, 0u);
+  // Before any allocation no page is resident: 0 everywhere.
+  PageAllocator empty;
+  empty.configure(8, 16);
+  for (uint32_t e : empty.finestTable()) EXPECT_EQ(e, 0u);
+}
+
 TEST(PageAllocator, EvictsTheLeastRecentlyUsedPage) {
   PageAllocator a;
   a.configure(8, 3);  // the coarsest page and two more
