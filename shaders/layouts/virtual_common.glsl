@@ -52,16 +52,21 @@ vec3 virtualUv(vec3 worldPos) {
   return vec3(c.xy / c.w * 0.5 + 0.5, 1.0);
 }
 
+// Whether a G-buffer pixel holds a finite surface point the virtual map's view can project.
+bool virtualCovered(sampler2D gPosition, ivec2 pixel) {
+  vec4 P = texelFetch(gPosition, pixel, 0);
+  if (P.w < 0.5 || any(isnan(P.xyz)) || any(isinf(P.xyz))) return false;
+  return virtualUv(P.xyz).z != 0.0;
+}
+
 // Level-0 virtual texels one pixel spans at `pixel` of a G-buffer of world positions: the larger
 // of its steps to the next pixel across and up, each taken on the side that stays on the
 // surface (the smaller of left/right, down/up: a neighbour across a depth edge would ask for a
 // needlessly coarse level). -1 when the pixel is not covered.
 float virtualFootprint(sampler2D gPosition, ivec2 pixel) {
   ivec2 size = textureSize(gPosition, 0);
-  vec4 P = texelFetch(gPosition, pixel, 0);
-  if (P.w < 0.5 || any(isnan(P.xyz)) || any(isinf(P.xyz))) return -1.0;
-  vec3 uv = virtualUv(P.xyz);
-  if (uv.z == 0.0) return -1.0;
+  if (!virtualCovered(gPosition, pixel)) return -1.0;
+  vec3 uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz);
   float steps[2];
   for (int axis = 0; axis < 2; ++axis) {
     float best = 1e30;

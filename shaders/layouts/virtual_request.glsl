@@ -73,12 +73,14 @@ bool virtualNearShadowEdge(ivec2 pixel) {
 // pass has it from a shared tile: passes/virtual_mark.comp).
 int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearShadowEdge, out vec2 uv) {
   uv = vec2(-1.0);
-  float footprint = virtualFootprint(gPosition, pixel);
+  // The distance criterion replaces the footprint by the world size: only one of them is
+  // computed (the criterion is a constant), the coverage test is the same.
+  bool distance = virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE);
+  float footprint = distance ? (virtualCovered(gPosition, pixel) ? virtualWorldFootprint(gPosition, pixel) : -1.0)
+                             : virtualFootprint(gPosition, pixel);
   if (footprint < 0.0) return -1;
   uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz).xy;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return -1;
-  bool distance = virtualCriterionIs(SL_VIRTUAL_CRITERION_DISTANCE);
-  if (distance) footprint = virtualWorldFootprint(gPosition, pixel);
   int level = virtualLevelFor(footprint);
   if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !nearShadowEdge) ||
       (distance && !virtualNearDepthDiscontinuity(uv)))
