@@ -33,6 +33,32 @@ float pcssFilter(vec3 uvLayer, float receiverDepth, float radius, int samples) {
   return lit / float(n);
 }
 
+// The same filter at the smallest kernel, kPcssMinRadius = 1 texel: every tap falls in one of the
+// 3x3 texels around the receiver's, and a tap's test depends on its texel alone (its receiver
+// depth is taken at the texel's centre, receiverDepthAt; the map is read nearest). So each of
+// the nine texels is tested once and every tap counts its texel's answer: nine fetches instead
+// of one per tap, the same fraction.
+float pcssFilterOneTexel(vec3 uvLayer, float receiverDepth, int samples) {
+  vec2 mapSize = vec2(textureSize(u_shadowMap, 0).xy);
+  mat2 rot = pcssRotation();
+  vec4 range = lightViewTapRange(sl_view, mapSize);
+  vec2 corner = floor(uvLayer.xy * mapSize) - 1.0;
+  uint litTexels = 0u;
+  for (int k = 0; k < 9; ++k) {
+    vec2 texel = lightViewTapIn((corner + vec2(k % 3, k / 3) + 0.5) / mapSize, range);
+    float depth = receiverDepthAt(receiverDepth, texel, mapSize);
+    if (depth <= texture(u_shadowMap, vec3(texel, uvLayer.z)).r) litTexels |= 1u << uint(k);
+  }
+  float lit = 0.0;
+  int n = clamp(samples, 1, kSoftPoissonCount);
+  for (int i = 0; i < n; ++i) {
+    vec2 tap = lightViewTapIn(uvLayer.xy + rot * kSoftPoisson[i] * kPcssMinRadius / mapSize, range);
+    ivec2 t = clamp(ivec2(floor(tap * mapSize) - corner), ivec2(0), ivec2(2));
+    lit += float((litTexels >> uint(t.y * 3 + t.x)) & 1u);
+  }
+  return lit / float(n);
+}
+
 // The blocker search: x receiver-to-blocker distance, y penumbra radius (world), z 1 = found,
 // w the search radius (texels of this view).
 vec4 pcssBlockerSearch(vec3 uvLayer, float receiverDepth) {
@@ -90,7 +116,7 @@ float representationFilterRadius(vec3 p, int view) {
 #else
 // Point light (or inside the search pass): a minimum-kernel PCF over the same disk.
 float representationVisibility(vec3 uvLayer, float receiverDepth) {
-  return pcssFilter(uvLayer, receiverDepth, kPcssMinRadius, int(u_pcss_filter_samples + 0.5));
+  return pcssFilterOneTexel(uvLayer, receiverDepth, int(u_pcss_filter_samples + 0.5));
 }
 float representationFilterRadius(vec3 p, int view) { return kPcssMinRadius; }
 #endif
