@@ -64,18 +64,24 @@ int PageAllocator::encode(int level, int x, int y) const {
   return offsets_[static_cast<size_t>(level)] + y * (pages_ >> level) + x;
 }
 
+// From the coarsest level down: a page's finest resident page is itself when it is resident,
+// else its parent's. One visit per page of every level (4/3 of level 0's), whatever the levels.
 std::vector<uint32_t> PageAllocator::finestTable() const {
-  std::vector<uint32_t> finest(static_cast<size_t>(pages_) * static_cast<size_t>(pages_), 0u);
-  for (int y = 0; y < pages_; ++y)
-    for (int x = 0; x < pages_; ++x)
-      for (int m = 0; m < levels_; ++m) {
-        const uint32_t e = table_[static_cast<size_t>(encode(m, x >> m, y >> m))];
-        if ((e & kTileMask) == 0u) continue;
-        finest[static_cast<size_t>(y) * static_cast<size_t>(pages_) + static_cast<size_t>(x)] =
-            e | (static_cast<uint32_t>(m) << kLevelShift);
-        break;
+  std::vector<uint32_t> coarser;  // the level above's answers
+  for (int m = levels_ - 1; m >= 0; --m) {
+    const size_t n = static_cast<size_t>(pages_ >> m);
+    std::vector<uint32_t> finest(n * n, 0u);
+    for (size_t y = 0; y < n; ++y)
+      for (size_t x = 0; x < n; ++x) {
+        const uint32_t e = table_[static_cast<size_t>(encode(m, static_cast<int>(x), static_cast<int>(y)))];
+        if ((e & kTileMask) != 0u)
+          finest[y * n + x] = e | (static_cast<uint32_t>(m) << kLevelShift);
+        else if (!coarser.empty())
+          finest[y * n + x] = coarser[(y >> 1) * (n >> 1) + (x >> 1)];
       }
-  return finest;
+    coarser = std::move(finest);
+  }
+  return coarser;
 }
 
 int PageAllocator::tileOf(int flatIndex) const {
