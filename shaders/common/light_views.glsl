@@ -75,3 +75,9 @@ ShadowCoord shadowCoordNone() { return ShadowCoord(vec2(0.0), 0.0, -1, -1, 0.0);
 bool shadowCoordOffMap(ShadowCoord sc) {
   return sc.view < 0 || any(lessThan(sc.uv, vec2(0.0))) || any(greaterThan(sc.uv, vec2(1.0)));
 }
+
+// The view's map holds the point: what a layout that picks among views checks before falling
+// back to another (a NaN position counts as not held, unlike shadowCoordOffMap's "lit").
+bool shadowCoordOnMap(ShadowCoord sc) {
+  return sc.view >= 0 && all(greaterThanEqual(sc.uv, vec2(0.0))) && all(lessThanEqual(sc.uv, vec2(1.0)));
+}

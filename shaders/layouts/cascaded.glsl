@@ -5,10 +5,6 @@
 #include "layouts/single_matrix.glsl"
 uniform mat4 u_cameraView;
 
-bool layoutCovers(ShadowCoord c) {
-  return c.view >= 0 && all(greaterThanEqual(c.uv, vec2(0.0))) && all(lessThanEqual(c.uv, vec2(1.0)));
-}
-
 ShadowCoord layoutShadowCoord(vec3 worldPos) {
   float depth = -(u_cameraView * vec4(worldPos, 1.0)).z;
   int count = int(lightViewInfo.x + 0.5);
@@ -27,12 +23,12 @@ ShadowCoord layoutShadowCoord(vec3 worldPos) {
   --view;
   do {
     sc = layoutShadowCoordIn(worldPos, ++view);
-  } while (!layoutCovers(sc) && view + 1 < count);
+  } while (!shadowCoordOnMap(sc) && view + 1 < count);
   float band = lightViewSplit[view].z;
   if (view + 1 < count && band > 0.0) {
     float w = (depth - (lightViewSplit[view].y - band)) / band;
     // Written so that a NaN depth gives no blend: NaN fails the comparison.
-    if (w > 0.0 && layoutCovers(layoutShadowCoordIn(worldPos, view + 1))) {
+    if (w > 0.0 && shadowCoordOnMap(layoutShadowCoordIn(worldPos, view + 1))) {
       sc.view2 = view + 1;
       sc.weight2 = min(w, 1.0);
     }

@@ -23,7 +23,6 @@ ShadowCoord layoutShadowCoord(vec3 worldPos) {
   do {
     sc = layoutShadowCoordIn(worldPos, view);
     view = view + 1 == count ? 0 : view + 1;
-  } while (!(sc.view >= 0 && all(greaterThanEqual(sc.uv, vec2(0.0))) && all(lessThanEqual(sc.uv, vec2(1.0)))) &&
-           ++tried < count);
+  } while (!shadowCoordOnMap(sc) && ++tried < count);
   return sc;
 }

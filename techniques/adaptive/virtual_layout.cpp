@@ -144,7 +144,7 @@ class VirtualState : public LayoutState {
     return glm::vec4(n, n, n - 2.0f * x - 1.0f, n - 2.0f * y - 1.0f);
   }
   void ensureGpu() {
-    if (marks_ && tableLevels_ == pages_.levels() && tableSide_ == pages_.pagesPerSide()) return;
+    if (marks_ && tableSide_ == pages_.pagesPerSide()) return;  // the levels follow from the side
     if (marks_) glDeleteBuffers(1, &marks_);
     if (grid_) glDeleteBuffers(1, &grid_);
     if (table_) glDeleteTextures(1, &table_);
@@ -159,7 +159,6 @@ class VirtualState : public LayoutState {
     glTextureParameteri(table_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(table_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     label(GL_TEXTURE, table_, "virtual page table (finest resident page per level-0 page)");
-    tableLevels_ = pages_.levels();
     tableSide_ = pages_.pagesPerSide();
     uploadTable();
   }
@@ -292,7 +291,7 @@ class VirtualState : public LayoutState {
   int droppedByMotion_ = 0;  // pages dropped this frame because objects over them moved
   std::vector<int> draw_;    // flat page indices the shadow pass draws this frame
   GLuint marks_ = 0, grid_ = 0, table_ = 0;
-  int tableLevels_ = 0, tableSide_ = 0;
+  int tableSide_ = 0;
   glm::mat4 drawnViewProj_{0.0f};
   const Scene* drawnScene_ = nullptr;
   int drawnCull_ = -1;
