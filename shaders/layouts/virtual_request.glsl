@@ -32,23 +32,20 @@ float virtualWorldFootprint(sampler2D gPosition, ivec2 pixel) {
 // discontinuities, distances"): whether the light's depth around the point's position, in the
 // finest page last frame drew there (3x3 texels of the atlas), bends or steps: the largest second
 // difference along the rows, columns and diagonals over u_virtual_depth_step. A plane at any
-// slope has none; a caster's silhouette, where shadow edges start, has one. True where it cannot
-// tell (no page yet, no depth atlas bound, step 0): the pixel keeps its distance level there.
-uniform sampler2DArray u_virtualDepthAtlas;
-uniform int u_virtualHasDepthAtlas;
+// slope has none; a caster's silhouette, where shadow edges start, has one. The bend is kept per
+// atlas texel (passes/virtual_depth_bend.comp, recomputed where pages are drawn). True where it
+// cannot tell (no page yet, no bend, step 0): the pixel keeps its distance level there.
+uniform sampler2D u_virtualDepthBend;
+uniform int u_virtualHasDepthBend;
 uniform float u_virtual_depth_step;
 
 bool virtualNearDepthDiscontinuity(vec2 uv) {
-  if (u_virtualHasDepthAtlas == 0 || !(u_virtual_depth_step > 0.0)) return true;
+  if (u_virtualHasDepthBend == 0 || !(u_virtual_depth_step > 0.0)) return true;
   VirtualPage page;
   if (!virtualFindPage(uv, page)) return true;
   ivec2 origin = ivec2(page.tile % SL_VIRTUAL_POOL_SIDE, page.tile / SL_VIRTUAL_POOL_SIDE) * SL_VIRTUAL_PAGE;
-  ivec2 centre = clamp(ivec2(page.local * float(SL_VIRTUAL_PAGE)), ivec2(1), ivec2(SL_VIRTUAL_PAGE - 2));
-  float d[9];
-  for (int k = 0; k < 9; ++k)
-    d[k] = texelFetch(u_virtualDepthAtlas, ivec3(origin + centre + ivec2(k % 3 - 1, k / 3 - 1), 0), 0).r;
-  float bend = max(max(abs(d[3] + d[5] - 2.0 * d[4]), abs(d[1] + d[7] - 2.0 * d[4])),
-                   max(abs(d[0] + d[8] - 2.0 * d[4]), abs(d[2] + d[6] - 2.0 * d[4])));
+  ivec2 centre = clamp(ivec2(page.local * float(SL_VIRTUAL_PAGE)), ivec2(0), ivec2(SL_VIRTUAL_PAGE - 1));
+  float bend = texelFetch(u_virtualDepthBend, origin + centre, 0).r;
   return !(bend <= u_virtual_depth_step);  // NaN from an undefined texel counts as a discontinuity
 }
 

@@ -2,6 +2,7 @@
 #include "gl/storage_blocks.h"
 #include "part/part_view.h"
 
+#include "adaptive/depth_bend.h"
 #include "adaptive/page_allocator.h"
 #include "adaptive/quadtree_fit.h"
 #include "gl/gl_util.h"
@@ -127,12 +128,15 @@ class VirtualState : public LayoutState {
     for (ShadowLayerDraw& layer : layers) {
       layer.tiled = true;
       layer.tiles.clear();
+      drawnTiles_.clear();
       for (size_t k = 0; k < draw_.size(); ++k) {
         const int t = pages_.tileOf(draw_[k]);
+        drawnTiles_.push_back(t);
         const int x = (t % sizes_.poolSide) * sizes_.page, y = (t / sizes_.poolSide) * sizes_.page;
         layer.tiles.push_back({glm::ivec4(x, y, sizes_.page, sizes_.page), pageTransform(static_cast<int>(k))});
       }
     }
+    bend_.tilesDrawn(drawnTiles_);
   }
 
  private:
@@ -176,21 +180,31 @@ class VirtualState : public LayoutState {
   // tiles and uploads the page table.
   // The edges criterion reads last frame's visibility (a texture of this frame's size); the
   // marking pass and the views ask through the same function (layouts/virtual_request.glsl).
-  // The distance criterion reads the depth of the pages last frame drew (the representation's
-  // depth atlas, with the page table still holding last frame's allocation).
-  static void bindPreviousVisibility(const Program& p, TextureUnits& units, const PartContext& ctx) {
+  // The distance criterion reads the bend of the light's depth in the pages last frame drew
+  // (depth_bend.h: brought up to date from the representation's depth atlas by the marking,
+  // with the page table still holding last frame's allocation).
+  void bindPreviousVisibility(const Program& p, TextureUnits& units, const PartContext& ctx) const {
     const bool previous = ctx.previousVisibility && ctx.previousVisibility->width() == ctx.width &&
                           ctx.previousVisibility->height() == ctx.height;
     units.bind(p, "u_previousVisibility", previous ? ctx.previousVisibility->id() : 0);
     p.set("u_hasPreviousVisibility", previous ? 1 : 0);
+    units.bind(p, "u_virtualDepthBend", bendTexture_);
+    p.set("u_virtualHasDepthBend", bendTexture_ ? 1 : 0);
+  }
+
+  // Only the distance criterion with a step reads the bend; otherwise the drawn tiles stay marked
+  // stale until it does.
+  void updateDepthBend(const PartContext& ctx) {
+    bendTexture_ = 0;
+    if (ctx.params->choice("virtual.criterion") != "distance" || !(ctx.params->f("virtual.depth_step") > 0.0f)) return;
     const Texture2D* depth = ctx.shadowDepth ? ctx.shadowDepth() : nullptr;
-    units.bind(p, "u_virtualDepthAtlas", depth ? depth->id() : 0);
-    p.set("u_virtualHasDepthAtlas", depth ? 1 : 0);
+    bendTexture_ = bend_.update(*ctx.shaders, depth, sizes_.page, sizes_.poolSide, defines());
   }
 
   void markAndAllocate(const PartContext& ctx) {
     ProgramSpec spec{"virtual marks", {{GL_COMPUTE_SHADER, "passes/virtual_mark.comp"}}, defines()};
     draw_.clear();  // a marking program that does not build draws nothing (its error is shown)
+    updateDepthBend(ctx);
     Program& p = ctx.shaders->get(spec);
     if (!p.valid()) return;
     fitted_ = ctx.params->choice("virtual.criterion") == "fitted";
@@ -224,11 +238,11 @@ class VirtualState : public LayoutState {
     if (it == ctx.viewTargets.end() || !it->second) return;
     Texture2D* target = it->second;
     const std::string res = std::string("view.") + kViewNames[view] + ctx.viewportTag;
-    graph.add({res, {"gbuffer", pagesRes}, {res}, [ctx, target, view] {
+    graph.add({res, {"gbuffer", pagesRes}, {res}, [this, ctx, target, view] {
                  drawPartView(ctx, target, "views/virtual.frag",
                               {.defines = "#define SL_VIRTUAL_VIEW " + std::to_string(view) + "\n",
                                .withGBuffer = true,
-                               .bind = [&ctx](const Program& p, TextureUnits& units) {
+                               .bind = [this, &ctx](const Program& p, TextureUnits& units) {
                                  bindPreviousVisibility(p, units, ctx);
                                }});
                }});
@@ -288,8 +302,11 @@ class VirtualState : public LayoutState {
   int criterion_ = 0;  // virtual.criterion's index, this frame
   bool fitted_ = false;
   double fitMs_ = 0.0;
-  int droppedByMotion_ = 0;  // pages dropped this frame because objects over them moved
-  std::vector<int> draw_;    // flat page indices the shadow pass draws this frame
+  int droppedByMotion_ = 0;      // pages dropped this frame because objects over them moved
+  std::vector<int> draw_;        // flat page indices the shadow pass draws this frame
+  std::vector<int> drawnTiles_;  // their atlas tiles
+  VirtualDepthBend bend_;
+  GLuint bendTexture_ = 0;  // what the marking and the views read this frame (0: none)
   GLuint marks_ = 0, grid_ = 0, table_ = 0;
   int tableSide_ = 0;
   glm::mat4 drawnViewProj_{0.0f};
