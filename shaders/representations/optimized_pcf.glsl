@@ -31,22 +31,24 @@ float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float r
   return lit / max(total, 1e-6);
 }
 #else
-// One axis: tap positions (texels from the base texel) and weights, pairing texels k and k + 1.
-int tentTaps(float s, float h, out float position[kMaxTexels / 2], out float weight[kMaxTexels / 2]) {
+// One axis: tap positions (texels from the base texel) and weights, pairing texels k and k + 1,
+// in the components of two vec4s (kMaxTexels / 2 = 4 taps at most): arrays indexed by a
+// varying count cost llvmpipe a memory round trip per element.
+int tentTaps(float s, float h, out vec4 position, out vec4 weight) {
   ivec2 range = tentTexels(s, h);
-  int taps = 0;
-  for (int k = range.x; k <= range.y && taps < kMaxTexels / 2; k += 2) {
+  int taps = min((range.y - range.x + 2) / 2, kMaxTexels / 2);
+  for (int i = 0; i < kMaxTexels / 2; ++i) {  // a constant count: unrolled, the components fixed
+    int k = range.x + 2 * i;
     float a = tentWeight(float(k), s, h);
     float b = k + 1 <= range.y ? tentWeight(float(k + 1), s, h) : 0.0;
-    weight[taps] = a + b;  // > 0: the tent is positive on every texel of the range
-    position[taps] = float(k) + b / max(a + b, 1e-6);
-    ++taps;
+    weight[i] = a + b;  // > 0 within the range: the tent is positive on every texel of it
+    position[i] = float(k) + b / max(a + b, 1e-6);
   }
   return taps;
 }
 
 float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
-  float px[kMaxTexels / 2], wx[kMaxTexels / 2], py[kMaxTexels / 2], wy[kMaxTexels / 2];
+  vec4 px, wx, py, wy;
   int nx = tentTaps(s.x, h, px, wx), ny = tentTaps(s.y, h, py, wy);
   float lit = 0.0, total = 0.0;
   for (int j = 0; j < ny; ++j)
