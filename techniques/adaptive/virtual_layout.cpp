@@ -125,18 +125,18 @@ class VirtualState : public LayoutState {
       for (int i = 0; i < pages_.flatSize(); ++i)
         if (pages_.tileOf(i) >= 0) draw_.push_back(i);
     }
+    std::vector<int> drawnTiles;
+    for (int page : draw_) drawnTiles.push_back(pages_.tileOf(page));
+    bend_.tilesDrawn(drawnTiles);
     for (ShadowLayerDraw& layer : layers) {
       layer.tiled = true;
       layer.tiles.clear();
-      drawnTiles_.clear();
       for (size_t k = 0; k < draw_.size(); ++k) {
-        const int t = pages_.tileOf(draw_[k]);
-        drawnTiles_.push_back(t);
+        const int t = drawnTiles[k];
         const int x = (t % sizes_.poolSide) * sizes_.page, y = (t / sizes_.poolSide) * sizes_.page;
         layer.tiles.push_back({glm::ivec4(x, y, sizes_.page, sizes_.page), pageTransform(static_cast<int>(k))});
       }
     }
-    bend_.tilesDrawn(drawnTiles_);
   }
 
  private:
@@ -302,9 +302,8 @@ class VirtualState : public LayoutState {
   int criterion_ = 0;  // virtual.criterion's index, this frame
   bool fitted_ = false;
   double fitMs_ = 0.0;
-  int droppedByMotion_ = 0;      // pages dropped this frame because objects over them moved
-  std::vector<int> draw_;        // flat page indices the shadow pass draws this frame
-  std::vector<int> drawnTiles_;  // their atlas tiles
+  int droppedByMotion_ = 0;  // pages dropped this frame because objects over them moved
+  std::vector<int> draw_;    // flat page indices the shadow pass draws this frame
   VirtualDepthBend bend_;
   GLuint bendTexture_ = 0;  // what the marking and the views read this frame (0: none)
   GLuint marks_ = 0, grid_ = 0, table_ = 0;
