@@ -39,13 +39,19 @@ vec2 visibilityTermAt(vec3 P, vec3 N, vec3 F, out vec4 coord) {
   // The layout picks the view(s) at the surface point; the bias is applied within each view.
   ShadowCoord pick = layoutShadowCoord(P);
   if (pick.view < 0) return vec2(1.0, 0.0);
-  vec2 result = shadowTestIn(P, N, F, cosTheta, pick.view, coord);
-  if (pick.view2 >= 0 && pick.weight2 > 0.0) {
+  // With a second view blended in, its test runs first: the first view's lookup, the one at
+  // coord, is the last, so that the view, receiver plane and lookup state later lookups at coord
+  // read (visibilityUnambiguous) are its own.
+  vec2 second = vec2(0.0);
+  float blend = pick.view2 >= 0 ? clamp(pick.weight2, 0.0, 1.0) : 0.0;
+  if (blend > 0.0) {
     vec4 coord2;
-    result = mix(result, shadowTestIn(P, N, F, cosTheta, pick.view2, coord2), clamp(pick.weight2, 0.0, 1.0));
-    sl_view = pick.view;  // coord is the first view's: later lookups at it read that view's values
+    second = shadowTestIn(P, N, F, cosTheta, pick.view2, coord2);
   }
-  return result;
+  vec2 result = shadowTestIn(P, N, F, cosTheta, pick.view, coord);
+  if (blend <= 0.0) return result;
+  sl_view = pick.view;  // when the first view's point was off its map, too
+  return mix(result, second, blend);
 }
 
 vec2 visibilityTerm(vec3 P, vec3 N, vec3 F) {
@@ -62,6 +68,11 @@ vec2 visibilityTerm(vec3 P, vec3 N, vec3 F) {
 // `coord` (from visibilityTermAt): no rasterization (jitter) of this map could change the answer.
 bool visibilityUnambiguous(vec4 coord, float f) {
   if (coord.z < -1.0) return true;
+#ifdef SL_REPRESENTATION_SAME_BESIDE
+  // The representation repeats its last lookup, the one at coord (visibilityTermAt makes it
+  // last), moved by whole texels.
+  return representationSameBeside(f, 0.01);
+#else
   float texel = 1.0 / u_shadowMapSize;
   bool same = true;
   for (int k = 0; k < 4; ++k) {
@@ -69,4 +80,5 @@ bool visibilityUnambiguous(vec4 coord, float f) {
     same = same && abs(representationVisibility(vec3(uv, coord.w), coord.z) - f) <= 0.01;
   }
   return same;
+#endif
 }

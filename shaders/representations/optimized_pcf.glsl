@@ -47,23 +47,76 @@ int tentTaps(float s, float h, out vec4 position, out vec4 weight) {
   return taps;
 }
 
-float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
+// One lookup's taps: where they fall around its base texel and how they weigh.
+struct TentTaps {
+  vec2 base;
   vec4 px, wx, py, wy;
-  int nx = tentTaps(s.x, h, px, wx), ny = tentTaps(s.y, h, py, wy);
+  int nx, ny;
+  vec2 size;
+  float layer, receiverDepth;
+  vec4 range;
+};
+
+// The lookup representationVisibility made last, kept so that lookups whole texels beside it
+// (representationSameBeside) share its set-up: a software rasterizer runs any code once per
+// group of pixels even where none of them needs it, and the set-up is most of one lookup.
+TentTaps sl_lastTent;
+
+// The tent's visibility with its taps moved by whole texels (shift; 0: the lookup itself).
+float tentSum(TentTaps t, vec2 shift) {
   float lit = 0.0, total = 0.0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
+  for (int j = 0; j < t.ny; ++j)
+    for (int i = 0; i < t.nx; ++i) {
       // Kept inside the view's atlas square (lightViewTapIn): a tap at its edge texel's centre
       // reads that texel alone, as a layer of its own clamps.
-      vec2 uv = lightViewTapIn((base + vec2(px[i], py[j]) + 0.5) / size, range);
+      vec2 uv = lightViewTapIn((t.base + shift + vec2(t.px[i], t.py[j]) + 0.5) / t.size, t.range);
       // A tap compares four texels: the receiver's plane at the one it falls in, less the
       // plane's change over one texel (receiver-plane bias; other modes leave the depth as is).
-      float depth = receiverDepthForFootprint(receiverDepthAt(receiverDepth, uv, size), size);
-      float w = wx[i] * wy[j];
-      lit += w * texture(u_shadowMap, vec4(uv, layer, depth));
+      float depth = receiverDepthForFootprint(receiverDepthAt(t.receiverDepth, uv, t.size), t.size);
+      float w = t.wx[i] * t.wy[j];
+      lit += w * texture(u_shadowMap, vec4(uv, t.layer, depth));
       total += w;
     }
   return lit / max(total, 1e-6);
+}
+
+float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
+  TentTaps t;
+  t.base = base;
+  t.nx = tentTaps(s.x, h, t.px, t.wx);
+  t.ny = tentTaps(s.y, h, t.py, t.wy);
+  t.size = size;
+  t.layer = layer;
+  t.receiverDepth = receiverDepth;
+  t.range = range;
+  sl_lastTent = t;
+  return tentSum(t, vec2(0.0));
+}
+
+// Whether the last lookup's tent gives f (within tolerance) at the four positions one texel
+// diagonally around it: its taps moved by whole texels, in one loop over all of them (a
+// neighbour's sub-texel offset, and so its taps and weights, are the lookup's own).
+#define SL_REPRESENTATION_SAME_BESIDE
+bool representationSameBeside(float f, float tolerance) {
+  TentTaps t = sl_lastTent;
+  vec4 lit = vec4(0.0), total = vec4(0.0);
+  int i = 0, j = 0;  // counted, not divided out of n: llvmpipe divides integers lane by lane
+  for (int k = 0; k < 4;) {
+    vec2 shift = vec2(k & 1, k >> 1) * 2.0 - 1.0;
+    vec2 uv = lightViewTapIn((t.base + shift + vec2(t.px[i], t.py[j]) + 0.5) / t.size, t.range);
+    float depth = receiverDepthForFootprint(receiverDepthAt(t.receiverDepth, uv, t.size), t.size);
+    float w = t.wx[i] * t.wy[j];
+    lit[k] += w * texture(u_shadowMap, vec4(uv, t.layer, depth));
+    total[k] += w;
+    if (++i == t.nx) {
+      i = 0;
+      if (++j == t.ny) {
+        j = 0;
+        ++k;
+      }
+    }
+  }
+  return all(lessThanEqual(abs(lit / max(total, vec4(1e-6)) - f), vec4(tolerance)));
 }
 #endif
 
