@@ -51,23 +51,38 @@ bool virtualNearDepthDiscontinuity(vec2 uv) {
 
 // Whether last frame's visibility changes within two pixels (a shadow edge passes here): some
 // value of the 5x5 window around the pixel differs from the centre by more than 0.25, or lies
-// strictly between 0.02 and 0.98. The marking pass reads the same from a shared tile
-// (passes/virtual_mark.comp); this is the views' per-pixel form.
+// strictly between 0.02 and 0.98. Read as nine gathers of 2x2 texels (6x6, the sixth row and
+// column left out), clamped at the image's border (the texture clamps to its edge): "some value
+// differs from the centre by more than 0.25" is "the window's largest value exceeds the centre by
+// more than 0.25, or the centre its smallest", NaN values left out of both (they fail the
+// comparison there too). 25 fetches per pixel, or a shared tile per work group with two
+// barriers, cost the marking pass more (docs/performance.md).
+vec3 virtualEdgeWindowWith(vec3 window, float v) {
+  bool soft = v > 0.02 && v < 0.98;
+  return v == v ? vec3(min(window.x, v), max(window.y, v), max(window.z, soft ? 1.0 : 0.0)) : window;
+}
+
 bool virtualNearShadowEdge(ivec2 pixel) {
   if (u_hasPreviousVisibility == 0) return true;
-  ivec2 size = textureSize(u_previousVisibility, 0);
-  float centre = texelFetch(u_previousVisibility, clamp(pixel, ivec2(0), size - 1), 0).x;
-  for (int y = -2; y <= 2; ++y)
-    for (int x = -2; x <= 2; ++x) {
-      float v = texelFetch(u_previousVisibility, clamp(pixel + ivec2(x, y), ivec2(0), size - 1), 0).x;
-      if (abs(v - centre) > 0.25 || (v > 0.02 && v < 0.98)) return true;  // a step, or a soft edge
+  vec2 size = vec2(textureSize(u_previousVisibility, 0));
+  vec3 a = vec3(1e30, -1e30, 0.0);  // smallest, largest, 1 if a soft value
+  float centre = 0.0;
+  for (int gy = 0; gy < 3; ++gy)
+    for (int gx = 0; gx < 3; ++gx) {
+      // At texel corner k a gather reads texels k - 1 and k along each axis: pixel - 2 + 2 g and
+      // the one after it. Components: w (x0, y0), z (x1, y0), x (x0, y1), y (x1, y1).
+      vec4 g = textureGather(u_previousVisibility, vec2(pixel + ivec2(2 * gx - 1, 2 * gy - 1)) / size, 0);
+      a = virtualEdgeWindowWith(a, g.w);
+      if (gx < 2) a = virtualEdgeWindowWith(a, g.z);
+      if (gy < 2) a = virtualEdgeWindowWith(a, g.x);
+      if (gx < 2 && gy < 2) a = virtualEdgeWindowWith(a, g.y);
+      if (gx == 1 && gy == 1) centre = g.w;
     }
-  return false;
+  return a.z > 0.5 || a.y - centre > 0.25 || centre - a.x > 0.25;
 }
 
 // -1 when the pixel is not covered or falls off the map; uv: where it falls in the virtual map.
-// nearShadowEdge: virtualNearShadowEdge(pixel), read by the edges criterion only (the marking
-// pass has it from a shared tile: passes/virtual_mark.comp).
+// nearShadowEdge: virtualNearShadowEdge(pixel), read by the edges criterion only.
 int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearShadowEdge, out vec2 uv) {
   uv = vec2(-1.0);
   // The distance criterion replaces the footprint by the world size: only one of them is
@@ -85,7 +100,7 @@ int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearSha
   return level;
 }
 
-// The same with the shadow-edge test per pixel (the views' form).
+// The level a pixel asks for (the marking pass and the views).
 int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
   bool edge = virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && virtualNearShadowEdge(pixel);
   return virtualRequestedLevelNearEdge(gPosition, pixel, edge, uv);
