@@ -29,6 +29,28 @@ TEST(FrameGraph, RunsOnlyPassesThatReachASink) {
   EXPECT_EQ(ran, (std::vector<std::string>{"gbuffer", "shadowmap", "visibility", "shade"}));
 }
 
+// A pass writing several resources asks, while it runs, which of them something live reads (the
+// G-buffer pass draws positions alone when only they are read).
+TEST(FrameGraph, PassLearnsWhichOfItsOutputsAreNeeded) {
+  FrameGraph g;
+  bool wholeNeeded = true, positionsNeeded = false;
+  g.add({"gbuffer", {}, {"gbuffer", "gbuffer.position"}, [&] {
+           wholeNeeded = g.neededLive("gbuffer");
+           positionsNeeded = g.neededLive("gbuffer.position");
+         }});
+  g.add({"marking", {"gbuffer.position"}, {"pages"}, [] {}});
+  g.add({"view.texels", {"gbuffer"}, {"view.texels"}, [] {}});
+  g.requestSink("pages");
+  g.execute([](const Pass&, const std::function<void()>& run) { run(); });
+  EXPECT_FALSE(wholeNeeded) << "the view is culled: nothing live reads the whole G-buffer";
+  EXPECT_TRUE(positionsNeeded);
+  g.requestSink("view.texels");
+  g.execute([](const Pass&, const std::function<void()>& run) { run(); });
+  EXPECT_TRUE(wholeNeeded);
+  g.requestSink("gbuffer");  // read back after the frame
+  EXPECT_TRUE(g.neededLive("gbuffer"));
+}
+
 TEST(FrameGraph, ShownDebugViewAddsExactlyItsPass) {
   std::vector<std::string> ran;
   FrameGraph g = exampleGraph(ran);

@@ -15,6 +15,15 @@ bool FrameGraph::requested(const std::string& resource) const {
   return std::find(sinks_.begin(), sinks_.end(), resource) != sinks_.end();
 }
 
+bool FrameGraph::neededLive(const std::string& resource) const {
+  if (requested(resource)) return true;
+  const std::vector<bool> live = liveMask();
+  for (size_t k = 0; k < passes_.size(); ++k)
+    if (live[k] && std::find(passes_[k].reads.begin(), passes_[k].reads.end(), resource) != passes_[k].reads.end())
+      return true;
+  return false;
+}
+
 void FrameGraph::importResource(const std::string& resource) { imports_.push_back(resource); }
 
 void FrameGraph::createTexture(const std::string& resource, const TextureDesc& desc) {

@@ -49,7 +49,11 @@ class FrameGraph {
   void add(Pass pass);
   void requestSink(const std::string& resource);      // something shown or read back needs it
   bool requested(const std::string& resource) const;  // requested as a sink so far (setup phase)
-  void importResource(const std::string& resource);   // lives across frames (e.g. last frame's history)
+  // Whether anything that runs needs `resource`: a requested sink, or a read of a live pass. A
+  // pass writing several resources asks it while it runs, to make only what is needed (the
+  // G-buffer drawn as positions alone when nothing reads the rest).
+  bool neededLive(const std::string& resource) const;
+  void importResource(const std::string& resource);  // lives across frames (e.g. last frame's history)
   // A texture the graph owns for this frame: lent to the first live pass that uses it, taken back
   // after the last. Written before it is read, like any resource; contents do not survive.
   void createTexture(const std::string& resource, const TextureDesc& desc);

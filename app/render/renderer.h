@@ -243,7 +243,9 @@ class Renderer {
   void drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const ProgramSpec& spec, int view,
                        std::vector<bool>& begun, double time);
   void drawFullscreen();
-  void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev);
+  // positionsOnly: only the world-position target (and depth) is written, the others keep what
+  // they held; for frames whose passes read positions alone (resource "gbuffer.position").
+  void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev, bool positionsOnly = false);
   std::string shadePrelude() const;  // defines of the deferred shade pass
   // u_gPosition, u_gNormal, u_gAlbedo, u_gSurface; and with a visibility (u_visibility).
   void bindGBuffer(const Program& p, TextureUnits& units) const;
@@ -259,6 +261,7 @@ class Renderer {
   Framebuffer gFbo_, gFboMotion_;  // without and with the motion target
   bool gHasMotion_ = false;        // this frame's G-buffer writes motion
   bool gbufferFresh_ = false;
+  bool gbufferDrawnWhole_ = false;  // this frame's G-buffer pass wrote every target
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;
   // Bumped by setScene and by a resize: every previous frame of an older epoch is a cut.

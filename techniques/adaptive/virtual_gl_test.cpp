@@ -81,6 +81,39 @@ TEST(VirtualShadowMap, MarksPagesDrawsThemAndKeepsThemCached) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The page marking reads world positions alone ("gbuffer.position"): when nothing else that
+// runs reads the G-buffer (the bench, the explorer while moving), its pass writes that target
+// alone, and the pages, so the image, are the same as with the whole G-buffer drawn.
+TEST(VirtualShadowMap, MarkingNeedsOnlyTheGBuffersPositions) {
+  test::GlHarness h;
+  Scene scene = loadScene("columns", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  auto visibilityOf = [&](bool keepGBuffer) {
+    h.renderer.keepGBuffer = keepGBuffer;
+    Viewport vp(makeTechnique("adaptive", {}));
+    FrameInput in;
+    in.camera = scene.cameras.front();
+    in.width = kVirtualW;
+    in.height = kVirtualH;
+    for (int f = 0; f < 3; ++f) h.renderer.render(in, {&vp});  // edges: last frame's visibility too
+    std::vector<std::string> passes;
+    for (const auto& p : h.renderer.stats().passes) passes.push_back(p.name);
+    EXPECT_NE(std::find(passes.begin(), passes.end(), "gbuffer"), passes.end()) << "keep " << keepGBuffer;
+    EXPECT_EQ(h.renderer.hasFreshGBuffer(), keepGBuffer) << "a G-buffer of positions alone is no G-buffer to read back";
+    return vp.visibilityTexture()->readFloats(2);
+  };
+  const std::vector<float> positionsOnly = visibilityOf(false);
+  const std::vector<float> whole = visibilityOf(true);
+  h.renderer.keepGBuffer = true;
+  ASSERT_EQ(positionsOnly.size(), whole.size());
+  EXPECT_EQ(positionsOnly, whole);
+  long long shadowedPixels = 0;
+  for (size_t i = 0; i < whole.size(); i += 2) shadowedPixels += whole[i] < 0.5f;
+  EXPECT_GT(shadowedPixels, 100) << "the case has shadows whose pages the marking asked for";
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 TEST(VirtualShadowMap, MovingTheLightRedrawsThePages) {
   test::GlHarness h;
   Scene scene = loadScene("columns", defaultAssetsDir());

@@ -110,7 +110,8 @@ class VirtualState : public LayoutState {
   std::vector<std::string> addPasses(FrameGraph& graph, const PartContext& ctx) override {
     ensureGpu();
     const std::string res = "virtual.pages" + ctx.viewportTag;
-    graph.add({res, {"gbuffer"}, {res}, [this, ctx] { markAndAllocate(ctx); }});
+    // The marking reads world positions alone: the G-buffer pass then skips its other targets.
+    graph.add({res, {"gbuffer.position"}, {res}, [this, ctx] { markAndAllocate(ctx); }});
     for (int v = 0; v < 3; ++v) addViewPass(graph, ctx, v, res);
     return {res};
   }
