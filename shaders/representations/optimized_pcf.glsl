@@ -99,6 +99,10 @@ float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float r
 #define SL_REPRESENTATION_SAME_BESIDE
 bool representationSameBeside(float f, float tolerance) {
   TentTaps t = sl_lastTent;
+  // At least one tap per axis (as tentTaps gives for any finite offset): the loop below moves
+  // to the next shift only after nx * ny taps, so an empty axis would never end it.
+  t.nx = clamp(t.nx, 1, kMaxTexels / 2);
+  t.ny = clamp(t.ny, 1, kMaxTexels / 2);
   vec4 lit = vec4(0.0), total = vec4(0.0);
   int i = 0, j = 0;  // counted, not divided out of n: llvmpipe divides integers lane by lane
   for (int k = 0; k < 4;) {
