@@ -355,7 +355,6 @@ void Renderer::executeTimed(const FrameGraph& graph) {
     GLuint q[2] = {queries[k].first, queries[k].second};
     glDeleteQueries(2, q);
   }
-  gbufferFresh_ = gbufferDrawnWhole_;
   if (timePasses && !useGpuTimer) glFinish();
   stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
   if (useGpuTimer) {
@@ -393,10 +392,10 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
   // One pass makes "gbuffer" (every target) and "gbuffer.position" (world positions and
   // coverage, what the virtual maps' page marking reads): when nothing that runs reads the rest,
   // it draws the positions alone.
-  gbufferDrawnWhole_ = false;
+  gbufferFresh_ = false;
   graph.add({"gbuffer", {}, {"gbuffer", "gbuffer.position"}, [this, &in, &graph] {
-               gbufferDrawnWhole_ = graph.neededLive("gbuffer");
-               drawGBuffer(proj_ * view_, in.time, prev_, !gbufferDrawnWhole_);
+               gbufferFresh_ = graph.neededLive("gbuffer");
+               drawGBuffer(proj_ * view_, in.time, prev_, !gbufferFresh_);
              }});
   if (keepGBuffer) graph.requestSink("gbuffer");
   for (size_t i = 0; i < viewports.size(); ++i) {

@@ -260,8 +260,7 @@ class Renderer {
   std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gSurface_, gMotion_, gDepth_;
   Framebuffer gFbo_, gFboMotion_;  // without and with the motion target
   bool gHasMotion_ = false;        // this frame's G-buffer writes motion
-  bool gbufferFresh_ = false;
-  bool gbufferDrawnWhole_ = false;  // this frame's G-buffer pass wrote every target
+  bool gbufferFresh_ = false;      // this frame's G-buffer pass wrote every target
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;
   // Bumped by setScene and by a resize: every previous frame of an older epoch is a cut.
