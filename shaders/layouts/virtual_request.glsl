@@ -81,9 +81,9 @@ bool virtualNearShadowEdge(ivec2 pixel) {
   return a.z > 0.5 || a.y - centre > 0.25 || centre - a.x > 0.25;
 }
 
-// -1 when the pixel is not covered or falls off the map; uv: where it falls in the virtual map.
-// nearShadowEdge: virtualNearShadowEdge(pixel), read by the edges criterion only.
-int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearShadowEdge, out vec2 uv) {
+// The level a pixel asks for under the criterion (the marking pass and the views); -1 when the
+// pixel is not covered or falls off the map. uv: where it falls in the virtual map.
+int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
   uv = vec2(-1.0);
   // The distance criterion replaces the footprint by the world size: only one of them is
   // computed (the criterion is a constant), the coverage test is the same.
@@ -94,14 +94,8 @@ int virtualRequestedLevelNearEdge(sampler2D gPosition, ivec2 pixel, bool nearSha
   uv = virtualUv(texelFetch(gPosition, pixel, 0).xyz).xy;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return -1;
   int level = virtualLevelFor(footprint);
-  if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !nearShadowEdge) ||
+  if ((virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && !virtualNearShadowEdge(pixel)) ||
       (distance && !virtualNearDepthDiscontinuity(uv)))
     level = min(level + int(u_virtual_edge_coarsen + 0.5), SL_VIRTUAL_LEVELS - 1);
   return level;
-}
-
-// The level a pixel asks for (the marking pass and the views).
-int virtualRequestedLevel(sampler2D gPosition, ivec2 pixel, out vec2 uv) {
-  bool edge = virtualCriterionIs(SL_VIRTUAL_CRITERION_EDGES) && virtualNearShadowEdge(pixel);
-  return virtualRequestedLevelNearEdge(gPosition, pixel, edge, uv);
 }

@@ -62,22 +62,24 @@ struct TentTaps {
 // group of pixels even where none of them needs it, and the set-up is most of one lookup.
 TentTaps sl_lastTent;
 
+// Tap (i, j) of the tent moved by whole texels (shift): its weight, and its compare times it.
+vec2 tentTap(TentTaps t, vec2 shift, int i, int j) {
+  // Kept inside the view's atlas square (lightViewTapIn): a tap at its edge texel's centre
+  // reads that texel alone, as a layer of its own clamps.
+  vec2 uv = lightViewTapIn((t.base + shift + vec2(t.px[i], t.py[j]) + 0.5) / t.size, t.range);
+  // A tap compares four texels: the receiver's plane at the one it falls in, less the
+  // plane's change over one texel (receiver-plane bias; other modes leave the depth as is).
+  float depth = receiverDepthForFootprint(receiverDepthAt(t.receiverDepth, uv, t.size), t.size);
+  float w = t.wx[i] * t.wy[j];
+  return vec2(w * texture(u_shadowMap, vec4(uv, t.layer, depth)), w);
+}
+
 // The tent's visibility with its taps moved by whole texels (shift; 0: the lookup itself).
 float tentSum(TentTaps t, vec2 shift) {
-  float lit = 0.0, total = 0.0;
+  vec2 sum = vec2(0.0);  // lit, total weight
   for (int j = 0; j < t.ny; ++j)
-    for (int i = 0; i < t.nx; ++i) {
-      // Kept inside the view's atlas square (lightViewTapIn): a tap at its edge texel's centre
-      // reads that texel alone, as a layer of its own clamps.
-      vec2 uv = lightViewTapIn((t.base + shift + vec2(t.px[i], t.py[j]) + 0.5) / t.size, t.range);
-      // A tap compares four texels: the receiver's plane at the one it falls in, less the
-      // plane's change over one texel (receiver-plane bias; other modes leave the depth as is).
-      float depth = receiverDepthForFootprint(receiverDepthAt(t.receiverDepth, uv, t.size), t.size);
-      float w = t.wx[i] * t.wy[j];
-      lit += w * texture(u_shadowMap, vec4(uv, t.layer, depth));
-      total += w;
-    }
-  return lit / max(total, 1e-6);
+    for (int i = 0; i < t.nx; ++i) sum += tentTap(t, shift, i, j);
+  return sum.x / max(sum.y, 1e-6);
 }
 
 float tentVisibility(vec2 base, vec2 s, float h, vec2 size, float layer, float receiverDepth, vec4 range) {
@@ -106,12 +108,9 @@ bool representationSameBeside(float f, float tolerance) {
   vec4 lit = vec4(0.0), total = vec4(0.0);
   int i = 0, j = 0;  // counted, not divided out of n: llvmpipe divides integers lane by lane
   for (int k = 0; k < 4;) {
-    vec2 shift = vec2(k & 1, k >> 1) * 2.0 - 1.0;
-    vec2 uv = lightViewTapIn((t.base + shift + vec2(t.px[i], t.py[j]) + 0.5) / t.size, t.range);
-    float depth = receiverDepthForFootprint(receiverDepthAt(t.receiverDepth, uv, t.size), t.size);
-    float w = t.wx[i] * t.wy[j];
-    lit[k] += w * texture(u_shadowMap, vec4(uv, t.layer, depth));
-    total[k] += w;
+    vec2 tap = tentTap(t, vec2(k & 1, k >> 1) * 2.0 - 1.0, i, j);
+    lit[k] += tap.x;
+    total[k] += tap.y;
     if (++i == t.nx) {
       i = 0;
       if (++j == t.ny) {
