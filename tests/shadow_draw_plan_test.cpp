@@ -31,6 +31,19 @@ TEST(ShadowDrawPlan, WarpedViewsTessellateTheCastersMatrixViewsDoNot) {
   EXPECT_EQ(warped.back().second, "passes/shadow_custom.frag");
 }
 
+// Only the log warp's views sort their casters before tessellating (shadowmap.split_patches);
+// the sorted plain triangles are drawn by the same stages without the tessellation ones.
+TEST(ShadowDrawPlan, OnlyLogWarpedViewsSortTheirCastersOutOfTessellation) {
+  using P = LightView::Projection;
+  EXPECT_EQ(casterSortStage(spaceOf({P::Matrix, P::LogWarp})), "passes/warp_classify.comp");
+  EXPECT_EQ(casterSortStage(spaceOf({P::Matrix})), "");
+  EXPECT_EQ(casterSortStage(spaceOf({P::Paraboloid})), "");
+  const auto plain = withoutTessellation(casterStages(spaceOf({P::LogWarp}), "passes/shadow.frag"));
+  ASSERT_EQ(plain.size(), 2u);
+  EXPECT_EQ(plain[0].second, "passes/shadow.vert");
+  EXPECT_EQ(plain[1].second, "passes/shadow.frag");
+}
+
 TEST(ShadowDrawPlan, TileClipIsItsPageTransformAfterTheLayer) {
   ShadowTile tile;
   tile.transform = glm::vec4(4.0f, 4.0f, 1.0f, -3.0f);  // a quarter-size page, offset

@@ -34,4 +34,17 @@ std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& light
           {GL_FRAGMENT_SHADER, fragment}};
 }
 
+std::string casterSortStage(const LightSpace& lightSpace) {
+  const bool warped = std::any_of(lightSpace.views.begin(), lightSpace.views.end(),
+                                  [](const LightView& v) { return v.projection == LightView::Projection::LogWarp; });
+  return warped ? "passes/warp_classify.comp" : "";
+}
+
+std::vector<std::pair<GLenum, std::string>> withoutTessellation(std::vector<std::pair<GLenum, std::string>> stages) {
+  std::erase_if(stages, [](const auto& stage) {
+    return stage.first == GL_TESS_CONTROL_SHADER || stage.first == GL_TESS_EVALUATION_SHADER;
+  });
+  return stages;
+}
+
 }  // namespace sl

@@ -51,6 +51,9 @@ struct ShadowLayerDraw {
 
 struct ShadowDrawPlan {
   std::vector<std::pair<GLenum, std::string>> stages;
+  // A compute stage that sorts each instance's triangles into those the tessellation stages
+  // must cut and those drawn without them (empty: every triangle goes through `stages`).
+  std::string sortStage;
   CasterSet casters = CasterSet::All;
   std::vector<ShadowLayerDraw> layers;  // one per light view
 };
@@ -59,5 +62,10 @@ struct ShadowDrawPlan {
 // stages when a view is not a projective map (LightView::Projection::LogWarp and ::Paraboloid
 // bend straight edges), then `fragment`.
 std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment);
+// The sorting stage for those stages (shadowmap.split_patches): passes/warp_classify.comp for a
+// LogPSM view, whose triangles mostly need no pieces; none otherwise.
+std::string casterSortStage(const LightSpace& lightSpace);
+// `stages` without their tessellation stages: how the sorted plain triangles are drawn.
+std::vector<std::pair<GLenum, std::string>> withoutTessellation(std::vector<std::pair<GLenum, std::string>> stages);
 
 }  // namespace sl

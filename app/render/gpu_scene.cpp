@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "gl/gl_util.h"
+#include "gl/storage_blocks.h"
 #include "scene/scene_effects.h"
 
 #include <algorithm>
@@ -42,6 +43,12 @@ GpuScene::GpuScene(const Scene& s) : scene(s) {
     label(GL_BUFFER, g.ibo, name + " indices");
     meshes.push_back(g);
   }
+  GLuint first = 0;  // drawSorted's lists: each instance's two lists, each as long as its indices
+  for (const Instance& inst : s.instances) {
+    sortedFirst_.push_back(first);
+    first += 2 * static_cast<GLuint>(meshes[static_cast<size_t>(inst.mesh)].indexCount);
+  }
+  sortedSlots_ = first;
   for (const Texture& t : s.textures) {
     GLuint tex = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &tex);
@@ -65,6 +72,8 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &g.vbo);
     glDeleteBuffers(1, &g.ibo);
   }
+  if (sortedIndices_) glDeleteBuffers(1, &sortedIndices_);
+  if (sortedCommands_) glDeleteBuffers(1, &sortedCommands_);
   if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
 }
 
@@ -117,46 +126,136 @@ bool outsideWindow(const glm::mat4& viewProj, const glm::mat4& model, glm::vec3 
 
 }  // namespace
 
-void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only,
-                    const glm::mat4* cullTo) const {
-  const GLenum mode = programs.patches() ? GL_PATCHES : GL_TRIANGLES;
-  if (mode == GL_PATCHES) glPatchParameteri(GL_PATCH_VERTICES, 3);
-  for (int variant = 0; variant < 4; ++variant) {
-    const Program* program = nullptr;
-    bool asked = false;
+std::vector<GpuScene::Drawn> GpuScene::drawnInstances(double time, Only only, const glm::mat4* cullTo) const {
+  std::vector<Drawn> drawn;
+  for (int variant = 0; variant < 4; ++variant)
     for (size_t index = 0; index < scene.instances.size(); ++index) {
       const Instance& inst = scene.instances[index];
       const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
-      const Material& mat = scene.materials[static_cast<size_t>(m.material)];
-      if (materialVariant(mat) != variant) continue;
+      if (materialVariant(scene.materials[static_cast<size_t>(m.material)]) != variant) continue;
       if (only != Only::All && (only == Only::SemiTransparent) != instanceSemiTransparent(scene, index)) continue;
       const GpuMesh& g = meshes[static_cast<size_t>(inst.mesh)];
       const glm::mat4 model = inst.transformAt(time);
       if (cullTo && outsideWindow(*cullTo, model, g.boundsMin, g.boundsMax)) continue;
-      if (!asked) {
-        program = programs.get(variant);
-        asked = true;
-      }
-      if (!program) break;                                    // its error is reported by the shader library
-      program->set("u_instanceId", static_cast<int>(index));  // G-buffer surface ids
-      program->set("u_model", model);
-      program->set("u_prevModel", inst.transformAt(prevTime));
-      program->set("u_baseColor", mat.baseColor);
-      program->set("u_alphaCutoff", mat.alphaCutoff);
-      if (mat.baseColorTexture >= 0)
-        programs.units().bind(*program, "u_baseColorTexture", textures[static_cast<size_t>(mat.baseColorTexture)]);
-      if (cullFace && !mat.doubleSided) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(cullFace);
-      } else {
-        glDisable(GL_CULL_FACE);
-      }
-      glBindVertexArray(g.vao);
-      glDrawElements(mode, g.indexCount, GL_UNSIGNED_INT, nullptr);
+      drawn.push_back({index, variant, model});
     }
+  return drawn;
+}
+
+void GpuScene::setInstance(PassPrograms& programs, const Program& program, const Drawn& d, double prevTime,
+                           GLenum cullFace) const {
+  const Instance& inst = scene.instances[d.index];
+  const Material& mat = scene.materials[static_cast<size_t>(scene.meshes[static_cast<size_t>(inst.mesh)].material)];
+  program.set("u_instanceId", static_cast<int>(d.index));  // G-buffer surface ids
+  program.set("u_model", d.model);
+  program.set("u_prevModel", inst.transformAt(prevTime));
+  program.set("u_baseColor", mat.baseColor);
+  program.set("u_alphaCutoff", mat.alphaCutoff);
+  if (mat.baseColorTexture >= 0)
+    programs.units().bind(program, "u_baseColorTexture", textures[static_cast<size_t>(mat.baseColorTexture)]);
+  if (cullFace && !mat.doubleSided) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(cullFace);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+}
+
+void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace, Only only,
+                    const glm::mat4* cullTo) const {
+  const GLenum mode = programs.patches() ? GL_PATCHES : GL_TRIANGLES;
+  if (mode == GL_PATCHES) glPatchParameteri(GL_PATCH_VERTICES, 3);
+  const Program* program = nullptr;
+  int variant = -1;
+  for (const Drawn& d : drawnInstances(time, only, cullTo)) {
+    if (d.variant != variant) program = programs.get(variant = d.variant);
+    if (!program) continue;  // its error is reported by the shader library
+    setInstance(programs, *program, d, prevTime, cullFace);
+    const GpuMesh& g = meshes[static_cast<size_t>(scene.instances[d.index].mesh)];
+    glBindVertexArray(g.vao);
+    glDrawElements(mode, g.indexCount, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
+}
+
+// Each drawn instance's triangles are sorted into its two lists by one dispatch, then every
+// instance draws its plain list with `plain` and its patch list with `patches` from the commands
+// the dispatches counted; the lists replace the mesh's indices for those draws.
+void GpuScene::drawSorted(PassPrograms& patches, PassPrograms& plain, const Program& sort, double time, GLenum cullFace,
+                          Only only, const glm::mat4* cullTo) const {
+  const std::vector<Drawn> drawn = drawnInstances(time, only, cullTo);
+  constexpr GLuint kCommandUints = 5;  // a DrawElementsIndirectCommand
+  if (!sortedIndices_) {
+    glCreateBuffers(1, &sortedIndices_);
+    glNamedBufferStorage(sortedIndices_, static_cast<GLsizeiptr>(std::max(sortedSlots_, 1u) * sizeof(GLuint)), nullptr,
+                         0);
+    glCreateBuffers(1, &sortedCommands_);
+    glNamedBufferStorage(
+        sortedCommands_,
+        static_cast<GLsizeiptr>(std::max<size_t>(scene.instances.size(), 1) * 2 * kCommandUints * sizeof(GLuint)),
+        nullptr, GL_DYNAMIC_STORAGE_BIT);
+    label(GL_BUFFER, sortedIndices_, "casters sorted for tessellation: indices");
+    label(GL_BUFFER, sortedCommands_, "casters sorted for tessellation: commands");
+  }
+  // Counts 0, one instance, each list's first index; base vertex and instance 0.
+  std::vector<GLuint> commands(scene.instances.size() * 2 * kCommandUints, 0);
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const GLuint count = static_cast<GLuint>(meshes[static_cast<size_t>(scene.instances[i].mesh)].indexCount);
+    GLuint* c = &commands[i * 2 * kCommandUints];
+    c[1] = c[kCommandUints + 1] = 1;
+    c[2] = sortedFirst_[i];
+    c[kCommandUints + 2] = sortedFirst_[i] + count;
+  }
+  if (!commands.empty())
+    glNamedBufferSubData(sortedCommands_, 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)),
+                         commands.data());
+  sort.use();
+  bindStorage("SplitIndices", sortedIndices_);
+  bindStorage("SplitCommands", sortedCommands_);
+  for (const Drawn& d : drawn) {
+    const GpuMesh& g = meshes[static_cast<size_t>(scene.instances[d.index].mesh)];
+    bindStorage("CasterVertices", g.vbo);
+    bindStorage("CasterIndices", g.ibo);
+    sort.set("u_model", d.model);
+    sort.set("u_triangles", static_cast<int>(g.indexCount / 3));
+    sort.set("u_command", static_cast<int>(d.index * 2 * kCommandUints));
+    sort.set("u_plainFirst", static_cast<int>(sortedFirst_[d.index]));
+    sort.set("u_patchFirst", static_cast<int>(sortedFirst_[d.index] + static_cast<GLuint>(g.indexCount)));
+    glDispatchCompute(static_cast<GLuint>((g.indexCount / 3 + 63) / 64), 1, 1);
+  }
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sortedCommands_);
+  for (const Drawn& d : drawn) {
+    const GpuMesh& g = meshes[static_cast<size_t>(scene.instances[d.index].mesh)];
+    glBindVertexArray(g.vao);
+    glVertexArrayElementBuffer(g.vao, sortedIndices_);
+    for (int list = 0; list < 2; ++list) {
+      PassPrograms& programs = list == 0 ? plain : patches;
+      const Program* program = programs.get(d.variant);
+      if (!program) continue;  // its error is reported by the shader library
+      setInstance(programs, *program, d, time, cullFace);
+      const GLintptr offset =
+          static_cast<GLintptr>((d.index * 2 + static_cast<size_t>(list)) * kCommandUints * sizeof(GLuint));
+      glDrawElementsIndirect(list == 0 ? GL_TRIANGLES : GL_PATCHES, GL_UNSIGNED_INT,
+                             reinterpret_cast<const void*>(offset));
+    }
+    glVertexArrayElementBuffer(g.vao, g.ibo);
+  }
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  glBindVertexArray(0);
+  glDisable(GL_CULL_FACE);
+}
+
+glm::ivec2 GpuScene::sortedTriangles() const {
+  if (!sortedCommands_) return glm::ivec2(0);
+  std::vector<GLuint> commands(scene.instances.size() * 10);
+  glGetNamedBufferSubData(sortedCommands_, 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)),
+                          commands.data());
+  glm::ivec2 triangles(0);
+  for (size_t c = 0; c < commands.size(); c += 5) triangles[(c / 5) % 2] += static_cast<int>(commands[c] / 3);
+  return triangles;
 }
 
 }  // namespace sl

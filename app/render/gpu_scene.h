@@ -63,10 +63,34 @@ struct GpuScene {
   // never culled (casters toward the light must stay).
   void draw(PassPrograms& programs, double time, double prevTime, GLenum cullFace = 0, Only only = Only::All,
             const glm::mat4* cullTo = nullptr) const;
+  // The same draw of a tessellated pass (`patches`) with each drawn instance's triangles first
+  // sorted by `sort` (passes/warp_classify.comp, bound with the pass's uniforms): those it puts
+  // in the plain list are drawn by `plain`, the same pass without tessellation stages, the rest
+  // as patches, both from indirect commands the sorting wrote (nothing read back).
+  void drawSorted(PassPrograms& patches, PassPrograms& plain, const Program& sort, double time, GLenum cullFace,
+                  Only only, const glm::mat4* cullTo) const;
+  // The triangles the last drawSorted drew plain (x) and as patches (y), read back.
+  glm::ivec2 sortedTriangles() const;
 
   const Scene& scene;
   std::vector<GpuMesh> meshes;
   std::vector<GLuint> textures;
+
+ private:
+  // The instances drawn, in the order draw() uses (material variant, then instance).
+  struct Drawn {
+    size_t index;
+    int variant;
+    glm::mat4 model;
+  };
+  std::vector<Drawn> drawnInstances(double time, Only only, const glm::mat4* cullTo) const;
+  void setInstance(PassPrograms& programs, const Program& program, const Drawn& d, double prevTime,
+                   GLenum cullFace) const;
+  // drawSorted's lists (two slots of each instance's index count) and commands (two per
+  // instance), made on first use.
+  mutable GLuint sortedIndices_ = 0, sortedCommands_ = 0;
+  std::vector<GLuint> sortedFirst_;  // per instance: its first slot in sortedIndices_
+  GLuint sortedSlots_ = 0;
 };
 
 }  // namespace sl

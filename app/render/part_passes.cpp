@@ -13,6 +13,7 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
   const CasterDraw casters = vp.technique.representation->casterDraw();
   ShadowDrawPlan plan;
   plan.stages = casterStages(vp.lightSpace, casters.fragment);
+  if (vp.frameParams_.b("shadowmap.split_patches")) plan.sortStage = casterSortStage(vp.lightSpace);
   plan.casters = casters.casters;
   plan.layers.resize(vp.lightSpace.views.size());
   vp.layout->planShadowLayers(plan.layers, vp.representation->keepsLayers());
@@ -72,11 +73,23 @@ void Renderer::drawShadowLayer(Viewport& vp, const ShadowDrawPlan& plan, const P
   const ShadowLayerDraw& draw = plan.layers[size_t(view)];
   bindShadowLayerFor(vp, plan, view, begun);
   if (!draw.tiled) {
-    PassPrograms programs(shaders_, spec, [this, &vp, view](const Program& p, TextureUnits& units) {
+    const ProgramSetup setup = [this, &vp, view](const Program& p, TextureUnits& units) {
       bindTechnique(p, units, vp);
       p.set("u_shadowView", view);
-    });
-    gpu_->draw(programs, time, time, cull, only, cullTo);
+    };
+    PassPrograms programs(shaders_, spec, setup);
+    Program* sort = plan.sortStage.empty()
+                        ? nullptr
+                        : &shaders_.get({spec.name + " sort", {{GL_COMPUTE_SHADER, plan.sortStage}}, spec.prelude});
+    if (sort && sort->valid()) {
+      PassPrograms plain(shaders_, {spec.name + " plain", withoutTessellation(spec.stages), spec.prelude}, setup);
+      sort->use();
+      TextureUnits units;
+      setup(*sort, units);
+      gpu_->drawSorted(programs, plain, *sort, time, cull, only, cullTo);
+    } else {
+      gpu_->draw(programs, time, time, cull, only, cullTo);
+    }
     return;
   }
   // A piecewise layer (bound without clearing when the representation keeps its layers):

@@ -138,6 +138,8 @@ bool Renderer::defaultValidateFrameGraph() {
   return std::string_view(SHADOWLAB_BUILD_TYPE) == "Debug" || (env && std::string_view(env) == "1");
 }
 
+glm::ivec2 Renderer::sortedCasterTriangles() const { return gpu_ ? gpu_->sortedTriangles() : glm::ivec2(0); }
+
 Renderer::Renderer(ShaderLibrary& shaders) : shaders_(shaders) {
   glCreateVertexArrays(1, &emptyVao_);
   label(GL_VERTEX_ARRAY, emptyVao_, "fullscreen triangle");

@@ -158,6 +158,9 @@ class Renderer {
   // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
   bool keepGBuffer = true;
   bool hasFreshGBuffer() const { return gbufferFresh_; }  // the last frame drew the G-buffer
+  // The caster triangles the last sorted shadow draw (shadowmap.split_patches) drew plain and as
+  // patches, over its instances; read back from the GPU (for tests and measurements, not frames).
+  glm::ivec2 sortedCasterTriangles() const;
   // Check every frame's wiring before it runs (FrameGraph::compile: a pass reading what no
   // earlier pass writes, two passes of one name); a mistake throws std::logic_error. On in debug
   // builds and in every GL test (tests/gl_test_util.h), or with SHADOWLAB_VALIDATE_GRAPH=1.
