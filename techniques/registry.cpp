@@ -81,12 +81,6 @@ const std::vector<ParamDecl>& commonParams() {
          .defaultValue = 1,
          .help = "skip, per light view (each cascade, face or layer), instances whose bounds lie outside its window: "
                  "they cannot cast into it (same image, less drawing)"},
-        {.key = "shadowmap.split_patches",
-         .type = ParamType::Bool,
-         .defaultValue = 1,
-         .help = "where a light view bends edges (LogPSM), draw the casters none of whose edges it cuts without "
-                 "the tessellation stages: a compute pass sorts each instance's triangles every frame (same image; "
-                 "a software tessellator runs per patch whatever the levels)"},
         {.key = "bias.mode",
          .type = ParamType::Enum,
          .defaultValue = 2,

@@ -31,13 +31,17 @@ TEST(ShadowDrawPlan, WarpedViewsTessellateTheCastersMatrixViewsDoNot) {
   EXPECT_EQ(warped.back().second, "passes/shadow_custom.frag");
 }
 
-// Only the log warp's views sort their casters before tessellating (shadowmap.split_patches);
+// Only the log warp's views sort their casters before tessellating (logpsm.sort_casters);
 // the sorted plain triangles are drawn by the same stages without the tessellation ones.
 TEST(ShadowDrawPlan, OnlyLogWarpedViewsSortTheirCastersOutOfTessellation) {
   using P = LightView::Projection;
-  EXPECT_EQ(casterSortStage(spaceOf({P::Matrix, P::LogWarp})), "passes/warp_classify.comp");
-  EXPECT_EQ(casterSortStage(spaceOf({P::Matrix})), "");
-  EXPECT_EQ(casterSortStage(spaceOf({P::Paraboloid})), "");
+  LightSpace sorting = spaceOf({P::Matrix, P::LogWarp});
+  EXPECT_EQ(casterSortStage(sorting), "");  // the view does not ask for it
+  sorting.views.back().sortCasters = true;
+  EXPECT_EQ(casterSortStage(sorting), "passes/warp_classify.comp");
+  LightSpace others = spaceOf({P::Matrix, P::Paraboloid});
+  for (LightView& v : others.views) v.sortCasters = true;
+  EXPECT_EQ(casterSortStage(others), "");
   const auto plain = withoutTessellation(casterStages(spaceOf({P::LogWarp}), "passes/shadow.frag"));
   ASSERT_EQ(plain.size(), 2u);
   EXPECT_EQ(plain[0].second, "passes/shadow.vert");

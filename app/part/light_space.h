@@ -48,6 +48,9 @@ struct LightView {
   // their edges follow the bend; shadow_draw_plan.h).
   enum class Projection { Matrix, LogWarp, Paraboloid };
   Projection projection = Projection::Matrix;
+  // A LogWarp view's casters are sorted before the shadow pass, those none of whose edges need
+  // pieces drawn without the tessellation stages (ShadowDrawPlan::sortStage; logpsm.sort_casters).
+  bool sortCasters = false;
   // A paraboloid view's window fitted to what the camera sees of its hemisphere: map xy = (disk
   // xy - .xy) * .zw, disk xy the hemisphere's image scaled by 1 / kParaboloidWindow (below); .zw
   // the zoom along x and y, equal unless point.fit_visible fits the axes apart.

@@ -35,8 +35,9 @@ std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& light
 }
 
 std::string casterSortStage(const LightSpace& lightSpace) {
-  const bool warped = std::any_of(lightSpace.views.begin(), lightSpace.views.end(),
-                                  [](const LightView& v) { return v.projection == LightView::Projection::LogWarp; });
+  const bool warped = std::any_of(lightSpace.views.begin(), lightSpace.views.end(), [](const LightView& v) {
+    return v.projection == LightView::Projection::LogWarp && v.sortCasters;
+  });
   return warped ? "passes/warp_classify.comp" : "";
 }
 

@@ -62,8 +62,8 @@ struct ShadowDrawPlan {
 // stages when a view is not a projective map (LightView::Projection::LogWarp and ::Paraboloid
 // bend straight edges), then `fragment`.
 std::vector<std::pair<GLenum, std::string>> casterStages(const LightSpace& lightSpace, const std::string& fragment);
-// The sorting stage for those stages (shadowmap.split_patches): passes/warp_classify.comp for a
-// LogPSM view, whose triangles mostly need no pieces; none otherwise.
+// The sorting stage for those stages: passes/warp_classify.comp where a LogWarp view asks for it
+// (LightView::sortCasters); none otherwise.
 std::string casterSortStage(const LightSpace& lightSpace);
 // `stages` without their tessellation stages: how the sorted plain triangles are drawn.
 std::vector<std::pair<GLenum, std::string>> withoutTessellation(std::vector<std::pair<GLenum, std::string>> stages);

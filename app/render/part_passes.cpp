@@ -13,7 +13,7 @@ ShadowDrawPlan Renderer::shadowDrawPlan(Viewport& vp) const {
   const CasterDraw casters = vp.technique.representation->casterDraw();
   ShadowDrawPlan plan;
   plan.stages = casterStages(vp.lightSpace, casters.fragment);
-  if (vp.frameParams_.b("shadowmap.split_patches")) plan.sortStage = casterSortStage(vp.lightSpace);
+  plan.sortStage = casterSortStage(vp.lightSpace);
   plan.casters = casters.casters;
   plan.layers.resize(vp.lightSpace.views.size());
   vp.layout->planShadowLayers(plan.layers, vp.representation->keepsLayers());

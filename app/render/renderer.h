@@ -158,7 +158,7 @@ class Renderer {
   // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
   bool keepGBuffer = true;
   bool hasFreshGBuffer() const { return gbufferFresh_; }  // the last frame drew the G-buffer
-  // The caster triangles the last sorted shadow draw (shadowmap.split_patches) drew plain and as
+  // The caster triangles the last sorted shadow draw (logpsm.sort_casters) drew plain and as
   // patches, over its instances; read back from the GPU (for tests and measurements, not frames).
   glm::ivec2 sortedCasterTriangles() const;
   // Check every frame's wiring before it runs (FrameGraph::compile: a pass reading what no

@@ -1,7 +1,7 @@
 // Caster patches of a warped shadow map (LogPSM: layouts/logpsm.glsl): each edge is split into
 // pieces whose chords stay within u_logpsm_max_error texels of the warped curve
 // (passes/warp_levels.glsl says how many). Where the sorting pass runs
-// (shadowmap.split_patches), only triangles with an edge of more than one piece come here.
+// (logpsm.sort_casters), only triangles with an edge of more than one piece come here.
 layout(vertices = 3) out;
 in vec3 v_world[];
 in vec2 v_uv[];

@@ -1,5 +1,5 @@
 // Sorts one instance's caster triangles for a warped light view (LogPSM) before the shadow pass
-// draws them (shadowmap.split_patches): a triangle none of whose edges needs more than one piece
+// draws them (logpsm.sort_casters): a triangle none of whose edges needs more than one piece
 // goes to the plain list, drawn without tessellation stages; the others go to the patch list; one
 // wholly beyond a side of the map goes to neither. passes/warp_levels.glsl decides, with the
 // control stage's own corners, so each triangle is drawn as the tessellated pass alone would draw

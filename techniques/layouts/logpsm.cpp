@@ -174,7 +174,10 @@ LogFit logFit(const LayoutInput& in) {
 LogFit logFitWarped(const LayoutInput& in) {
   LogFit fit = logFit(in);
   if (layoutLight(in).type == Light::Type::Spot) return fit;
-  for (LightView& v : fit.space.views) v.projection = LightView::Projection::LogWarp;
+  for (LightView& v : fit.space.views) {
+    v.projection = LightView::Projection::LogWarp;
+    v.sortCasters = in.params->b("logpsm.sort_casters");
+  }
   return fit;
 }
 
@@ -241,7 +244,13 @@ class LogPsmLayout : public Layout {
              .type = ParamType::Bool,
              .defaultValue = 1,
              .help = "subdivide casters before warping them (off: each triangle drawn straight between its warped "
-                     "corners, as a plain rasterizer would: bent shadow edges, for teaching)"}};
+                     "corners, as a plain rasterizer would: bent shadow edges, for teaching)"},
+            {.key = "logpsm.sort_casters",
+             .type = ParamType::Bool,
+             .defaultValue = 1,
+             .help = "draw the casters none of whose edges need pieces without the tessellation stages: a compute "
+                     "pass sorts each instance's triangles every frame (same map; a software tessellator runs per "
+                     "patch whatever its levels)"}};
   }
   LightSpace compute(const LayoutInput& in) const override { return logFitWarped(in).space; }
   std::unique_ptr<LayoutState> createState() const override { return std::make_unique<LogPsmState>(*this); }

@@ -131,7 +131,7 @@ TEST(LogPsmGl, CoarseInteriorsWithSolvedFragmentsMatchTheReferenceWithThePerspec
   }
 }
 
-// shadowmap.split_patches: a compute pass sorts the casters whose edges need no pieces out of
+// logpsm.sort_casters: a compute pass sorts the casters whose edges need no pieces out of
 // the tessellated draw (passes/warp_classify.comp, deciding by passes/warp_levels.glsl as the
 // control stage does) and the plain pipeline draws them: the same shadow map up to rounding, with
 // triangles in both lists. Measured: at most 7.5e-7 apart (the tessellator hands the rasterizer
@@ -139,7 +139,7 @@ TEST(LogPsmGl, CoarseInteriorsWithSolvedFragmentsMatchTheReferenceWithThePerspec
 // to the bit), while triangles of two pieces drawn plain put texels 0.48 apart. (Visibility alone
 // would not show that: it changed no pixel of these frames.)
 std::vector<float> logpsmMap(test::GlHarness& h, const Scene& scene, const std::string& split) {
-  Viewport vp(makeTechnique("logpsm", {"shadowmap.size=512", "shadowmap.split_patches=" + split}));
+  Viewport vp(makeTechnique("logpsm", {"shadowmap.size=512", "logpsm.sort_casters=" + split}));
   FrameInput in;
   in.camera = scene.cameras.front();
   in.width = 160;
