@@ -6,6 +6,7 @@
 // layoutShadowCoord (picks the view(s) for a point), layoutShadowCoordIn, layoutTexelWorldSize
 // and layoutDepthScale per view.
 #include "common/light_views.glsl"
+#define SL_LAYOUT_DEPTH_AFFINE  // layoutDepth: light-view linear depth (passes/caster_depth.glsl)
 // uv is clip.xy / clip.w of the view's matrix (common/receiver_plane.glsl relies on it); not under
 // LogPSM's warp, and the dual paraboloid (which includes this module) takes it back.
 #ifndef SL_LOG_WARP

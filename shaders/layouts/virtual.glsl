@@ -5,6 +5,7 @@
 // resident page, so a point whose page is missing (pool exhausted) reads a coarser one.
 // layoutShadowCoord returns atlas uv, so the representations' depth tests run unchanged.
 #include "layouts/virtual_common.glsl"
+#define SL_LAYOUT_DEPTH_AFFINE  // layoutDepth: light-view linear depth (passes/caster_depth.glsl)
 uniform float u_shadowMapSize;  // atlas texels per side
 uniform int u_shadowView;
 uniform vec4 u_pageTransform;  // shadow pass: clip xy * .xy + w * .zw maps one page to the viewport

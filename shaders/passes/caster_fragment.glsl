@@ -10,10 +10,16 @@ struct CasterFragment {
 #ifdef SL_LOG_WARP
 #include "passes/warp_caster.glsl"
 #endif
+#include "passes/caster_depth.glsl"
+#ifdef SL_CASTER_DEPTH_VARYING
+in float v_casterDepth;
+#endif
 
 CasterFragment casterFragment(vec3 interpolatedWorld, vec2 interpolatedUv) {
 #ifdef SL_LOG_WARP
   return warpCasterFragment(interpolatedWorld, interpolatedUv);
+#elif defined(SL_CASTER_DEPTH_VARYING)
+  return CasterFragment(v_casterDepth, interpolatedUv, true);
 #else
   return CasterFragment(layoutDepth(interpolatedWorld), interpolatedUv, true);
 #endif

@@ -4,6 +4,10 @@ layout(location = 2) in vec2 a_uv;
 uniform mat4 u_model;
 out vec3 v_world;
 out vec2 v_uv;
+#include "passes/caster_depth.glsl"
+#ifdef SL_CASTER_DEPTH_VARYING
+out float v_casterDepth;  // the layout's stored depth (passes/caster_depth.glsl)
+#endif
 #ifdef SL_LOG_WARP
 #include "passes/warp_caster_outputs.glsl"
 #endif
@@ -13,6 +17,9 @@ void main() {
   v_world = world.xyz;
   v_uv = a_uv;
   gl_Position = layoutClip(world.xyz);
+#ifdef SL_CASTER_DEPTH_VARYING
+  v_casterDepth = layoutDepth(world.xyz);
+#endif
 #ifdef SL_LOG_WARP
   warpCasterNotSolved();  // read only where no tessellation stage follows (warp_caster.glsl)
 #endif
