@@ -19,14 +19,7 @@ std::vector<float> shadowDepth(const std::string& shaderDir, const std::string& 
   test::GlHarness h(shaderDir);
   const Scene scene = loadScene(sceneName, defaultAssetsDir());
   h.renderer.setScene(scene);
-  Viewport vp(makeTechnique(preset, {"shadowmap.size=512"}));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return vp.representation->depthTexture()->readFloats(1);
+  return test::renderShadowDepth(h, scene, preset, {"shadowmap.size=512"});
 }
 
 }  // namespace

@@ -133,6 +133,20 @@ inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& pre
   return readFrame(h.renderer, vp, w, hgt);
 }
 
+// The shadow map's depth (every layer, rows bottom-up) after one 160x90 frame of `preset` from
+// the scene's first camera; the scene must be set on h.renderer.
+inline std::vector<float> renderShadowDepth(GlHarness& h, const Scene& scene, const std::string& preset,
+                                            const std::vector<std::string>& sets) {
+  Viewport vp(makeTechnique(preset, sets));
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 160;
+  in.height = 90;
+  h.renderer.render(in, {&vp});
+  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  return vp.representation->depthTexture()->readFloats(1);
+}
+
 // Copies the shader folder to a temp dir (hot-reload tests edit the copy, never the source).
 inline std::string copyShaders(const std::string& name) {
   std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / name;

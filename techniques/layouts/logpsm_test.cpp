@@ -138,15 +138,8 @@ TEST(LogPsmGl, CoarseInteriorsWithSolvedFragmentsMatchTheReferenceWithThePerspec
 // a level-1 patch's corners in another order; the visibility of every frame compared is the same
 // to the bit), while triangles of two pieces drawn plain put texels 0.48 apart. (Visibility alone
 // would not show that: it changed no pixel of these frames.)
-std::vector<float> logpsmMap(test::GlHarness& h, const Scene& scene, const std::string& split) {
-  Viewport vp(makeTechnique("logpsm", {"shadowmap.size=512", "logpsm.sort_casters=" + split}));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
-  return vp.representation->depthTexture()->readFloats(1);
+std::vector<float> logpsmMap(test::GlHarness& h, const Scene& scene, const std::string& sort) {
+  return test::renderShadowDepth(h, scene, "logpsm", {"shadowmap.size=512", "logpsm.sort_casters=" + sort});
 }
 
 TEST(LogPsmGl, SortedCastersDrawTheSameMapAsTessellatingEveryOne) {
