@@ -119,17 +119,23 @@ inline void renderFromCut(GlHarness& h, FrameInput in, Viewport& vp, int frames 
   }
 }
 
-// One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.
-inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset,
-                        const std::vector<std::string>& sets, int w, int hgt) {
-  h.renderer.setScene(scene);
-  Viewport vp(makeTechnique(preset, sets));
+// One frame of `vp` from the scene's first camera (the scene set on h.renderer); the shaders
+// must build.
+inline void renderFirstCamera(GlHarness& h, const Scene& scene, Viewport& vp, int w, int hgt) {
   FrameInput in;
   in.camera = scene.cameras.front();
   in.width = w;
   in.height = hgt;
   h.renderer.render(in, {&vp});
   EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+}
+
+// One frame of `preset` (with `sets`) from the scene's first camera, read back with its G-buffer.
+inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& preset,
+                        const std::vector<std::string>& sets, int w, int hgt) {
+  h.renderer.setScene(scene);
+  Viewport vp(makeTechnique(preset, sets));
+  renderFirstCamera(h, scene, vp, w, hgt);
   return readFrame(h.renderer, vp, w, hgt);
 }
 
@@ -138,12 +144,7 @@ inline Frame renderOnce(GlHarness& h, const Scene& scene, const std::string& pre
 inline std::vector<float> renderShadowDepth(GlHarness& h, const Scene& scene, const std::string& preset,
                                             const std::vector<std::string>& sets) {
   Viewport vp(makeTechnique(preset, sets));
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
-  h.renderer.render(in, {&vp});
-  EXPECT_TRUE(h.shaders.errors().empty()) << (h.shaders.errors().empty() ? "" : h.shaders.errors().front());
+  renderFirstCamera(h, scene, vp, 160, 90);
   return vp.representation->depthTexture()->readFloats(1);
 }
 
