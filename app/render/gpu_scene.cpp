@@ -43,12 +43,13 @@ GpuScene::GpuScene(const Scene& s) : scene(s) {
     label(GL_BUFFER, g.ibo, name + " indices");
     meshes.push_back(g);
   }
-  GLuint first = 0;  // drawSorted's lists: each instance's two lists, each as long as its indices
+  // drawSorted's lists: each instance's two, each as long as its indices.
   for (const Instance& inst : s.instances) {
-    sortedFirst_.push_back(first);
-    first += 2 * static_cast<GLuint>(meshes[static_cast<size_t>(inst.mesh)].indexCount);
+    const GLuint count = static_cast<GLuint>(meshes[static_cast<size_t>(inst.mesh)].indexCount);
+    sortedCommandsAtStart_.insert(sortedCommandsAtStart_.end(),
+                                  {0, 1, sortedSlots_, 0, 0, 0, 1, sortedSlots_ + count, 0, 0});
+    sortedSlots_ += 2 * count;
   }
-  sortedSlots_ = first;
   for (const Texture& t : s.textures) {
     GLuint tex = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &tex);
@@ -109,6 +110,8 @@ const Program* PassPrograms::get(int variant) {
 }
 
 namespace {
+
+constexpr size_t kCommandUints = 5;  // a DrawElementsIndirectCommand (drawSorted)
 
 // True when the box (object space, placed by `model`) lies wholly outside one side of the clip
 // window of `viewProj` in x or y, every corner in front of the projection (w > 0).
@@ -185,28 +188,18 @@ void GpuScene::draw(PassPrograms& programs, double time, double prevTime, GLenum
 void GpuScene::drawSorted(PassPrograms& patches, PassPrograms& plain, const Program& sort, double time, GLenum cullFace,
                           Only only, const glm::mat4* cullTo) const {
   const std::vector<Drawn> drawn = drawnInstances(time, only, cullTo);
-  constexpr GLuint kCommandUints = 5;  // a DrawElementsIndirectCommand
   if (!sortedIndices_) {
     glCreateBuffers(1, &sortedIndices_);
     glNamedBufferStorage(sortedIndices_, static_cast<GLsizeiptr>(std::max(sortedSlots_, 1u) * sizeof(GLuint)), nullptr,
                          0);
     glCreateBuffers(1, &sortedCommands_);
-    glNamedBufferStorage(
-        sortedCommands_,
-        static_cast<GLsizeiptr>(std::max<size_t>(scene.instances.size(), 1) * 2 * kCommandUints * sizeof(GLuint)),
-        nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(sortedCommands_,
+                         static_cast<GLsizeiptr>(std::max<size_t>(sortedCommandsAtStart_.size(), 1) * sizeof(GLuint)),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
     label(GL_BUFFER, sortedIndices_, "casters sorted for tessellation: indices");
     label(GL_BUFFER, sortedCommands_, "casters sorted for tessellation: commands");
   }
-  // Counts 0, one instance, each list's first index; base vertex and instance 0.
-  std::vector<GLuint> commands(scene.instances.size() * 2 * kCommandUints, 0);
-  for (size_t i = 0; i < scene.instances.size(); ++i) {
-    const GLuint count = static_cast<GLuint>(meshes[static_cast<size_t>(scene.instances[i].mesh)].indexCount);
-    GLuint* c = &commands[i * 2 * kCommandUints];
-    c[1] = c[kCommandUints + 1] = 1;
-    c[2] = sortedFirst_[i];
-    c[kCommandUints + 2] = sortedFirst_[i] + count;
-  }
+  const std::vector<GLuint>& commands = sortedCommandsAtStart_;
   if (!commands.empty())
     glNamedBufferSubData(sortedCommands_, 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)),
                          commands.data());
@@ -219,9 +212,10 @@ void GpuScene::drawSorted(PassPrograms& patches, PassPrograms& plain, const Prog
     bindStorage("CasterIndices", g.ibo);
     sort.set("u_model", d.model);
     sort.set("u_triangles", static_cast<int>(g.indexCount / 3));
-    sort.set("u_command", static_cast<int>(d.index * 2 * kCommandUints));
-    sort.set("u_plainFirst", static_cast<int>(sortedFirst_[d.index]));
-    sort.set("u_patchFirst", static_cast<int>(sortedFirst_[d.index] + static_cast<GLuint>(g.indexCount)));
+    const size_t command = d.index * 2 * kCommandUints;
+    sort.set("u_command", static_cast<int>(command));
+    sort.set("u_plainFirst", static_cast<int>(commands[command + 2]));
+    sort.set("u_patchFirst", static_cast<int>(commands[command + kCommandUints + 2]));
     glDispatchCompute(static_cast<GLuint>((g.indexCount / 3 + 63) / 64), 1, 1);
   }
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
@@ -250,11 +244,12 @@ void GpuScene::drawSorted(PassPrograms& patches, PassPrograms& plain, const Prog
 
 glm::ivec2 GpuScene::sortedTriangles() const {
   if (!sortedCommands_) return glm::ivec2(0);
-  std::vector<GLuint> commands(scene.instances.size() * 10);
+  std::vector<GLuint> commands(sortedCommandsAtStart_.size());
   glGetNamedBufferSubData(sortedCommands_, 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)),
                           commands.data());
   glm::ivec2 triangles(0);
-  for (size_t c = 0; c < commands.size(); c += 5) triangles[(c / 5) % 2] += static_cast<int>(commands[c] / 3);
+  for (size_t c = 0; c < commands.size(); c += kCommandUints)
+    triangles[(c / kCommandUints) % 2] += static_cast<int>(commands[c] / 3);
   return triangles;
 }
 

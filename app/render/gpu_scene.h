@@ -89,7 +89,10 @@ struct GpuScene {
   // drawSorted's lists (two slots of each instance's index count) and commands (two per
   // instance), made on first use.
   mutable GLuint sortedIndices_ = 0, sortedCommands_ = 0;
-  std::vector<GLuint> sortedFirst_;  // per instance: its first slot in sortedIndices_
+  // Each frame's commands before the sort counts: per instance its plain list's
+  // DrawElementsIndirectCommand, then its patch list's (count 0, one instance, the list's first
+  // slot in sortedIndices_, base vertex and instance 0).
+  std::vector<GLuint> sortedCommandsAtStart_;
   GLuint sortedSlots_ = 0;
 };
 
