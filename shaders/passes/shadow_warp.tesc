@@ -44,10 +44,10 @@ void main() {
   tc_world[gl_InvocationID] = v_world[gl_InvocationID];
   tc_uv[gl_InvocationID] = v_uv[gl_InvocationID];
   if (gl_InvocationID == 0) {
-    float delta = lightViewSplit[u_shadowView].w;
-    float c = delta > 0.0 ? logWarpLog1p(1.0 / delta) : 1.0;
+    vec2 warp = warpDeltaAndC();
+    float delta = warp.x, c = warp.y;
     vec4 c0 = patchClip(0), c1 = patchClip(1), c2 = patchClip(2);
-    vec3 levels = warpEdgeLevels(c0, c1, c2);  // outer level i is the edge opposite vertex i
+    vec3 levels = warpEdgeLevels(c0, c1, c2, warp);  // outer level i is the edge opposite vertex i
     gl_TessLevelOuter[0] = levels.x;
     gl_TessLevelOuter[1] = levels.y;
     gl_TessLevelOuter[2] = levels.z;

@@ -39,7 +39,7 @@ void main() {
   uint triangle = gl_GlobalInvocationID.x;
   if (triangle >= uint(u_triangles)) return;
   uvec3 corner = uvec3(casterIndex[3u * triangle], casterIndex[3u * triangle + 1u], casterIndex[3u * triangle + 2u]);
-  vec3 levels = warpEdgeLevels(cornerClip(corner.x), cornerClip(corner.y), cornerClip(corner.z));
+  vec3 levels = warpEdgeLevels(cornerClip(corner.x), cornerClip(corner.y), cornerClip(corner.z), warpDeltaAndC());
   // GL discards a patch with a level that is not positive or is NaN; so does this pass.
   if (!all(greaterThan(levels, vec3(0.0)))) return;
   bool patches = max(levels.x, max(levels.y, levels.z)) > 1.0;

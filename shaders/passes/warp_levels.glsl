@@ -56,12 +56,17 @@ bool patchOffMap(vec4 a, vec4 b, vec4 c) {
   return max(x.x, max(x.y, x.z)) < -1.0 || min(x.x, min(x.y, x.z)) > 1.0;
 }
 
-// The outer levels of the triangle with these corners' clip positions in view u_shadowView,
-// level i for the edge opposite corner i; (0, 0, 0) when it lies wholly beyond one side of the
-// map (not drawn).
-vec3 warpEdgeLevels(vec4 c0, vec4 c1, vec4 c2) {
-  if (patchOffMap(c0, c1, c2)) return vec3(0.0);
+// View u_shadowView's log warp: δ (0: none) and C = ln(1 + 1/δ) (1 without a warp).
+vec2 warpDeltaAndC() {
   float delta = lightViewSplit[u_shadowView].w;
-  float c = delta > 0.0 ? logWarpLog1p(1.0 / delta) : 1.0;
+  return vec2(delta, delta > 0.0 ? logWarpLog1p(1.0 / delta) : 1.0);
+}
+
+// The outer levels of the triangle with these corners' clip positions in view u_shadowView
+// (warp: warpDeltaAndC()), level i for the edge opposite corner i; (0, 0, 0) when it lies wholly
+// beyond one side of the map (not drawn).
+vec3 warpEdgeLevels(vec4 c0, vec4 c1, vec4 c2, vec2 warp) {
+  if (patchOffMap(c0, c1, c2)) return vec3(0.0);
+  float delta = warp.x, c = warp.y;
   return vec3(edgeLevel(c1, c2, delta, c), edgeLevel(c2, c0, delta, c), edgeLevel(c0, c1, delta, c));
 }
