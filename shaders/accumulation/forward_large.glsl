@@ -5,8 +5,9 @@
 // its pixels over every core. forwardLargeDraw is that draw's indirect command
 // (accumulation/forward_splat_args.comp writes it).
 struct ForwardLarge {
-  uvec4 where;    // texel (x | y << 16), the rectangle's first and last pixel (x | y << 16), 0
-  vec4 sampleAt;  // the texel's sample (world)
+  // The texel (x | y << 16), the rectangle's first and last pixel (x | y << 16), and the sample's
+  // depth in the light view (layoutDepthIn; floatBitsToUint).
+  uvec4 where;
 };
 layout(std430) buffer ForwardLargeSplats {
   uint forwardLargeCount;    // appended this frame (beyond the capacity: those were tested inline)

@@ -3,7 +3,7 @@
 // rasterizer covers exactly the pixels the texel pass would have looped over.
 #include "accumulation/forward_large.glsl"
 uniform vec2 u_screenSize;
-flat out vec3 v_sample;
+flat out float v_sampleDepth;
 flat out vec2 v_texel;
 
 void main() {
@@ -12,6 +12,6 @@ void main() {
   const ivec2 corner[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
   vec2 pixel = mix(lo, hi, vec2(corner[gl_VertexID]));
   gl_Position = vec4(pixel / u_screenSize * 2.0 - 1.0, 0.0, 1.0);
-  v_sample = splat.sampleAt.xyz;
+  v_sampleDepth = uintBitsToFloat(splat.where.w);
   v_texel = vec2(unpackPair(splat.where.x)) + 0.5;
 }

@@ -4,10 +4,13 @@
 // forward mapping where one light texel spans more than a splat of eye pixels.
 //
 // As an accumulation: the renderer's shadow pass makes the light view (depth map); the G-buffer
-// is the eye view's depth buffer; one compute pass sends every light texel (its world position
-// rebuilt from the depth it stores) into the eye view and tests the pixels of its splat
-// (forward.splat pixels, or its footprint with forward.grow), writing the visibility target;
-// splats of many pixels are drawn as rectangles instead, by the rasterizer.
+// is the eye view's depth buffer. A splat (forward.splat pixels, or its texel's footprint with
+// forward.grow) lights only pixels whose surface falls in its own texel, so by default one
+// compute pass finds the lit pixels per eye pixel, from the splats of the texels its surface
+// falls in (the gather); forward.scatter runs Zhang's order instead, every light texel sent into
+// the eye view and the pixels of its splat tested, splats of many pixels drawn as rectangles by
+// the rasterizer: the same image (a test compares them pixel for pixel), four to five times the
+// work at 1280x720. Either writes the visibility target.
 // The renderer's visibility test (the backward nearest test) runs only for the `forward-holes`
 // view, which compares the two; the deferred shade pass lights the G-buffer with the splats.
 #include "reconstruction/reconstruction.h"
@@ -30,6 +33,7 @@ class ForwardState : public AccumulationState {
   ~ForwardState() override {
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (large_) glDeleteBuffers(1, &large_);
+    if (mapToClip_) glDeleteBuffers(1, &mapToClip_);
   }
   std::vector<std::string> views() const override { return {"forward-holes"}; }
   AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) override;
@@ -38,56 +42,119 @@ class ForwardState : public AccumulationState {
  private:
   void splat(const AccumulationContext& c);
   void ensureLargeSplats();
-  void markOffMap(const AccumulationContext& c, Program& offMap);
+  void ensureReceivers(int width, int height);
+  static void setSplatUniforms(const AccumulationContext& c, const Program& p, int mapSize);
+  void gather(const AccumulationContext& c, const std::string& prelude, int mapSize);
+  void scatter(const AccumulationContext& c, const std::string& prelude, int mapSize);
+  void prepareReceivers(const AccumulationContext& c, Program& receivers, int mapSize);
   void drawLargeSplats(const AccumulationContext& c, Program& quads);
   // Large splats (accumulation/forward_large.glsl: a count and the draw's command in 32 bytes,
-  // then 32 bytes a splat): 8 MB; a splat that does not fit is tested in the texel pass.
+  // then 16 bytes a splat): 4 MB; a splat that does not fit is tested in the texel pass.
   static constexpr int kLargeCapacity = 1 << 18;
+  // Each eye pixel's receiver record for the scatter (accumulation/forward_receivers.comp), RGBA32F.
+  std::unique_ptr<Texture2D> receivers_;
+  // The matrices from a texel's sample to the eye's clip space (accumulation/forward_splat.glsl,
+  // MapToClip: two mat4 and three vec4), written as a storage block and read as uniform block 2.
+  static constexpr GLsizeiptr kMapToClipBytes = 2 * 64 + 3 * 16;
+  static constexpr GLuint kMapToClipBinding = 2;
   GLuint vao_ = 0;
   GLuint large_ = 0;
+  GLuint mapToClip_ = 0;
   long long points_ = 0;
 };
 
 void ForwardState::ensureLargeSplats() {
   if (large_) return;
   glCreateBuffers(1, &large_);
-  glNamedBufferData(large_, 32 + GLsizeiptr(kLargeCapacity) * 32, nullptr, GL_DYNAMIC_DRAW);
+  glNamedBufferData(large_, 32 + GLsizeiptr(kLargeCapacity) * 16, nullptr, GL_DYNAMIC_DRAW);
   label(GL_BUFFER, large_, "forward large splats");
 }
 
-// Small splats are tested in the texel pass; large ones (more than kInlinePixels pixels) are
-// appended and drawn as rectangles, one instance each, sized on the GPU: no read-back.
+void ForwardState::ensureReceivers(int width, int height) {
+  if (receivers_ && receivers_->width() == width && receivers_->height() == height) return;
+  receivers_ = std::make_unique<Texture2D>(GL_RGBA32F, width, height, "forward receivers");
+}
+
+// The lit pixels, from every light texel's splat: gathered per eye pixel (the default), or
+// scattered per texel as Zhang does (forward.scatter). Either way the visibility target starts
+// dark: a pixel no splat lights stays unlit.
 void ForwardState::splat(const AccumulationContext& c) {
+  const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};
+  glClearTexImage(c.finalVisibilityTex->id(), 0, GL_RG, GL_FLOAT, dark);
   const std::string prelude = "#define SL_DEFERRED\n#define SL_REPRESENTATION_IN_COMPUTE\n" + c.techniquePrelude;
+  Program& mapToClip =
+      c.shaders->get({"forward map to clip", {{GL_COMPUTE_SHADER, "accumulation/forward_map_to_clip.comp"}}, prelude});
+  if (!mapToClip.valid()) return;
+  if (!mapToClip_) {
+    glCreateBuffers(1, &mapToClip_);
+    glNamedBufferData(mapToClip_, kMapToClipBytes, nullptr, GL_DYNAMIC_DRAW);
+    label(GL_BUFFER, mapToClip_, "forward map to clip");
+  }
+  const int size = static_cast<int>(c.params->i("shadowmap.size"));
+  mapToClip.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(mapToClip, units);  // the light views
+  setSplatUniforms(c, mapToClip, size);
+  bindStorage("ForwardMapToClipOut", mapToClip_);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_UNIFORM_BARRIER_BIT);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kMapToClipBinding, mapToClip_);
+  glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+  if (c.params->b("forward.scatter"))
+    scatter(c, prelude, size);
+  else
+    gather(c, prelude, size);
+  points_ = static_cast<long long>(size) * size;
+}
+
+void ForwardState::setSplatUniforms(const AccumulationContext& c, const Program& p, int mapSize) {
+  p.set("u_eyeViewProj", c.proj * c.view);
+  p.set("u_mapSize", mapSize);
+  p.set("u_screenSize", glm::vec2(c.width, c.height));
+  p.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
+}
+
+// One invocation per eye pixel: lit when the splat of a texel its surface point falls in covers
+// it (accumulation/forward_gather.comp).
+void ForwardState::gather(const AccumulationContext& c, const std::string& prelude, int mapSize) {
+  Program& pixels =
+      c.shaders->get({"forward gather", {{GL_COMPUTE_SHADER, "accumulation/forward_gather.comp"}}, prelude});
+  if (!pixels.valid()) return;
+  pixels.use();
+  TextureUnits units;
+  c.bindTechniqueInputs(pixels, units);  // depth map, light views, G-buffer, parameters
+  setSplatUniforms(c, pixels, mapSize);
+  glDispatchCompute(static_cast<GLuint>((c.width + 7) / 8), static_cast<GLuint>((c.height + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+// One invocation per light texel (accumulation/forward_splat.comp) after the receivers pass;
+// small splats are tested in the texel pass, large ones (more than kInlinePixels pixels)
+// appended and drawn as rectangles, one instance each, sized on the GPU: no read-back.
+void ForwardState::scatter(const AccumulationContext& c, const std::string& prelude, int mapSize) {
   Program& texels =
       c.shaders->get({"forward splat", {{GL_COMPUTE_SHADER, "accumulation/forward_splat.comp"}}, prelude});
   Program& args =
       c.shaders->get({"forward splat args", {{GL_COMPUTE_SHADER, "accumulation/forward_splat_args.comp"}}, ""});
-  Program& offMap =
-      c.shaders->get({"forward off map", {{GL_COMPUTE_SHADER, "accumulation/forward_off_map.comp"}}, prelude});
+  Program& receivers =
+      c.shaders->get({"forward receivers", {{GL_COMPUTE_SHADER, "accumulation/forward_receivers.comp"}}, prelude});
   Program& quads = c.shaders->get({"forward splat quads",
                                    {{GL_VERTEX_SHADER, "accumulation/forward_splat_quad.vert"},
                                     {GL_FRAGMENT_SHADER, "accumulation/forward_splat_quad.frag"}},
                                    prelude});
-  const float dark[4] = {0.0f, 1.0f, 0.0f, 0.0f};  // no sample reached it: unlit
-  glClearTexImage(c.finalVisibilityTex->id(), 0, GL_RG, GL_FLOAT, dark);
-  if (!texels.valid() || !args.valid() || !quads.valid() || !offMap.valid()) return;
+  if (!texels.valid() || !args.valid() || !quads.valid() || !receivers.valid()) return;
   ensureLargeSplats();
   const GLuint zero = 0;
   glNamedBufferSubData(large_, 0, sizeof(zero), &zero);
   bindStorage("ForwardLargeSplats", large_);
-  glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-  const int size = static_cast<int>(c.params->i("shadowmap.size"));
-  markOffMap(c, offMap);
+  prepareReceivers(c, receivers, mapSize);
   texels.use();
   TextureUnits units;
   c.bindTechniqueInputs(texels, units);  // depth map, light views, G-buffer, parameters
-  texels.set("u_eyeViewProj", c.proj * c.view);
-  texels.set("u_mapSize", size);
-  texels.set("u_screenSize", glm::vec2(c.width, c.height));
-  texels.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
+  units.bind(texels, "u_forwardReceivers", receivers_->id());
+  setSplatUniforms(c, texels, mapSize);
   texels.set("u_largeCapacity", kLargeCapacity);
-  const GLuint groups = static_cast<GLuint>((size + 7) / 8);
+  const GLuint groups = static_cast<GLuint>((mapSize + 7) / 8);
   glDispatchCompute(groups, groups, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   args.use();
@@ -95,19 +162,20 @@ void ForwardState::splat(const AccumulationContext& c) {
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   drawLargeSplats(c, quads);
-  points_ = static_cast<long long>(size) * size;
 }
 
-// Pixels outside the light view's map are lit, as the backward test has them
-// (accumulation/forward_off_map.comp): no texel can reach them.
-void ForwardState::markOffMap(const AccumulationContext& c, Program& offMap) {
-  offMap.use();
+// Each eye pixel's receiver record, once (accumulation/forward_receivers.comp); pixels outside
+// the light view's map are lit there, as the backward test has them: no texel can reach them.
+void ForwardState::prepareReceivers(const AccumulationContext& c, Program& receivers, int mapSize) {
+  ensureReceivers(c.width, c.height);
+  glBindImageTexture(1, receivers_->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  receivers.use();
   TextureUnits units;
-  c.bindTechniqueInputs(offMap, units);
-  offMap.set("u_screenSize", glm::vec2(c.width, c.height));
-  offMap.set("u_visibilityOut", 0);
+  c.bindTechniqueInputs(receivers, units);
+  setSplatUniforms(c, receivers, mapSize);
+  receivers.set("u_receiversOut", 1);
   glDispatchCompute(static_cast<GLuint>((c.width + 7) / 8), static_cast<GLuint>((c.height + 7) / 8), 1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void ForwardState::drawLargeSplats(const AccumulationContext& c, Program& quads) {
@@ -120,6 +188,7 @@ void ForwardState::drawLargeSplats(const AccumulationContext& c, Program& quads)
   quads.use();
   TextureUnits units;
   c.bindTechniqueInputs(quads, units);
+  units.bind(quads, "u_forwardReceivers", receivers_->id());
   quads.set("u_mapSize", static_cast<int>(c.params->i("shadowmap.size")));
   quads.set("u_screenSize", glm::vec2(c.width, c.height));
   glBindVertexArray(vao_);
@@ -192,6 +261,13 @@ class ForwardAccumulation : public Accumulation {
              .help = "beyond the paper: each splat grows to its light texel's footprint in the eye view (up to 255 "
                      "pixels), so a texel stretched over many pixels (grazing light) leaves no holes; off: Zhang's "
                      "fixed forward.splat and the holes the paper shows"},
+            {.key = "forward.scatter",
+             .type = ParamType::Bool,
+             .defaultValue = 0,
+             .help = "Zhang's scatter: every light texel sent into the eye view and the pixels of its splat tested "
+                     "one by one; off: the same lit pixels found per eye pixel, from the splats of the texels its "
+                     "surface falls in (beyond the paper; the same image, one invocation per pixel instead of per "
+                     "texel)"},
             {.key = "forward.footprint",
              .type = ParamType::Float,
              .min = 1,

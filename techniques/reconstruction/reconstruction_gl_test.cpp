@@ -1,7 +1,7 @@
 // Silhouette maps and forward shadow mapping on llvmpipe, small frames: the silhouette map beats
 // the plain depth map on straight-edged casters at equal resolution; both stay finite and in
 // [0, 1] on the hard cases and on the real glTF scenes; forward mapping's holes shrink as its
-// splats grow.
+// splats grow, and its gather lights what its scatter lights.
 #include "layouts/hard_cases.h"
 #include "metrics/metrics.h"
 #include "reconstruction/silhouette_state.h"
@@ -143,9 +143,46 @@ TEST(Forward, GrownSplatsCoverGrazingTexels) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The default gathers per eye pixel what Zhang's scatter lights per light texel
+// (accumulation/forward_gather.comp): the same visibility, pixel for pixel, holes included.
+// Cases: grown splats (a sun, a low sun whose splats are drawn as rectangles, a spot light's
+// perspective view), Zhang's fixed splats of a coarse map (holes everywhere), and a footprint of
+// two texels (several texels per pixel).
+TEST(Forward, GatherLightsWhatTheScatterLights) {
+  test::GlHarness h;
+  struct Case {
+    std::string scene;
+    std::vector<std::string> settings;
+  };
+  const std::vector<Case> cases = {{"basic", {}},
+                                   {"low-sun", {}},
+                                   {"spotlight", {}},
+                                   {"basic", {"shadowmap.size=256", "forward.grow=off", "forward.splat=1"}},
+                                   {"columns", {"shadowmap.size=512", "forward.footprint=2"}}};
+  for (const Case& c : cases) {
+    const Scene scene = loadScene(c.scene, defaultAssetsDir());
+    std::vector<std::string> scatter = c.settings;
+    scatter.push_back("forward.scatter=on");
+    const test::Frame gathered = test::renderOnce(h, scene, "forward", c.settings, 160, 90);
+    const test::Frame scattered = test::renderOnce(h, scene, "forward", scatter, 160, 90);
+    const std::string what = c.scene + (c.settings.empty() ? "" : " " + c.settings.back());
+    expectSane(gathered, what);
+    int differ = 0, lit = 0, dark = 0;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 160; ++x) {
+        differ += gathered.at(x, y) != scattered.at(x, y);
+        (scattered.at(x, y) > 0.5f ? lit : dark) += 1;
+      }
+    EXPECT_EQ(differ, 0) << what;
+    EXPECT_GT(lit, 0) << what;
+    EXPECT_GT(dark, 0) << what;
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 // A point light through a single focused view (at most 80 degrees off its axis): receivers
 // beyond the cone are outside the map, where no texel can reach them; the backward test calls
-// them lit and forward mapping now does too (accumulation/forward_off_map.comp). Without it
+// them lit and forward mapping now does too (accumulation/forward_splat.glsl, forwardReceiver). Without it
 // street was 5.7 % wrong against standard's 0.76 % at 320x180.
 TEST(Forward, PixelsOutsideTheMapAreLitAsTheBackwardTestHasThem) {
   test::GlHarness h;
