@@ -28,6 +28,11 @@ layout(std430) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
 layout(std430) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
 layout(std430) buffer IzbSamples { Sample samples[]; };   // by pixel
 layout(std430) buffer IzbList { uint list[]; };           // pixel indices, by cell
+// Two words per cell: [2 c] the farthest of its samples from the light (orderedBits of
+// izbAwayKey, 0 when empty), [2 c + 1] how many of its samples a triangle has occluded (when
+// all, the cell is done). One block: every block a program declares counts against the 16 a
+// compute shader may have, used or not.
+layout(std430) buffer IzbCellState { uint cellState[]; };
 layout(std430) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
 layout(std430) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
 // 0: overflowed, 1: listed, 2: large-triangle rows queued, 3: ~bits of the least listed clip w,
@@ -38,6 +43,8 @@ uniform int u_izbGrid;      // cells per side
 uniform vec2 u_izbSize;     // eye samples: the viewport's pixels (whole numbers)
 uniform int u_izbCapacity;  // entries of the list buffer
 uniform mat4 u_izbViewProj; // the layout's light view: where cells are
+// The sign of the grid view's depth (clip z / w) along a ray toward the light (izb_state.cpp).
+uniform float u_izbDepthTowardLight;
 
 const uint kNoCell = 0xffffffffu;
 
@@ -54,6 +61,12 @@ bool izbGridPos(vec3 p, out vec2 g, out float w) {
   g = izbGridOf(c);
   return !any(isnan(g));
 }
+
+// A key that grows with the distance from the light along every sample's ray (monotonic in the
+// view's depth, clip z / w, which is linear along a ray that projects to one point and across a
+// triangle wholly in front of the view): a caster nearer the light than a sample has a smaller
+// key, so a triangle whose smallest key exceeds a cell's farthest sample hits none of them.
+float izbAwayKey(vec4 clip) { return -u_izbDepthTowardLight * clip.z / clip.w; }
 
 // Clamped to the grid: a point outside it is listed under the border cell, where every
 // triangle covering it also lands (the clamp of a triangle's bounds holds the clamped point).

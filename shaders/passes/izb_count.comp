@@ -11,6 +11,7 @@
 #extension GL_ARB_gpu_shader_fp64 : enable
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "passes/izb_common.glsl"
+#include "common/ordered_bits.glsl"
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform usampler2D u_gSurface;
@@ -96,6 +97,7 @@ float listSample() {
   vec2 g;
   float w;
   bool onGrid = izbGridPos(P.xyz, g, w);
+  vec4 startClip = u_izbViewProj * vec4(vec3(origin), 1.0);
   if (u_izbViews > 1) {
     // Outside this view's window: another view lists it, or none and it keeps its fallback bit.
     if (!onGrid || any(lessThan(g, vec2(0.0))) || any(greaterThanEqual(g, vec2(float(u_izbGrid))))) return 0.0;
@@ -109,6 +111,10 @@ float listSample() {
   uint index = uint(cell.y * u_izbGrid + cell.x);
   pixelCell[pixel] = index;
   atomicAdd(counts[index], 1u);
+  // The cell's farthest sample, for the triangles pass to skip casters beyond it. Read first: a
+  // cell's samples are neighbours on screen and mostly agree, and a read costs less than an atomic.
+  uint away = orderedBits(izbAwayKey(startClip));
+  if (away > cellState[2u * index]) atomicMax(cellState[2u * index], away);
   return w;  // > 0: izbGridPos held
 }
 

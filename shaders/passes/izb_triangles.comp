@@ -12,6 +12,7 @@
 // per queued row.
 layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
+#include "common/ordered_bits.glsl"
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
 uniform int u_izbRaysKeepW;  // 1: a directional light (its rays keep their clip w)
@@ -64,6 +65,7 @@ struct Caster {
   bool masked;
   ivec2 lo, hi;    // cell bounds
   bool edges;      // the edge test below applies (projection known and not degenerate)
+  uint nearBits;   // orderedBits of its smallest izbAwayKey, less a margin; 0: no cull (IzbCellState)
   vec3 edge[3];    // inward edge lines in grid units: dot(xy, 1) >= -margin inside
 };
 
@@ -116,6 +118,7 @@ bool setup(uint id, out Caster c) {
   c.lo = ivec2(0);
   c.hi = ivec2(u_izbGrid - 1);
   c.edges = false;
+  c.nearBits = 0u;
   // A masked material with no texture is all base alpha: below the cutoff it casts nothing.
   if (c.masked && c.m.texture.y == 0u && c.m.alpha.y < c.m.alpha.x) return false;
   vec4 v[3] = vec4[3](u_izbViewProj * vec4(c.t.a.xyz, 1.0), u_izbViewProj * vec4(c.t.b.xyz, 1.0),
@@ -142,6 +145,11 @@ bool setup(uint id, out Caster c) {
     if (any(lessThanEqual(w, vec3(1e-6)))) return true;
   }
   spanEdges(c, v);
+  // Wholly in front of the view: its key over it lies between its corners'. The margin (a
+  // twenty-thousandth of the depth range, more for keys far outside it) keeps the rounding of
+  // the two passes' projections from skipping a caster.
+  float nearKey = min(izbAwayKey(v[0]), min(izbAwayKey(v[1]), izbAwayKey(v[2])));
+  if (!isnan(nearKey)) c.nearBits = orderedBits(nearKey - 1e-4 * (1.0 + abs(nearKey)));
   return true;
 }
 
@@ -168,7 +176,10 @@ bool rowSpan(Caster c, int y, out int x0, out int x1) {
 
 void testCell(Caster c, ivec2 cellPos) {
   uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
+  if (c.nearBits > cellState[2u * cell]) return;  // wholly farther from the light than its samples
   uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
+  // Every sample occluded already: four in five of the samples Sponza's casters visited were.
+  if (cellState[2u * cell + 1u] >= end - begin) return;
   vec3 a = c.t.a.xyz, e1 = c.t.b.xyz - a, e2 = c.t.c.xyz - a;
   for (uint k = begin; k < end; ++k) {
     uint pixel = list[k];
@@ -179,7 +190,7 @@ void testCell(Caster c, ivec2 cellPos) {
     float u, v;
     if (!hits(s, a, e1, e2, u, v)) continue;
     if (c.masked && alphaAt(c.m, c.t, u, v) < c.m.alpha.x) continue;
-    atomicOr(shadowBits[pixel >> 5], bit);
+    if ((atomicOr(shadowBits[pixel >> 5], bit) & bit) == 0u) atomicAdd(cellState[2u * cell + 1u], 1u);
   }
 }
 

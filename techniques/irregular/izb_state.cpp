@@ -55,8 +55,8 @@ bool sunGridMatrix(const glm::mat4& viewProj, const glm::vec3& toLight, glm::mat
 IzbState::IzbState() : DepthMapState(false) {}
 
 IzbState::~IzbState() {
-  for (GLuint b :
-       {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_, queue_, dispatch_})
+  for (GLuint b : {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_, queue_,
+                   dispatch_, cellState_})
     if (b) glDeleteBuffers(1, &b);
 }
 
@@ -87,6 +87,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     grid_ = grid;
     const long long cells = static_cast<long long>(grid) * grid;
     resize(counts_, cells * 4, "izb cell counts");
+    resize(cellState_, cells * 8, "izb cell state");  // izb_common.glsl: IzbCellState
     resize(offsets_, (cells + 1) * 4, "izb cell offsets");
     resize(blockSums_, groups(cells, 1024) * 4, "izb block sums");
   }
@@ -119,6 +120,15 @@ std::string listableViews(const LightSpace& ls, const Light& light, std::vector<
   return "";
 }
 
+// The sign of a grid view's depth (clip z / w) along a ray toward the light: a perspective view
+// from a light's position has its depth fall toward the light, as every GL perspective does
+// toward its eye; under a sun the rays keep their w (sunGridMatrix) and the direction's image
+// has depth alone, whose sign it is.
+float depthTowardLight(const glm::mat4& grid, const Light& light) {
+  if (light.positional()) return -1.0f;
+  return (grid * glm::vec4(-light.direction, 0.0f)).z < 0.0f ? -1.0f : 1.0f;
+}
+
 }  // namespace
 
 std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
@@ -127,6 +137,7 @@ std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   ensureBuffers(ctx.width, ctx.height, gridParam_);
   views_ = static_cast<int>(ls.views.size());
   gridViewProj_ = gridViewProjs_.empty() ? ls.primary().viewProj : gridViewProjs_.front();
+  depthTowardLight_ = depthTowardLight(gridViewProj_, ctx.shadowedLight());
   scene_.update(*ctx.scene, ctx.time);
   const std::string lists = "izb.lists" + ctx.viewportTag, out = "izb" + ctx.viewportTag;
   graph.add({lists, {"gbuffer"}, {lists}, [this, ctx] { runLists(ctx); }});
@@ -153,6 +164,7 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
   p.set("u_izbGrid", grid_);
   p.set("u_izbCapacity", static_cast<int>(std::min<long long>(capacity_, 0x7fffffff)));
   p.set("u_izbViewProj", gridViewProj_);
+  p.set("u_izbDepthTowardLight", depthTowardLight_);
   p.set("u_izbSize", glm::vec2(ctx.width, ctx.height));
   // The storage blocks of shaders/passes/izb_common.glsl, by name (gl/storage_blocks.h).
   for (auto [block, buffer] : {std::pair<const char*, GLuint>{"IzbTriangles", scene_.triangles},
@@ -160,6 +172,7 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
                                {"IzbMaterials", scene_.materials},
                                {"IzbAlpha", scene_.alpha},
                                {"IzbCounts", counts_},
+                               {"IzbCellState", cellState_},
                                {"IzbOffsets", offsets_},
                                {"IzbBlockSums", blockSums_},
                                {"IzbPixelCell", pixelCell_},
@@ -193,8 +206,10 @@ void IzbState::runLists(const PartContext& ctx) {
 // one buffer.
 void IzbState::listView(const PartContext& ctx, int view) {
   gridViewProj_ = gridViewProjs_[size_t(view)];
+  depthTowardLight_ = depthTowardLight(gridViewProj_, ctx.shadowedLight());
   const long long cells = static_cast<long long>(grid_) * grid_;
   clearBuffer(counts_);
+  clearBuffer(cellState_);
   // The large-triangle queue is per view: its rows are cells of this view's grid.
   // So are the listed samples' w range (counters 3 and 4).
   const uint32_t zero = 0;

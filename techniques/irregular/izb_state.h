@@ -62,7 +62,7 @@ class IzbState : public DepthMapState {
   // listed, queued chunks, the listed samples' clip w range), the queue of large triangles'
   // chunks and its indirect dispatch
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
-         counters_ = 0, queue_ = 0, dispatch_ = 0;
+         counters_ = 0, queue_ = 0, dispatch_ = 0, cellState_ = 0;
   int width_ = 0, height_ = 0, grid_ = 0;
   int views_ = 1;  // light views of this frame, listed and tested one after another
   long long capacity_ = 0;
@@ -71,6 +71,7 @@ class IzbState : public DepthMapState {
   std::string error_;  // why the lists are not built (views no matrix places points in), shown as status
   std::vector<glm::mat4> gridViewProjs_;  // each view's grid (listableViews)
   glm::mat4 gridViewProj_{1.0f};          // the grid of the view being listed and tested
+  float depthTowardLight_ = -1.0f;        // its depth's sign along a ray toward the light
 };
 
 }  // namespace sl
