@@ -28,11 +28,14 @@ layout(std430) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
 layout(std430) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
 layout(std430) buffer IzbSamples { Sample samples[]; };   // by pixel
 layout(std430) buffer IzbList { uint list[]; };           // pixel indices, by cell
-// Two words per cell: [2 c] the farthest of its samples from the light (orderedBits of
-// izbAwayKey, 0 when empty), [2 c + 1] how many of its samples a triangle has occluded (when
-// all, the cell is done). One block: every block a program declares counts against the 16 a
-// compute shader may have, used or not.
+// Four words per cell (kCellWords): [0] the farthest of its samples from the light (orderedBits
+// of izbAwayKey, 0 when empty), [1] how many of its samples a triangle has occluded (when all,
+// the cell is done), [2] the one triangle all its samples lie on (its index + 1; 0 none yet,
+// kMixedOwners several or unknown), [3] unused. One block: every block a program declares
+// counts against the 16 a compute shader may have, used or not.
 layout(std430) buffer IzbCellState { uint cellState[]; };
+const uint kCellWords = 4u;
+const uint kMixedOwners = 0xffffffffu;
 layout(std430) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
 layout(std430) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
 // 0: overflowed, 1: listed, 2: large-triangle rows queued, 3: ~bits of the least listed clip w,

@@ -114,7 +114,16 @@ float listSample() {
   // The cell's farthest sample, for the triangles pass to skip casters beyond it. Read first: a
   // cell's samples are neighbours on screen and mostly agree, and a read costs less than an atomic.
   uint away = orderedBits(izbAwayKey(startClip));
-  if (away > cellState[2u * index]) atomicMax(cellState[2u * index], away);
+  uint state = kCellWords * index;
+  if (away > cellState[state]) atomicMax(cellState[state], away);
+  // The cell's one owner triangle, which the triangles pass need not walk it for (a triangle
+  // never shadows its own samples): the first sample claims it, any other marks it mixed.
+  uint tag = own < uint(u_izbTriangles) ? own + 1u : kMixedOwners;
+  uint seen = cellState[state + 2u];
+  if (seen != tag && seen != kMixedOwners) {
+    uint before = atomicCompSwap(cellState[state + 2u], 0u, tag);
+    if (before != 0u && before != tag) atomicMax(cellState[state + 2u], kMixedOwners);
+  }
   return w;  // > 0: izbGridPos held
 }
 

@@ -176,10 +176,12 @@ bool rowSpan(Caster c, int y, out int x0, out int x1) {
 
 void testCell(Caster c, ivec2 cellPos) {
   uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
-  if (c.nearBits > cellState[2u * cell]) return;  // wholly farther from the light than its samples
+  uint state = kCellWords * cell;
+  if (c.nearBits > cellState[state]) return;
+  if (cellState[state + 2u] == c.id + 1u) return;  // only its own samples  // wholly farther from the light than its samples
   uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
   // Every sample occluded already: four in five of the samples Sponza's casters visited were.
-  if (cellState[2u * cell + 1u] >= end - begin) return;
+  if (cellState[state + 1u] >= end - begin) return;
   vec3 a = c.t.a.xyz, e1 = c.t.b.xyz - a, e2 = c.t.c.xyz - a;
   for (uint k = begin; k < end; ++k) {
     uint pixel = list[k];
@@ -190,7 +192,7 @@ void testCell(Caster c, ivec2 cellPos) {
     float u, v;
     if (!hits(s, a, e1, e2, u, v)) continue;
     if (c.masked && alphaAt(c.m, c.t, u, v) < c.m.alpha.x) continue;
-    if ((atomicOr(shadowBits[pixel >> 5], bit) & bit) == 0u) atomicAdd(cellState[2u * cell + 1u], 1u);
+    if ((atomicOr(shadowBits[pixel >> 5], bit) & bit) == 0u) atomicAdd(cellState[state + 1u], 1u);
   }
 }
 

@@ -87,7 +87,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     grid_ = grid;
     const long long cells = static_cast<long long>(grid) * grid;
     resize(counts_, cells * 4, "izb cell counts");
-    resize(cellState_, cells * 8, "izb cell state");  // izb_common.glsl: IzbCellState
+    resize(cellState_, cells * 16, "izb cell state");  // izb_common.glsl: IzbCellState
     resize(offsets_, (cells + 1) * 4, "izb cell offsets");
     resize(blockSums_, groups(cells, 1024) * 4, "izb block sums");
   }
