@@ -37,7 +37,10 @@ class ForwardState : public AccumulationState {
   }
   std::vector<std::string> views() const override { return {"forward-holes"}; }
   AccumulationOutput addPasses(FrameGraph& graph, const AccumulationContext& ctx) override;
-  std::string status() const override { return std::to_string(points_) + " light samples splatted"; }
+  std::string status() const override {
+    return std::to_string(points_) +
+           (scattered_ ? " light samples splatted" : " light samples, their splats gathered per pixel");
+  }
 
  private:
   void splat(const AccumulationContext& c);
@@ -61,6 +64,7 @@ class ForwardState : public AccumulationState {
   GLuint large_ = 0;
   GLuint mapToClip_ = 0;
   long long points_ = 0;
+  bool scattered_ = false;  // the last frame ran Zhang's scatter (forward.scatter)
 };
 
 void ForwardState::ensureLargeSplats() {
@@ -100,7 +104,8 @@ void ForwardState::splat(const AccumulationContext& c) {
   glMemoryBarrier(GL_UNIFORM_BARRIER_BIT);
   glBindBufferBase(GL_UNIFORM_BUFFER, kMapToClipBinding, mapToClip_);
   glBindImageTexture(0, c.finalVisibilityTex->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-  if (c.params->b("forward.scatter"))
+  scattered_ = c.params->b("forward.scatter");
+  if (scattered_)
     scatter(c, prelude, size);
   else
     gather(c, prelude, size);
