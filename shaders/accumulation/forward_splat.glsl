@@ -20,9 +20,9 @@ uniform float u_forward_grow;  // off: Zhang's fixed forward.splat
 const float kMaxSplat = 255.0;  // pixels: beyond it a texel spans so much of the view that holes are the method's
 
 // Where samples land: the eye's clip position of the sample of a texel (texel units) with
-// stored depth d in view 0, through matrices taken once per invocation (mapToClip) instead of
-// through the world position, whose two inverses and four matrix products each of the five
-// samples a texel lands (its own and its neighbours') paid. rayFromMap takes (texel, 0, 1) to the
+// stored depth d in view 0, through matrices taken once a frame (mapToClip) instead of through
+// the world position, whose two inverses and four matrix products each of the five samples a
+// splat needs (its own and its neighbours') paid. rayFromMap takes (texel, 0, 1) to the
 // texel's ray in the light view (homogeneous), clipFromLightView a light-view point to the eye's
 // clip space. In an orthographic view the clip position is affine in (texel, d): a neighbour's
 // is the sample's plus a column per texel and per unit of depth.
