@@ -5,8 +5,8 @@
 // its pixels over every core. forwardLargeDraw is that draw's indirect command
 // (accumulation/forward_splat_args.comp writes it).
 struct ForwardLarge {
-  // The texel (x | y << 16), the rectangle's first and last pixel (x | y << 16), and the sample's
-  // depth in the light view (layoutDepthIn; floatBitsToUint).
+  // The texel (x | y << 16), the rectangle's first and last pixel (x | y << 16), and the depth
+  // the texel stores (floatBitsToUint).
   uvec4 where;
 };
 layout(std430) buffer ForwardLargeSplats {

@@ -97,7 +97,6 @@ float listSample() {
   vec2 g;
   float w;
   bool onGrid = izbGridPos(P.xyz, g, w);
-  vec4 startClip = u_izbViewProj * vec4(vec3(origin), 1.0);
   if (u_izbViews > 1) {
     // Outside this view's window: another view lists it, or none and it keeps its fallback bit.
     if (!onGrid || any(lessThan(g, vec2(0.0))) || any(greaterThanEqual(g, vec2(float(u_izbGrid))))) return 0.0;
@@ -113,7 +112,7 @@ float listSample() {
   atomicAdd(counts[index], 1u);
   // The cell's farthest sample, for the triangles pass to skip casters beyond it. Read first: a
   // cell's samples are neighbours on screen and mostly agree, and a read costs less than an atomic.
-  uint away = orderedBits(izbAwayKey(startClip));
+  uint away = orderedBits(izbAwayKey(u_izbViewProj * vec4(vec3(origin), 1.0)));
   uint state = kCellWords * index;
   if (away > cellState[state]) atomicMax(cellState[state], away);
   // The cell's one owner triangle, which the triangles pass need not walk it for (a triangle

@@ -177,8 +177,8 @@ bool rowSpan(Caster c, int y, out int x0, out int x1) {
 void testCell(Caster c, ivec2 cellPos) {
   uint cell = uint(cellPos.y * u_izbGrid + cellPos.x);
   uint state = kCellWords * cell;
-  if (c.nearBits > cellState[state]) return;
-  if (cellState[state + 2u] == c.id + 1u) return;  // only its own samples  // wholly farther from the light than its samples
+  if (c.nearBits > cellState[state]) return;       // wholly farther from the light than its samples
+  if (cellState[state + 2u] == c.id + 1u) return;  // only its own samples
   uint begin = offsets[cell], end = min(offsets[cell + 1u], uint(u_izbCapacity));
   // Every sample occluded already: four in five of the samples Sponza's casters visited were.
   if (cellState[state + 1u] >= end - begin) return;

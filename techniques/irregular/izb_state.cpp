@@ -137,7 +137,6 @@ std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   ensureBuffers(ctx.width, ctx.height, gridParam_);
   views_ = static_cast<int>(ls.views.size());
   gridViewProj_ = gridViewProjs_.empty() ? ls.primary().viewProj : gridViewProjs_.front();
-  depthTowardLight_ = depthTowardLight(gridViewProj_, ctx.shadowedLight());
   scene_.update(*ctx.scene, ctx.time);
   const std::string lists = "izb.lists" + ctx.viewportTag, out = "izb" + ctx.viewportTag;
   graph.add({lists, {"gbuffer"}, {lists}, [this, ctx] { runLists(ctx); }});
@@ -164,7 +163,7 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
   p.set("u_izbGrid", grid_);
   p.set("u_izbCapacity", static_cast<int>(std::min<long long>(capacity_, 0x7fffffff)));
   p.set("u_izbViewProj", gridViewProj_);
-  p.set("u_izbDepthTowardLight", depthTowardLight_);
+  p.set("u_izbDepthTowardLight", depthTowardLight(gridViewProj_, ctx.shadowedLight()));
   p.set("u_izbSize", glm::vec2(ctx.width, ctx.height));
   // The storage blocks of shaders/passes/izb_common.glsl, by name (gl/storage_blocks.h).
   for (auto [block, buffer] : {std::pair<const char*, GLuint>{"IzbTriangles", scene_.triangles},
@@ -206,7 +205,6 @@ void IzbState::runLists(const PartContext& ctx) {
 // one buffer.
 void IzbState::listView(const PartContext& ctx, int view) {
   gridViewProj_ = gridViewProjs_[size_t(view)];
-  depthTowardLight_ = depthTowardLight(gridViewProj_, ctx.shadowedLight());
   const long long cells = static_cast<long long>(grid_) * grid_;
   clearBuffer(counts_);
   clearBuffer(cellState_);

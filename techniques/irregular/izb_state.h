@@ -71,7 +71,6 @@ class IzbState : public DepthMapState {
   std::string error_;  // why the lists are not built (views no matrix places points in), shown as status
   std::vector<glm::mat4> gridViewProjs_;  // each view's grid (listableViews)
   glm::mat4 gridViewProj_{1.0f};          // the grid of the view being listed and tested
-  float depthTowardLight_ = -1.0f;        // its depth's sign along a ray toward the light
 };
 
 }  // namespace sl

@@ -98,7 +98,8 @@ void ForwardState::splat(const AccumulationContext& c) {
   mapToClip.use();
   TextureUnits units;
   c.bindTechniqueInputs(mapToClip, units);  // the light views
-  setSplatUniforms(c, mapToClip, size);
+  mapToClip.set("u_eyeViewProj", c.proj * c.view);
+  mapToClip.set("u_mapSize", size);
   bindStorage("ForwardMapToClipOut", mapToClip_);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_UNIFORM_BARRIER_BIT);
@@ -113,7 +114,6 @@ void ForwardState::splat(const AccumulationContext& c) {
 }
 
 void ForwardState::setSplatUniforms(const AccumulationContext& c, const Program& p, int mapSize) {
-  p.set("u_eyeViewProj", c.proj * c.view);
   p.set("u_mapSize", mapSize);
   p.set("u_screenSize", glm::vec2(c.width, c.height));
   p.set("u_visibilityOut", 0);  // image unit (the layout binding says the same)
