@@ -66,7 +66,7 @@ TEST(ShadowDrawPlan, PartsDeclareTheirShareAsData) {
   EXPECT_EQ(findRepresentation("deep")->casterDraw().casters, CasterSet::Opaque);
   EXPECT_EQ(findRepresentation("depth-nearest")->casterDraw().casters, CasterSet::All);
   EXPECT_EQ(findRepresentation("vsm")->casterDraw().fragment, "passes/shadow.frag");
-  EXPECT_EQ(findRepresentation("vssm")->casterDraw().fragment, "passes/shadow_moments.frag");
+  EXPECT_EQ(findRepresentation("vssm")->casterDraw().fragment, "passes/shadow.frag");
   EXPECT_EQ(findRepresentation("depth-pcf")->casterDraw().fragment, "passes/shadow.frag");
 }
 

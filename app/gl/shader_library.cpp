@@ -75,6 +75,12 @@ void Program::set(const std::string& n, const glm::vec4& v) const {
     markSet(l);
   }
 }
+void Program::set(const std::string& n, const glm::ivec4& v) const {
+  if (GLint l = location(n); l >= 0) {
+    glProgramUniform4iv(id_, l, 1, glm::value_ptr(v));
+    markSet(l);
+  }
+}
 void Program::set(const std::string& n, const glm::mat4& v) const {
   if (GLint l = location(n); l >= 0) {
     glProgramUniformMatrix4fv(id_, l, 1, GL_FALSE, glm::value_ptr(v));

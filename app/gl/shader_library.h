@@ -41,6 +41,7 @@ class Program {
   void set(const std::string& name, const glm::vec2& v) const;
   void set(const std::string& name, const glm::vec3& v) const;
   void set(const std::string& name, const glm::vec4& v) const;
+  void set(const std::string& name, const glm::ivec4& v) const;
   void set(const std::string& name, const glm::mat4& v) const;
 
  private:

@@ -56,6 +56,27 @@ std::vector<glm::ivec2> blurSpans(const std::vector<glm::vec2>& hullUv, int size
   return spans;
 }
 
+std::optional<std::vector<glm::ivec2>> columnIntervals(const std::vector<glm::ivec2>& rowSpans, int size) {
+  std::vector<int> first(static_cast<size_t>(size), size), last(static_cast<size_t>(size), -1),
+      count(static_cast<size_t>(size), 0);
+  for (int y = 0; y < static_cast<int>(rowSpans.size()); ++y) {
+    const int x0 = std::max(rowSpans[static_cast<size_t>(y)].x, 0);
+    const int x1 = std::min(rowSpans[static_cast<size_t>(y)].y, size - 1);
+    for (int x = x0; x <= x1; ++x) {
+      first[static_cast<size_t>(x)] = std::min(first[static_cast<size_t>(x)], y);
+      last[static_cast<size_t>(x)] = y;
+      ++count[static_cast<size_t>(x)];
+    }
+  }
+  std::vector<glm::ivec2> out(static_cast<size_t>(size), glm::ivec2(1, 0));
+  for (size_t x = 0; x < out.size(); ++x) {
+    if (count[x] == 0) continue;
+    if (count[x] != last[x] - first[x] + 1) return std::nullopt;
+    out[x] = {first[x], last[x]};
+  }
+  return out;
+}
+
 BlurGroups blurGroups(const std::vector<glm::ivec2>& spans, int size, int apron) {
   // Cells of kBlurRun² texels: a second-direction group is one column of cells kBlurGroupSide
   // long (its lines are the cell's columns), a first-direction group one row of cells.

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace sl {
@@ -22,6 +23,11 @@ inline constexpr float kLookupReach = 2.0f;
 // (map uv) dilated by `dilation` texels covers in any row of the band; {1, 0} where it misses
 // the band. An empty hull covers every texel.
 std::vector<glm::ivec2> blurSpans(const std::vector<glm::vec2>& hullUv, int size, int band, float dilation);
+
+// Per column of a size² map, the rows [y0, y1] whose span (rowSpans, per row [x0, x1]; x0 > x1:
+// none) holds it ({1, 0}: none); std::nullopt where some column's rows are not one interval (the
+// spans of a convex region never are: the summed-area tables' column pass needs intervals).
+std::optional<std::vector<glm::ivec2>> columnIntervals(const std::vector<glm::ivec2>& rowSpans, int size);
 
 // The work groups each direction of a blur with `apron` texels each side runs (x: the group
 // along its runs, y: across them, as a full dispatch numbers them) so that every texel of

@@ -14,6 +14,16 @@ ParamDecl viewChannelParam() {
           .help = "moments and fourier views: the stored channel shown (Fourier: 2k-2 = sin, 2k-1 = cos of term k)"};
 }
 
+ParamDecl skipUnreadParam() {
+  return {.key = "filter.skip_unread",
+          .type = ParamType::Bool,
+          .defaultValue = 1,
+          .help =
+              "the blur or summed-area table covers only the texels a visible receiver can read (the "
+              "fitted layouts' receiver body in the map, widened by the lookup and the widest box; beyond the "
+              "papers); the rest hold an earlier frame's moments. Off: the whole map"};
+}
+
 }  // namespace
 
 std::vector<ParamDecl> filterParams(bool withSat) {
@@ -40,17 +50,12 @@ std::vector<ParamDecl> filterParams(bool withSat) {
        .defaultValue = 5,
        .unit = "texels",
        .help = "width of the box the moments are averaged over (1 = bilinear lookups only)"},
-      {.key = "filter.skip_unread",
-       .type = ParamType::Bool,
-       .defaultValue = 1,
-       .help = "the blur filters only the texels a visible receiver can read (the fitted layouts' receiver "
-               "body in the map, widened by the lookup and the kernel; beyond the papers); the rest hold "
-               "the moments of an empty texel. Off: the whole map"},
+      skipUnreadParam(),
       viewChannelParam(),
   };
 }
 
-std::vector<ParamDecl> softFilterParams() { return {viewChannelParam()}; }
+std::vector<ParamDecl> softFilterParams() { return {skipUnreadParam(), viewChannelParam()}; }
 
 int formatBits(const ParamSet& params) { return params.i("filter.format") == 0 ? 16 : 32; }
 

@@ -74,27 +74,26 @@ void MomentMapState::clearLayer(int layer) {
 double MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                               const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
                               const std::vector<std::vector<glm::vec2>>& hulls, bool clearUnread) {
-  const bool blurs = config_.blurs();
   const int layers = std::max(depth_.layers(), 1);
-  double share = momentsInShadowPass() ? layers : 0.0;  // the soft ones' tables sum every texel
-  if (!momentsInShadowPass())
-    for (int l = 0; l < layers; ++l) {
-      const std::optional<BlurGroups> groups =
-          l < static_cast<int>(hulls.size()) ? groupsFor(hulls[static_cast<size_t>(l)]) : std::nullopt;
-      share += groups ? groups->share : 1.0;
-      std::optional<glm::ivec2> first, second;  // (offset, count) in the group list
-      if (groups) {
-        uploadGroups(*groups);
-        first = glm::ivec2(0, groups->first.size());
-        second = glm::ivec2(groups->first.size(), groups->second.size());
-      }
-      // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
-      runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false, first);
-      if (!blurs) continue;
-      if (groups && clearUnread) clearLayer(l);  // a view shows the texels the blur skips
-      runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true, second);
+  if (config_.method == FilterMethod::Sat) return buildSat(shaders, bindTechnique, hulls, clearUnread);
+  const bool blurs = config_.blurs();
+  double share = 0.0;
+  for (int l = 0; l < layers; ++l) {
+    const std::optional<BlurGroups> groups =
+        l < static_cast<int>(hulls.size()) ? groupsFor(hulls[static_cast<size_t>(l)]) : std::nullopt;
+    share += groups ? groups->share : 1.0;
+    std::optional<glm::ivec2> first, second;  // (offset, count) in the group list
+    if (groups) {
+      uploadGroups(*groups);
+      first = glm::ivec2(0, groups->first.size());
+      second = glm::ivec2(groups->first.size(), groups->second.size());
     }
-  if (config_.method == FilterMethod::Sat) buildSat(shaders);
+    // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
+    runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false, first);
+    if (!blurs) continue;
+    if (groups && clearUnread) clearLayer(l);  // a view shows the texels the blur skips
+    runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true, second);
+  }
   if (config_.method == FilterMethod::Mipmap) buildMips(shaders, drawFullscreen);
   return share / layers;
 }

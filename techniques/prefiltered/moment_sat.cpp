@@ -1,83 +1,183 @@
 // Summed-area tables of the moment targets (Crow 1984; Hensley et al. 2005 for shadow maps):
-// after the shadow pass each 32-bit target becomes, in place, the table of its moments minus
-// an offset, by a compute pass over rows and one over columns (shaders/passes/moment_sat.comp).
-// Any box is then four lookups, whatever its width (shaders/representations/prefiltered/
-// moment_maps.glsl, SL_MOMENT_SAT).
+// each 32-bit target becomes the table of its moments minus an offset, over the texels that
+// visible receivers' lookups can read (satCover). Three compute passes per layer: the offset
+// (the mean of the moments, read back), the rows (the moments taken from the shadow pass's depth
+// and summed), the columns (every target in place). Any box is then four lookups, whatever its
+// width (shaders/representations/prefiltered/moment_maps.glsl, SL_MOMENT_SAT).
 #include "gl/shader_library.h"
 #include "gl/storage_blocks.h"
+#include "gl/texture_units.h"
 #include "prefiltered/moment_state.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace sl {
 
 namespace {
 
-// The mean of the finite texels of every layer of `table`: the offset the table subtracts, so
-// that its sums grow like a random walk instead of linearly with the texel count. Read back
-// (a stall on a GPU; free on a software rasterizer, where every pass is synchronous).
-glm::vec4 finiteMean(ShaderLibrary& shaders, const Texture2D& table, int layers) {
-  const int size = table.width();
-  const ProgramSpec spec{"moment table mean",
-                         {{GL_COMPUTE_SHADER, "passes/moment_sat_mean.comp"}},
-                         std::string("#define SL_SAT_FORMAT ") + imageFormatName(table.format()) + "\n"};
-  Program& p = shaders.get(spec);
-  if (!p.valid()) return glm::vec4(0.0f);
-  GLuint buffers[2];
-  glCreateBuffers(2, buffers);
-  const GLsizeiptr bytes = static_cast<GLsizeiptr>(size) * 4 * sizeof(float);
-  for (GLuint b : buffers) glNamedBufferData(b, bytes, nullptr, GL_STREAM_READ);
-  bindStorage("RowSums", buffers[0]);
-  bindStorage("RowCounts", buffers[1]);
-  glBindImageTexture(0, table.id(), 0, GL_TRUE, 0, GL_READ_ONLY, table.format());
-  p.use();
-  p.set("u_size", size);
-  glm::dvec4 sum(0.0), count(0.0);
-  std::vector<glm::vec4> sums(static_cast<size_t>(size)), counts(static_cast<size_t>(size));
-  for (int l = 0; l < layers; ++l) {
-    p.set("u_layer", l);
-    glDispatchCompute(static_cast<GLuint>((size + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(buffers[0], 0, bytes, sums.data());
-    glGetNamedBufferSubData(buffers[1], 0, bytes, counts.data());
-    for (int i = 0; i < size; ++i) {
-      sum += glm::dvec4(sums[static_cast<size_t>(i)]);
-      count += glm::dvec4(counts[static_cast<size_t>(i)]);
-    }
+// The mean pass reads every kMeanStride-th row: the offset only has to be near the mean.
+constexpr int kMeanStride = 4;
+
+std::string targetFormats(const std::vector<Texture2D>& targets) {
+  std::string d;
+  for (size_t t = 0; t < targets.size(); ++t)
+    d += "#define SL_SAT_FORMAT" + std::to_string(t) + " " + imageFormatName(targets[t].format()) + "\n";
+  return d;
+}
+
+void bindTargets(const Program& p, const std::vector<Texture2D>& targets, GLenum access) {
+  for (size_t t = 0; t < targets.size(); ++t) {
+    glBindImageTexture(static_cast<GLuint>(t), targets[t].id(), 0, GL_TRUE, 0, access, targets[t].format());
+    p.set("u_table" + std::to_string(t), static_cast<int>(t));
   }
-  glDeleteBuffers(2, buffers);
-  return glm::vec4(sum / glm::max(count, glm::dvec4(1.0)));
+}
+
+void unbindTargets(size_t count) {
+  for (size_t t = 0; t < count; ++t)
+    glBindImageTexture(static_cast<GLuint>(t), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+}
+
+GLuint groupsOf(int lines) { return static_cast<GLuint>((lines + 63) / 64); }
+
+// The rows and columns any span reaches, (x0, y0, x1, y1); (0, 0, 0, 0) when none has a texel.
+glm::ivec4 boundsOf(const std::vector<glm::ivec2>& spans) {
+  glm::ivec4 r(1 << 30, 1 << 30, -1, -1);
+  for (int y = 0; y < static_cast<int>(spans.size()); ++y) {
+    const glm::ivec2 s = spans[static_cast<size_t>(y)];
+    if (s.x > s.y) continue;
+    r = glm::ivec4(std::min(r.x, s.x), std::min(r.y, y), std::max(r.z, s.y), std::max(r.w, y));
+  }
+  return r.z < 0 ? glm::ivec4(0) : r;
 }
 
 }  // namespace
 
-void MomentMapState::buildSat(ShaderLibrary& shaders) {
-  const int layers = std::max(depth_.layers(), 1);
-  const int size = depth_.width();
-  satOffset_.assign(moments_.size(), glm::vec4(0.0f));
-  for (size_t t = 0; t < moments_.size(); ++t) {
-    const Texture2D& table = moments_[t];
-    satOffset_[t] = finiteMean(shaders, table, layers);
-    const ProgramSpec spec{"moment summed-area table",
-                           {{GL_COMPUTE_SHADER, "passes/moment_sat.comp"}},
-                           std::string("#define SL_SAT_FORMAT ") + imageFormatName(table.format()) + "\n"};
-    Program& p = shaders.get(spec);
-    if (!p.valid()) return;
-    p.use();
-    glBindImageTexture(0, table.id(), 0, GL_TRUE, 0, GL_READ_WRITE, table.format());
-    p.set("u_size", size);
-    p.set("u_offset", satOffset_[t]);
-    for (int l = 0; l < layers; ++l) {
-      p.set("u_layer", l);
-      for (int vertical = 0; vertical < 2; ++vertical) {
-        p.set("u_vertical", vertical);
-        glDispatchCompute(static_cast<GLuint>((size + 63) / 64), 1, 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      }
-    }
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+MomentMapState::SatCover MomentMapState::satCover(const std::vector<glm::vec2>* hull) const {
+  const int n = depth_.width();
+  SatCover c;
+  if (hull && hull->empty()) {  // no visible receiver: a table of one texel
+    c.rows.assign(static_cast<size_t>(n), glm::ivec2(1, 0));
+    c.rows[0] = glm::ivec2(0);
+  } else if (hull) {
+    // A box of up to satReach_ texels either side of a receiver, read bilinearly at its corners
+    // (a corner at P reads the texels whose centres lie within one texel of P - 1).
+    c.rows = blurSpans(*hull, n, 1, static_cast<float>(satReach_) + kLookupReach + 1.0f);
   }
+  std::optional<std::vector<glm::ivec2>> columns;
+  if (!c.rows.empty()) columns = columnIntervals(c.rows, n);
+  if (!columns) {  // every texel (or, were the spans no convex region's, every texel of their rows)
+    const glm::ivec4 r = c.rows.empty() ? glm::ivec4(0, 0, n - 1, n - 1) : boundsOf(c.rows);
+    c.rows.assign(static_cast<size_t>(n), glm::ivec2(1, 0));
+    for (int y = r.y; y <= r.w; ++y) c.rows[static_cast<size_t>(y)] = {r.x, r.z};
+    columns = columnIntervals(c.rows, n);
+  }
+  c.columns = *columns;
+  c.rect = boundsOf(c.rows);
+  return c;
+}
+
+void MomentMapState::upload(GLuint buffer, const std::vector<glm::ivec2>& data) {
+  glNamedBufferData(buffer, static_cast<GLsizeiptr>(data.size() * sizeof(glm::ivec2)), data.data(), GL_STREAM_DRAW);
+}
+
+// The mean of the finite moments of every target over the spans (every kMeanStride-th row, every
+// layer): the offset each table subtracts. Read back (a stall on a GPU; free on a software
+// rasterizer, where every pass is synchronous).
+void MomentMapState::satOffsets(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
+                                const std::vector<SatCover>& covers) {
+  const size_t targets = static_cast<size_t>(config_.targets());
+  satOffset_.assign(targets, glm::vec4(0.0f));
+  Program& p = shaders.get({"moment table mean",
+                            {{GL_COMPUTE_SHADER, "passes/moment_sat_mean.comp"}},
+                            defines() + "#include \"" + module_ + "\"\n"});
+  if (!p.valid()) return;
+  p.use();
+  TextureUnits units;
+  bindTechnique(p, units);  // what representationMoments reads
+  units.bind(p, "u_depth", depth_.id());
+  p.set("u_meanStride", kMeanStride);
+  const size_t values = static_cast<size_t>(depth_.width() / kMeanStride + 1) * targets;
+  const GLsizeiptr bytes = static_cast<GLsizeiptr>(values * sizeof(glm::vec4));
+  GLuint buffers[2];
+  glCreateBuffers(2, buffers);
+  for (GLuint b : buffers) glNamedBufferData(b, bytes, nullptr, GL_STREAM_READ);
+  bindStorage("RowSums", buffers[0]);
+  bindStorage("RowCounts", buffers[1]);
+  std::vector<glm::dvec4> sum(targets), count(targets);
+  std::vector<glm::vec4> sums(values), counts(values);
+  for (size_t l = 0; l < covers.size(); ++l) {
+    const int sampled = (covers[l].rect.w - covers[l].rect.y) / kMeanStride + 1;
+    upload(spans_, covers[l].rows);
+    p.set("u_rect", covers[l].rect);
+    p.set("u_layer", static_cast<int>(l));
+    glDispatchCompute(groupsOf(sampled), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const GLsizeiptr used = static_cast<GLsizeiptr>(static_cast<size_t>(sampled) * targets * sizeof(glm::vec4));
+    glGetNamedBufferSubData(buffers[0], 0, used, sums.data());
+    glGetNamedBufferSubData(buffers[1], 0, used, counts.data());
+    for (size_t i = 0; i < static_cast<size_t>(sampled) * targets; ++i) {
+      sum[i % targets] += glm::dvec4(sums[i]);
+      count[i % targets] += glm::dvec4(counts[i]);
+    }
+  }
+  glDeleteBuffers(2, buffers);
+  for (size_t t = 0; t < targets; ++t) satOffset_[t] = glm::vec4(sum[t] / glm::max(count[t], glm::dvec4(1.0)));
+}
+
+double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
+                                const std::vector<std::vector<glm::vec2>>& hulls, bool wholeMap) {
+  const int n = depth_.width();
+  const int layers = std::max(depth_.layers(), 1);
+  const bool skip = skipUnread_ && !wholeMap && static_cast<int>(hulls.size()) >= layers;
+  std::vector<SatCover> covers;
+  long long covered = 0;
+  for (int l = 0; l < layers; ++l) {
+    covers.push_back(satCover(skip ? &hulls[static_cast<size_t>(l)] : nullptr));
+    for (const glm::ivec2 s : covers.back().rows) covered += std::max(0, s.y - s.x + 1);
+  }
+  // Lookups clamp their corners to the texels the tables cover: the union of the layers' rects.
+  satRect_ = covers.front().rect;
+  for (const SatCover& c : covers)
+    satRect_ = glm::ivec4(std::min(satRect_.x, c.rect.x), std::min(satRect_.y, c.rect.y),
+                          std::max(satRect_.z, c.rect.z), std::max(satRect_.w, c.rect.w));
+  for (GLuint* b : {&spans_, &columns_})
+    if (!*b) glCreateBuffers(1, b);
+  bindStorage("SatSpans", spans_);
+  bindStorage("SatColumns", columns_);
+  satOffsets(shaders, bindTechnique, covers);
+  const std::string formats = targetFormats(moments_);
+  Program& rows = shaders.get({"moment table rows",
+                               {{GL_COMPUTE_SHADER, "passes/moment_sat_rows.comp"}},
+                               defines() + "#include \"" + module_ + "\"\n" + formats});
+  Program& columns = shaders.get({"moment table columns",
+                                  {{GL_COMPUTE_SHADER, "passes/moment_sat_columns.comp"}},
+                                  "#define SL_MOMENT_TARGETS " + std::to_string(config_.targets()) + "\n" + formats});
+  if (!rows.valid() || !columns.valid()) return 1.0;
+  for (int l = 0; l < layers; ++l) {
+    const SatCover& cover = covers[static_cast<size_t>(l)];
+    upload(spans_, cover.rows);
+    upload(columns_, cover.columns);
+    rows.use();
+    TextureUnits units;
+    bindTechnique(rows, units);
+    units.bind(rows, "u_depth", depth_.id());
+    rows.set("u_rect", cover.rect);
+    rows.set("u_layer", l);
+    for (size_t t = 0; t < satOffset_.size(); ++t) rows.set("u_offset[" + std::to_string(t) + "]", satOffset_[t]);
+    bindTargets(rows, moments_, GL_WRITE_ONLY);
+    glDispatchCompute(groupsOf(cover.rect.w - cover.rect.y + 1), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    columns.use();
+    columns.set("u_rect", cover.rect);
+    columns.set("u_layer", l);
+    bindTargets(columns, moments_, GL_READ_WRITE);
+    glDispatchCompute(groupsOf(cover.rect.z - cover.rect.x + 1), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  unbindTargets(moments_.size());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  return static_cast<double>(covered) / (static_cast<double>(n) * n * layers);
 }
 
 }  // namespace sl

@@ -21,10 +21,11 @@ GLenum formatFor(int channels, int bits) {
   return bits == 16 ? GL_RGBA16F : GL_RGBA32F;
 }
 
-// The status line's note of the share of the map the blur filtered (filter.skip_unread).
-std::string filteredNote(double share) {
-  char text[96];
-  std::snprintf(text, sizeof text, "blur over %.0f %% of the map (the texels visible receivers read)", 100.0 * share);
+// The status line's note of the share of the map the blur or table filtered (filter.skip_unread).
+std::string filteredNote(FilterMethod method, double share) {
+  char text[128];
+  std::snprintf(text, sizeof text, "%s over %.0f %% of the map (the texels visible receivers read)",
+                method == FilterMethod::Sat ? "summed-area table" : "blur", 100.0 * share);
   return text;
 }
 
@@ -41,6 +42,8 @@ std::string MomentMapState::statusIn(const SceneEffects& fx, const ParamSet& par
 MomentMapState::~MomentMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
   if (groups_) glDeleteBuffers(1, &groups_);
+  if (spans_) glDeleteBuffers(1, &spans_);
+  if (columns_) glDeleteBuffers(1, &columns_);
 }
 
 void MomentMapState::configure(const ParamSet& params) {
@@ -60,7 +63,10 @@ void MomentMapState::configure(const ParamSet& params) {
   clear_.resize(static_cast<size_t>(4 * c.targets()), 0.0f);
   defines_ = spec_.defines ? spec_.defines(params) : "";
   logExponent_ = spec_.logFilter ? params.f(spec_.logExponentKey) : 0.0f;
-  skipUnread_ = !soft && params.b("filter.skip_unread");
+  skipUnread_ = params.b("filter.skip_unread");
+  // The widest box a lookup reads: the soft ones' search and penumbra boxes are at most
+  // pcss.max_radius texels either side; the others' is filter.width.
+  satReach_ = soft ? static_cast<int>(std::ceil(params.f("pcss.max_radius"))) : (c.width + 1) / 2;
 }
 
 void MomentMapState::allocate(int size, int layers) {
@@ -71,13 +77,15 @@ void MomentMapState::allocate(int size, int layers) {
     const GLenum format = formatFor(config_.channelsOf(t), config_.bits);
     moments_.push_back(Texture2D::array(format, size, size, layers, levels, "moments " + std::to_string(t)));
   }
+  satRect_ = glm::ivec4(0, 0, size - 1, size - 1);
+  // A table covers only the texels lookups read; the rest keep what an earlier frame left, and
+  // start at zero rather than undefined.
+  if (config_.method == FilterMethod::Sat)
+    for (auto& m : moments_) glClearTexImage(m.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
   shadowFbos_.clear();
-  std::vector<const Texture2D*> colors;
-  if (momentsInShadowPass())
-    for (const auto& m : moments_) colors.push_back(&m);
   for (int l = 0; l < layers; ++l) {
     shadowFbos_.emplace_back("moment map layer " + std::to_string(l));
-    shadowFbos_.back().attachLayer(colors, &depth_, l);
+    shadowFbos_.back().attachLayer({}, &depth_, l);
   }
 }
 
@@ -99,9 +107,6 @@ void MomentMapState::prepare(int size, int layers, int /*views*/) {
 void MomentMapState::beginShadowLayer(int layer) {
   const Framebuffer& fbo = shadowFbos_.at(static_cast<size_t>(layer));
   fbo.bind();
-  if (momentsInShadowPass())
-    for (int t = 0; t < config_.targets(); ++t)
-      glClearNamedFramebufferfv(fbo.id(), GL_COLOR, t, &clear_[static_cast<size_t>(4 * t)]);
   glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
@@ -109,8 +114,7 @@ void MomentMapState::continueShadowLayer(int layer) { shadowFbos_.at(static_cast
 
 std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx) {
   status_ = ctx.scene ? statusIn(sceneEffects(*ctx.scene, ctx.shadowedLight()), *ctx.params) : "";
-  // One pass makes the filtered moments: of the depth the shadow pass drew, or (the soft ones,
-  // momentsInShadowPass) summed from the moments it wrote.
+  // One pass makes the filtered moments of the depth the shadow pass drew.
   const std::string out = "moments.filtered" + ctx.viewportTag;
   ShaderLibrary* shaders = ctx.shaders;
   auto draw = ctx.drawFullscreen;
@@ -147,7 +151,7 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
                if (lightSpace && !lightSpace->sharesLayers())
                  for (const LightView& v : lightSpace->views) hulls.push_back(v.receiverHull);
                const double share = filter(*shaders, draw, targets, bindTechnique, hulls, shown);
-               if (skipsUnread() && share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(share);
+               if (share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(config_.method, share);
              }});
   addMomentViewPasses(graph, ctx, out, views());
   return out;
@@ -170,6 +174,10 @@ void MomentMapState::bind(const Program& p, TextureUnits& units) const {
       p.set("u_satOffset" + std::to_string(t),
             t < static_cast<int>(satOffset_.size()) ? satOffset_[static_cast<size_t>(t)] : glm::vec4(0.0f));
   }
+  // Where the tables' corners may be read, in the lookup's units (texel (i, j) holds the sum up
+  // to (i + 1, j + 1)): from the first texel the spans reach to the last. A table has no zero
+  // line before its first texel: a box touching it shrinks by up to a texel, as at the map's edge.
+  if (config_.method == FilterMethod::Sat) p.set("u_satBounds", glm::vec4(satRect_) + 1.0f);
 }
 
 std::string MomentMapState::defines() const {

@@ -77,16 +77,23 @@ class MomentMapState : public RepresentationState {
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
   const std::vector<float>& clearValue() const { return clear_; }
-  // The soft representations' shadow pass writes the moments of every caster fragment itself
-  // (passes/shadow_moments.frag): their summed-area tables sum rows serially, and taking the
-  // moments in a pass of their own measured slower there (docs/performance.md). The others'
-  // shadow pass draws depth alone and the filter pass takes the moments of each texel once.
-  bool momentsInShadowPass() const { return spec_.soft(); }
 
  private:
   void allocate(int size, int layers);
   std::string statusIn(const SceneEffects& fx, const ParamSet& params) const;
-  void buildSat(ShaderLibrary& shaders);  // moment_sat.cpp
+  // moment_sat.cpp: the tables over the texels lookups read (returns the share of the map).
+  double buildSat(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
+                  const std::vector<std::vector<glm::vec2>>& hulls, bool wholeMap);
+  // The texels a layer's table holds: those a visible receiver's lookups read, its receiver
+  // hull dilated by the widest box and a bilinear read (nullptr: every texel).
+  struct SatCover {
+    std::vector<glm::ivec2> rows;     // per row: the columns [x0, x1] (x0 > x1: none)
+    std::vector<glm::ivec2> columns;  // per column: the rows [y0, y1] whose span holds it
+    glm::ivec4 rect{0};               // (x0, y0, x1, y1): the columns and rows any span reaches
+  };
+  SatCover satCover(const std::vector<glm::vec2>* hull) const;
+  static void upload(GLuint buffer, const std::vector<glm::ivec2>& data);
+  void satOffsets(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique, const std::vector<SatCover>& covers);
   void buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
   void runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
                    const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst, int layer,
@@ -107,8 +114,12 @@ class MomentMapState : public RepresentationState {
   bool skipUnread_ = true;
   Texture2D depth_;
   std::vector<Texture2D> moments_;
-  std::vector<Framebuffer> shadowFbos_;  // per layer: every moment target + depth
+  std::vector<Framebuffer> shadowFbos_;  // per layer: the depth
   std::vector<glm::vec4> satOffset_;     // per target: what its summed-area table subtracted
+  glm::ivec4 satRect_{0};                // the columns and rows the tables' spans reach
+  GLuint spans_ = 0;                     // storage block SatSpans (passes/moment_sat_*.comp)
+  GLuint columns_ = 0;                   // storage block SatColumns
+  int satReach_ = 0;                     // texels: half the widest box a lookup reads
 };
 
 }  // namespace sl

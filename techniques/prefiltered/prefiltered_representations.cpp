@@ -35,11 +35,6 @@ class PrefilteredRepresentation : public Representation {
   std::string help() const override { return help_; }
   std::string glslModule() const override { return module_; }
   std::vector<ParamDecl> params() const override { return params_; }
-  // Depth alone, as a depth map's, and the filter pass takes the moments (moment_filter.cpp);
-  // the soft ones write their moments here (MomentMapState::momentsInShadowPass says why).
-  CasterDraw casterDraw() const override {
-    return spec_.soft() ? CasterDraw{"passes/shadow_moments.frag"} : CasterDraw{};
-  }
   std::unique_ptr<RepresentationState> createState() const override {
     return std::make_unique<MomentMapState>(spec_, module_);
   }

@@ -63,14 +63,18 @@ vec4 satAt(sampler2DArray table, vec2 P, vec2 n, float layer) {
   return textureLod(table, vec3((P - 0.5) / n, layer), 0.0);
 }
 
-// Mean over the box `width` texels wide centred on uv: four reads, whatever the width. Corners
-// are clamped to [1, n] texels (the table has no zero row or column), which shrinks boxes
-// touching the map's first row or column by up to a texel.
+// The table covers the texels visible receivers' boxes can reach (filter.skip_unread;
+// moment_sat.cpp): corners are clamped to the rectangle around them, u_satBounds = (lo, hi) in
+// texels. The table has no zero row or column before its first: boxes touching it shrink by up
+// to a texel (the receivers' boxes never do; the rectangle holds their reach and more).
+uniform vec4 u_satBounds;
+
+// Mean over the box `width` texels wide centred on uv: four reads, whatever the width.
 vec4 satBox(sampler2DArray table, vec4 offset, vec3 uvLayer, float width) {
   vec2 n = vec2(textureSize(table, 0).xy);
   vec2 c = uvLayer.xy * n;
-  vec2 lo = clamp(c - 0.5 * width, vec2(1.0), n);
-  vec2 hi = clamp(c + 0.5 * width, vec2(1.0), n);
+  vec2 lo = clamp(c - 0.5 * width, u_satBounds.xy, u_satBounds.zw);
+  vec2 hi = clamp(c + 0.5 * width, u_satBounds.xy, u_satBounds.zw);
   vec4 sum = satAt(table, hi, n, uvLayer.z) - satAt(table, vec2(lo.x, hi.y), n, uvLayer.z) -
              satAt(table, vec2(hi.x, lo.y), n, uvLayer.z) + satAt(table, lo, n, uvLayer.z);
   vec2 extent = hi - lo;

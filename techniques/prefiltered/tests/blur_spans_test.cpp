@@ -2,6 +2,7 @@
 // small map, with and without dilation, and the convex hull they start from.
 #include "part/light_frame.h"
 #include "prefiltered/blur_spans.h"
+#include "prefiltered/tests/convex_inside.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -10,6 +11,8 @@
 
 namespace sl {
 namespace {
+
+using test::insideHull;
 
 TEST(BlurSpans, AnUnknownHullCoversEveryTexel) {
   const std::vector<glm::ivec2> spans = blurSpans({}, 20, 8, 2.0f);
@@ -75,15 +78,6 @@ TEST(BlurSpans, ConvexHullDropsInteriorAndCollinearPoints) {
   EXPECT_FLOAT_EQ(area, 4.0f);
 }
 
-// True where p lies in the counter-clockwise convex polygon (its edges included, within eps).
-bool insideHull(const std::vector<glm::vec2>& hull, glm::vec2 p, float eps) {
-  for (size_t i = 0; i < hull.size(); ++i) {
-    const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
-    if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) < -eps * glm::length(b - a)) return false;
-  }
-  return true;
-}
-
 // An orthographic view's hull is the projected points' own hull: a square's corners and its
 // centre give the square's four corners in uv.
 TEST(BlurSpans, ReceiverHullOfAnOrthographicViewIsTheProjectedCorners) {
@@ -122,6 +116,31 @@ TEST(BlurSpans, ReceiverHullOfASpotHoldsThePartInFrontOfTheLight) {
   for (const glm::vec2& q : hull) reach = std::max(reach, q.x);
   EXPECT_GT(reach, 100.0f);
   EXPECT_TRUE(receiverHullInMap(v, {{0, 0, 1}, {1, 1, 2}}).empty());
+}
+
+// The summed-area tables' columns (columnIntervals): per column, the rows whose span holds it,
+// against a direct count; a set of spans whose column is broken into two runs has none.
+TEST(BlurSpans, ColumnIntervalsOfATriangleAreTheRowsHoldingEachColumn) {
+  const int n = 64;
+  const std::vector<glm::ivec2> rows = blurSpans({{0.3f, 0.15f}, {0.85f, 0.4f}, {0.35f, 0.8f}}, n, 1, 3.0f);
+  const auto columns = columnIntervals(rows, n);
+  ASSERT_TRUE(columns.has_value());
+  for (int x = 0; x < n; ++x) {
+    int first = n, last = -1;
+    for (int y = 0; y < n; ++y)
+      if (x >= rows[static_cast<size_t>(y)].x && x <= rows[static_cast<size_t>(y)].y)
+        first = std::min(first, y), last = y;
+    const glm::ivec2 want = last < 0 ? glm::ivec2(1, 0) : glm::ivec2(first, last);
+    EXPECT_EQ((*columns)[static_cast<size_t>(x)], want) << "column " << x;
+  }
+  EXPECT_EQ((*columns)[0], glm::ivec2(1, 0));  // left of the dilated triangle
+  // By hand, texels [30, 31) in x: the top edge (19.2, 9.6)-(54.4, 25.6), slope 16 / 35.2, moved
+  // by the dilation's corner (3, -3), is at y = 10.15 at x = 30; the bottom edge (54.4, 25.6)-
+  // (22.4, 51.2), slope -0.8, moved by (3, 3), at y = 50.52.
+  EXPECT_EQ((*columns)[30], glm::ivec2(10, 50));
+  std::vector<glm::ivec2> broken(static_cast<size_t>(n), glm::ivec2(1, 0));
+  broken[10] = broken[12] = glm::ivec2(5, 8);  // column 5 in rows 10 and 12, not 11
+  EXPECT_FALSE(columnIntervals(broken, n).has_value());
 }
 
 }  // namespace

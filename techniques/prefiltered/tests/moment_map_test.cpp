@@ -3,6 +3,7 @@
 // visibility in [0,1] under every filter method, format, layout and accumulation.
 #include "part/transient_textures.h"
 #include "prefiltered/blur_spans.h"
+#include "prefiltered/tests/convex_inside.h"
 #include "prefiltered/tests/moment_probe.h"
 #include "technique.h"
 
@@ -170,6 +171,48 @@ TEST(MomentMap, EsmBlursInLogSpaceWithoutOverflow) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// Every texel's lookup through the real lookup code (probe_lookup.frag: four bilinear reads of
+// each summed-area table), RGBA per texel.
+std::vector<float> probeLookups(GlHarness& h, const Map& m, int n) {
+  const std::string prelude = m.state->defines() + "#include \"" + m.technique.representation->glslModule() + "\"\n";
+  Program& p = h.shaders.get({"sat probe",
+                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_lookup.frag"}},
+                              prelude});
+  EXPECT_TRUE(p.valid()) << p.error();
+  Texture2D target(GL_RGBA32F, n, n, "sat probe");
+  Framebuffer fbo("sat probe");
+  fbo.attach({&target}, nullptr);
+  fbo.bind();
+  p.use();
+  setTechniqueUniforms(p, m.technique, LightSpace{}, Light{});
+  p.set("u_probeSize", glm::vec2(n, n));
+  {
+    TextureUnits units;
+    m.state->bind(p, units);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDeleteVertexArrays(1, &vao);
+  }
+  return target.readFloats(4);
+}
+
+// The largest difference of the lookups' two VSM moments from the direct box average over the
+// texels `where` accepts.
+template <class Where>
+double worstLookup(const std::vector<float>& got, const std::vector<double>& want, int n, Where where) {
+  double worst = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      if (where(x, y))
+        for (int c = 0; c < 2; ++c)
+          worst = std::max(worst, std::abs(got[(static_cast<size_t>(y) * n + x) * 4 + c] -
+                                           want[(static_cast<size_t>(y) * n + x) * 2 + c]));
+  return worst;
+}
+
 // The summed-area table read through the real lookup (four bilinear reads) against the direct
 // box average, at texel centres whose box lies inside the table (at the first row and column
 // the lookup shrinks the box; README).
@@ -179,46 +222,47 @@ TEST(MomentMap, SummedAreaTableAgreesWithTheDirectBox) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
   for (int width : {1, 3, 5, 9, 15}) {
-    const std::vector<std::string> sets = {"filter.method=sat", "filter.width=" + std::to_string(width)};
-    Technique t = makeTechnique("vsm", sets);
-    Map m = momentMap("vsm", sets, n);
+    Map m = momentMap("vsm", {"filter.method=sat", "filter.width=" + std::to_string(width)}, n);
     std::vector<float> z(static_cast<size_t>(n) * n);
     for (float& d : z) d = depth(rng);
     fillDepth(m, z);
     runFilter(h, m);
-    const std::vector<float> data = vsmMoments(z);
-    const std::string prelude = m.state->defines() + "#include \"" + t.representation->glslModule() + "\"\n";
-    Program& p =
-        h.shaders.get({"sat probe",
-                       {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "probe_lookup.frag"}},
-                       prelude});
-    ASSERT_TRUE(p.valid()) << p.error();
-    Texture2D target(GL_RGBA32F, n, n, "sat probe");
-    Framebuffer fbo("sat probe");
-    fbo.attach({&target}, nullptr);
-    fbo.bind();
-    p.use();
-    setTechniqueUniforms(p, t, LightSpace{}, Light{});
-    p.set("u_probeSize", glm::vec2(n, n));
-    {
-      TextureUnits units;
-      m.state->bind(p, units);
-      GLuint vao = 0;
-      glCreateVertexArrays(1, &vao);
-      glBindVertexArray(vao);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glBindVertexArray(0);
-      glDeleteVertexArrays(1, &vao);
-    }
-    const std::vector<float> got = target.readFloats(4);
-    const std::vector<double> want = boxBlur(data, n, width, 2, false, 0);
+    const std::vector<double> want = boxBlur(vsmMoments(z), n, width, 2, false, 0);
     const int h0 = width / 2 + 1;
-    double worst = 0;
-    for (int y = h0; y < n - h0; ++y)
-      for (int x = h0; x < n - h0; ++x)
-        for (int c = 0; c < 2; ++c)
-          worst = std::max(worst, std::abs(got[(static_cast<size_t>(y) * n + x) * 4 + c] -
-                                           want[(static_cast<size_t>(y) * n + x) * 2 + c]));
+    const double worst = worstLookup(probeLookups(h, m, n), want, n,
+                                     [&](int x, int y) { return x >= h0 && y >= h0 && x < n - h0 && y < n - h0; });
+    EXPECT_LT(worst, 2e-5) << "width " << width;
+  }
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
+// With a receiver hull the tables cover only the texels lookups near it read (a slanted
+// triangle's spans, moment_sat.cpp): there every lookup still equals the direct box average,
+// and the share covered is well below the map. Beyond the spans the texels hold an earlier
+// frame's sums (here: the whole map's tables, made first), which a lookup there would mix.
+TEST(MomentMap, SummedAreaTableOverAHullAgreesWithTheDirectBoxWhereLookupsRead) {
+  GlHarness h(test::probeShaderDir());
+  const int n = 96;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  const std::vector<glm::vec2> hull = {{0.3f, 0.15f}, {0.85f, 0.4f}, {0.35f, 0.8f}};
+  for (int width : {3, 9, 15}) {
+    Map m = momentMap("vsm", {"filter.method=sat", "filter.width=" + std::to_string(width)}, n);
+    std::vector<float> z(static_cast<size_t>(n) * n);
+    for (float& d : z) d = depth(rng);
+    fillDepth(m, z);
+    runFilter(h, m);  // the whole map's tables: what the texels beyond the spans keep
+    for (float& d : z) d = depth(rng);
+    fillDepth(m, z);
+    const double share = m.state->filter(
+        h.shaders, [] {}, {},
+        [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); }, {hull},
+        false);
+    EXPECT_LT(share, 0.6) << "width " << width;
+    const std::vector<double> want = boxBlur(vsmMoments(z), n, width, 2, false, 0);
+    const double worst = worstLookup(probeLookups(h, m, n), want, n, [&](int x, int y) {
+      return test::insideHull(hull, (glm::vec2(x, y) + 0.5f) / float(n));
+    });
     EXPECT_LT(worst, 2e-5) << "width " << width;
   }
   EXPECT_EQ(glDebugErrorCount(), 0);
