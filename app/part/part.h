@@ -127,9 +127,9 @@ class RepresentationState : public PartState {
   // Called every frame before prepare with the technique's current values: targets, formats
   // and defines may depend on them (storage format, filter method, number of terms).
   virtual void configure(const ParamSet& params) {}
-  // Called every frame before configure: what the scene calls for (e.g. semi-transparent
-  // casters) may decide the passes and defines.
-  virtual void setScene(const Scene& scene) {}
+  // Called every frame before configure: what the scene and the shadowed light call for (e.g.
+  // semi-transparent casters, an area light) may decide the passes and defines.
+  virtual void setScene(const Scene& scene, const Light& light) {}
   // Allocates (or keeps) the targets: size x size texels, `layers` layers, for `views` light
   // views (more than layers when views are packed into one layer, LightSpace::layerOf).
   virtual void prepare(int size, int layers, int views) = 0;

@@ -446,7 +446,7 @@ void Renderer::layOutViewport(Viewport& vp, const FrameInput& in, bool cameraMov
                              " light views (1 to " + std::to_string(kMaxLightViews) + " allowed)");
   placeInOneAtlas(vp);
   vp.lightViews_->upload(vp.lightSpace);
-  vp.representation->setScene(*scene_);
+  vp.representation->setScene(*scene_, lightOf(vp));
   vp.representation->configure(vp.frameParams_);
   vp.representation->prepare(vp.lightSpace.size, vp.lightSpace.layerCount(),
                              static_cast<int>(vp.lightSpace.views.size()));

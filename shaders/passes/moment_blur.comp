@@ -5,7 +5,7 @@
 // SL_BLUR_FROM_DEPTH (the first direction): the source is the shadow pass's depth, turned into
 // the representation's moments here, once per fetched texel. The shadow pass then writes depth
 // alone, as a depth map's does, instead of every moment target for every caster fragment drawn.
-// With SL_BLUR_HALF 0 (a box of 1) this pass only turns depth into moments.
+// A box of 1 (no blur) takes the moments in a fragment pass instead (moment_from_depth.frag).
 // A box of width N texels: odd N has N equal taps; even N has N+1 taps with half weights at the
 // ends, the exact area of a width-N box over nearest-neighbour texels (so every width keeps the
 // texel centred). Edges clamp, as the texture's clamp-to-edge would.

@@ -31,7 +31,7 @@ void DeepState::releaseBuffers() {
   bufferTexels_ = bufferFragments_ = 0;
 }
 
-void DeepState::setScene(const Scene& scene) { active_ = sceneEffects(scene).semiTransparent; }
+void DeepState::setScene(const Scene& scene, const Light&) { active_ = sceneEffects(scene).semiTransparent; }
 
 void DeepState::configure(const ParamSet& params) {
   nodeCount_ = params.i("deep.nodes");

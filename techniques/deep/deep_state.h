@@ -21,7 +21,7 @@ class DeepState : public RepresentationState {
  public:
   DeepState() : opaque_(false) {}
   ~DeepState() override;
-  void setScene(const Scene& scene) override;
+  void setScene(const Scene& scene, const Light& light) override;
   void configure(const ParamSet& params) override;
   void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override { opaque_.beginShadowLayer(layer); }

@@ -26,16 +26,19 @@ std::vector<glm::vec2> clipAtRow(const std::vector<glm::vec2>& poly, float y0, b
 
 }  // namespace
 
-std::vector<glm::ivec2> blurSpans(const std::vector<glm::vec2>& hullUv, int size, int band, float dilation) {
-  const int bands = (size + band - 1) / band;
-  if (hullUv.empty()) return std::vector<glm::ivec2>(static_cast<size_t>(bands), glm::ivec2(0, size - 1));
-  // The hull in texel units (texel i spans [i, i + 1)), dilated: the hull of its corners moved
-  // by the dilation along both axes (the Minkowski sum with a square).
+std::vector<glm::vec2> dilatedHull(const std::vector<glm::vec2>& hullUv, int size, float dilation) {
+  // The hull of its corners moved by the dilation along both axes.
   std::vector<glm::vec2> corners;
   for (const glm::vec2& uv : hullUv)
     for (glm::vec2 d : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(1, 1)})
       corners.push_back(uv * static_cast<float>(size) + d * dilation);
-  const std::vector<glm::vec2> poly = convexHull(corners);
+  return convexHull(corners);
+}
+
+std::vector<glm::ivec2> blurSpans(const std::vector<glm::vec2>& hullUv, int size, int band, float dilation) {
+  const int bands = (size + band - 1) / band;
+  if (hullUv.empty()) return std::vector<glm::ivec2>(static_cast<size_t>(bands), glm::ivec2(0, size - 1));
+  const std::vector<glm::vec2> poly = dilatedHull(hullUv, size, dilation);
   std::vector<glm::ivec2> spans(static_cast<size_t>(bands), glm::ivec2(1, 0));
   for (int b = 0; b < bands; ++b) {
     const std::vector<glm::vec2> slab =

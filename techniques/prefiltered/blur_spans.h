@@ -19,6 +19,10 @@ inline constexpr int kBlurGroupSide = 8;
 // texels whose centres lie within one texel; one more for the rounding of the hull's corners.
 inline constexpr float kLookupReach = 2.0f;
 
+// The convex polygon `hullUv` (map uv) of a size² map in texel units (texel i spans [i, i + 1)),
+// dilated by `dilation` texels along both axes (the Minkowski sum with a square).
+std::vector<glm::vec2> dilatedHull(const std::vector<glm::vec2>& hullUv, int size, float dilation);
+
 // Per band of `band` rows of a size² map, the columns [x, y] that the convex polygon `hullUv`
 // (map uv) dilated by `dilation` texels covers in any row of the band; {1, 0} where it misses
 // the band. An empty hull covers every texel.

@@ -75,12 +75,19 @@ double MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()
                               const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
                               const std::vector<std::vector<glm::vec2>>& hulls, bool clearUnread) {
   const int layers = std::max(depth_.layers(), 1);
-  if (config_.method == FilterMethod::Sat) return buildSat(shaders, bindTechnique, hulls, clearUnread);
+  if (summed_) return buildSat(shaders, bindTechnique, hulls, clearUnread);
   const bool blurs = config_.blurs();
   double share = 0.0;
   for (int l = 0; l < layers; ++l) {
-    const std::optional<BlurGroups> groups =
-        l < static_cast<int>(hulls.size()) ? groupsFor(hulls[static_cast<size_t>(l)]) : std::nullopt;
+    const std::vector<glm::vec2>* hull =
+        skipsUnread() && l < static_cast<int>(hulls.size()) && !hulls[static_cast<size_t>(l)].empty()
+            ? &hulls[static_cast<size_t>(l)]
+            : nullptr;
+    if (!blurs) {  // the moments alone (a box of 1, the first mip level, a soft map under a point of light)
+      share += writeMoments(shaders, drawFullscreen, bindTechnique, l, hull, clearUnread);
+      continue;
+    }
+    const std::optional<BlurGroups> groups = hull ? groupsFor(*hull) : std::nullopt;
     share += groups ? groups->share : 1.0;
     std::optional<glm::ivec2> first, second;  // (offset, count) in the group list
     if (groups) {
@@ -88,14 +95,58 @@ double MomentMapState::filter(ShaderLibrary& shaders, const std::function<void()
       first = glm::ivec2(0, groups->first.size());
       second = glm::ivec2(groups->first.size(), groups->second.size());
     }
-    // Depth to moments, blurred on the way along rows when the method is a blur; then columns.
-    runBlurPass(shaders, bindTechnique, {&depth_}, blurs ? pointers(scratch) : pointers(moments_), l, false, first);
-    if (!blurs) continue;
+    // Depth to moments, blurred on the way along rows; then columns.
+    runBlurPass(shaders, bindTechnique, {&depth_}, pointers(scratch), l, false, first);
     if (groups && clearUnread) clearLayer(l);  // a view shows the texels the blur skips
     runBlurPass(shaders, bindTechnique, pointers(scratch), pointers(moments_), l, true, second);
   }
   if (config_.method == FilterMethod::Mipmap) buildMips(shaders, drawFullscreen);
   return share / layers;
+}
+
+// The moments of each depth texel of a layer, as a fragment pass (passes/moment_from_depth.frag;
+// the rasterizer's colour writes moved them at twice the rate of a compute pass's image stores
+// on llvmpipe): over the receiver hull dilated by what a bilinear lookup reads when there is one
+// (the other texels keep an earlier frame's moments, or the empty texel's when `clearUnread`), or
+// the whole layer. Returns the share of the layer covered.
+double MomentMapState::writeMoments(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+                                    const TechniqueBinder& bindTechnique, int layer, const std::vector<glm::vec2>* hull,
+                                    bool clearUnread) {
+  const int n = depth_.width();
+  const std::vector<glm::vec2> polygon = hull ? dilatedHull(*hull, n, kLookupReach + 1.0f) : std::vector<glm::vec2>{};
+  const bool whole = polygon.size() < 3 || polygon.size() > kMaxPolygonCorners;
+  Program& p = shaders.get({"moments from depth",
+                            {{GL_VERTEX_SHADER, whole ? "passes/fullscreen.vert" : "passes/map_polygon.vert"},
+                             {GL_FRAGMENT_SHADER, "passes/moment_from_depth.frag"}},
+                            defines() + "#include \"" + module_ + "\"\n"});
+  if (!p.valid()) return 1.0;
+  if (!whole && clearUnread) clearLayer(layer);
+  p.use();
+  TextureUnits units;
+  bindTechnique(p, units);  // what representationMoments reads (exponents, quantization)
+  units.bind(p, "u_depth", depth_.id());
+  p.set("u_layer", layer);
+  Framebuffer fbo("moments from depth");
+  fbo.attachLayer(pointers(moments_), nullptr, layer);
+  fbo.bind();
+  glViewport(0, 0, n, n);
+  if (whole) {
+    drawFullscreen();
+    return 1.0;
+  }
+  for (size_t i = 0; i < polygon.size(); ++i)
+    p.set("u_polygon[" + std::to_string(i) + "]", polygon[i] / static_cast<float>(n));
+  // Either winding: the fan is drawn with culling off (the shadow pass may leave it on).
+  const GLboolean culling = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);
+  if (!polygonVao_) glCreateVertexArrays(1, &polygonVao_);
+  glBindVertexArray(polygonVao_);
+  glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(polygon.size()));
+  glBindVertexArray(0);
+  if (culling) glEnable(GL_CULL_FACE);
+  long long covered = 0;
+  for (const glm::ivec2 s : blurSpans(*hull, n, 1, kLookupReach + 1.0f)) covered += std::max(0, s.y - s.x + 1);
+  return static_cast<double>(covered) / (static_cast<double>(n) * n);
 }
 
 void MomentMapState::buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen) {
@@ -133,7 +184,7 @@ void MomentMapState::buildMips(ShaderLibrary& shaders, const std::function<void(
 }
 
 // One direction of the box blur as a compute pass (shaders/passes/moment_blur.comp), one layer:
-// from the depth (the first direction, or the plain depth-to-moments step of a box of 1) or from
+// from the depth (the first direction) or from
 // the first direction's scratch targets. On llvmpipe the blur was two fullscreen fragment passes
 // fetching every tap; an invocation now fetches each texel of its run once, and the shadow pass
 // writes depth alone (docs/performance.md has both measured).
@@ -141,16 +192,16 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
                                  const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst,
                                  int layer, bool vertical, std::optional<glm::ivec2> groups) {
   const bool fromDepth = src.front() == &depth_;
-  const bool blurs = config_.blurs();
   std::string prelude = fromDepth ? defines() + "#include \"" + module_ + "\"\n#define SL_BLUR_FROM_DEPTH\n"
                                   : filterDefines(config_, spec_.logFilter);
   prelude += "#define SL_BLUR_RUN " + std::to_string(kBlurRun) + "\n#define SL_BLUR_HALF " +
-             std::to_string(blurs ? config_.width / 2 : 0) + "\n";
+             std::to_string(config_.width / 2) + "\n";
   if (groups) prelude += "#define SL_BLUR_GROUPS\n";
   for (size_t t = 0; t < dst.size(); ++t)
     prelude += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(dst[t]->format()) + "\n";
-  Program& p = shaders.get(
-      {fromDepth ? "moments from depth" : "moment blur", {{GL_COMPUTE_SHADER, "passes/moment_blur.comp"}}, prelude});
+  Program& p = shaders.get({fromDepth ? "moment blur from depth" : "moment blur",
+                            {{GL_COMPUTE_SHADER, "passes/moment_blur.comp"}},
+                            prelude});
   if (!p.valid()) return;
   p.use();
   TextureUnits units;
@@ -161,7 +212,7 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
     bindSources(p, units, src);
   }
   if (spec_.logFilter) p.set("u_logExponent", logExponent_);
-  p.set("u_width", static_cast<float>(blurs ? config_.width : 1));
+  p.set("u_width", static_cast<float>(config_.width));
   p.set("u_layer", layer);
   p.set("u_vertical", vertical ? 1 : 0);
   if (groups) p.set("u_groupOffset", groups->x);

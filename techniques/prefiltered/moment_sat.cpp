@@ -10,6 +10,7 @@
 #include "prefiltered/moment_state.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace sl {
@@ -53,16 +54,18 @@ glm::ivec4 boundsOf(const std::vector<glm::ivec2>& spans) {
 
 }  // namespace
 
-MomentMapState::SatCover MomentMapState::satCover(const std::vector<glm::vec2>* hull) const {
+MomentMapState::SatCover MomentMapState::satCover(const std::vector<glm::vec2>* hull, int layer) const {
   const int n = depth_.width();
   SatCover c;
   if (hull && hull->empty()) {  // no visible receiver: a table of one texel
     c.rows.assign(static_cast<size_t>(n), glm::ivec2(1, 0));
     c.rows[0] = glm::ivec2(0);
   } else if (hull) {
-    // A box of up to satReach_ texels either side of a receiver, read bilinearly at its corners
+    // A box of up to `reach` texels either side of a receiver, read bilinearly at its corners
     // (a corner at P reads the texels whose centres lie within one texel of P - 1).
-    c.rows = blurSpans(*hull, n, 1, static_cast<float>(satReach_) + kLookupReach + 1.0f);
+    const float reach =
+        layer < static_cast<int>(viewReach_.size()) ? viewReach_[static_cast<size_t>(layer)] : satReach_;
+    c.rows = blurSpans(*hull, n, 1, std::ceil(reach) + kLookupReach + 1.0f);
   }
   std::optional<std::vector<glm::ivec2>> columns;
   if (!c.rows.empty()) columns = columnIntervals(c.rows, n);
@@ -133,7 +136,7 @@ double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& b
   std::vector<SatCover> covers;
   long long covered = 0;
   for (int l = 0; l < layers; ++l) {
-    covers.push_back(satCover(skip ? &hulls[static_cast<size_t>(l)] : nullptr));
+    covers.push_back(satCover(skip ? &hulls[static_cast<size_t>(l)] : nullptr, l));
     for (const glm::ivec2 s : covers.back().rows) covered += std::max(0, s.y - s.x + 1);
   }
   // Lookups clamp their corners to the texels the tables cover: the union of the layers' rects.

@@ -22,11 +22,31 @@ GLenum formatFor(int channels, int bits) {
 }
 
 // The status line's note of the share of the map the blur or table filtered (filter.skip_unread).
-std::string filteredNote(FilterMethod method, double share) {
+std::string filteredNote(const char* what, double share) {
   char text[128];
-  std::snprintf(text, sizeof text, "%s over %.0f %% of the map (the texels visible receivers read)",
-                method == FilterMethod::Sat ? "summed-area table" : "blur", 100.0 * share);
+  std::snprintf(text, sizeof text, "%s over %.0f %% of the map (the texels visible receivers read)", what,
+                100.0 * share);
   return text;
+}
+
+// Half the widest box a soft lookup reads in `view` (texels), mirroring representations/soft/
+// penumbra.glsl: the blocker search's radius or the penumbra's, whichever can be larger, at the
+// farthest receiver, within [kPcssMinRadius = 1, pcss.max_radius]; under a point of light the
+// minimum kernel's. The search is measured at the near plane clamped to 1e-4, the penumbra from
+// blockers that may lie as near as the view's near plane (negative for a sun's box).
+float softReachTexels(const LightView& view, const Light& light, float lightScale, float maxRadius) {
+  if (!(light.radius > 0.0f)) return 1.0f;
+  const float size = light.radius * lightScale;
+  const float nearD = view.nearPlane, farD = view.farPlane;
+  float texels = maxRadius;
+  if (light.positional() && nearD > 0.0f && farD > nearD)
+    // search size (dR - near) / dR / texel(near); penumbra size (1 / dB - 1 / dR) / z, dB >= near
+    texels = size * (farD - nearD) / farD / (view.texelWorldSize * (view.perspective ? nearD : 1.0f));
+  else if (!light.positional() && !view.perspective)  // size (dR - dB) / texel, dB >= near
+    texels = size * (farD - std::min(nearD, 1e-4f)) / view.texelWorldSize;
+  else if (!light.positional() && nearD > 0.0f && farD > nearD)  // size (dR - dB) / (z dR)
+    texels = size * (farD - nearD) / farD / view.texelWorldSize;
+  return std::isfinite(texels) ? std::clamp(texels, 1.0f, maxRadius) : maxRadius;
 }
 
 int mipLevels(int size) { return static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) + 1; }
@@ -42,8 +62,13 @@ std::string MomentMapState::statusIn(const SceneEffects& fx, const ParamSet& par
 MomentMapState::~MomentMapState() {
   if (sampler_) glDeleteSamplers(1, &sampler_);
   if (groups_) glDeleteBuffers(1, &groups_);
+  if (polygonVao_) glDeleteVertexArrays(1, &polygonVao_);
   if (spans_) glDeleteBuffers(1, &spans_);
   if (columns_) glDeleteBuffers(1, &columns_);
+}
+
+void MomentMapState::setScene(const Scene& scene, const Light& light) {
+  areaLight_ = sceneEffects(scene, light).areaLight;
 }
 
 void MomentMapState::configure(const ParamSet& params) {
@@ -64,9 +89,11 @@ void MomentMapState::configure(const ParamSet& params) {
   defines_ = spec_.defines ? spec_.defines(params) : "";
   logExponent_ = spec_.logFilter ? params.f(spec_.logExponentKey) : 0.0f;
   skipUnread_ = params.b("filter.skip_unread");
+  summed_ = c.method == FilterMethod::Sat && !(soft && !areaLight_);
   // The widest box a lookup reads: the soft ones' search and penumbra boxes are at most
   // pcss.max_radius texels either side; the others' is filter.width.
-  satReach_ = soft ? static_cast<int>(std::ceil(params.f("pcss.max_radius"))) : (c.width + 1) / 2;
+  satReach_ = soft ? params.f("pcss.max_radius") : 0.5f * static_cast<float>(c.width);
+  lightScale_ = soft ? params.f("pcss.light_scale") : 0.0f;
 }
 
 void MomentMapState::allocate(int size, int layers) {
@@ -119,10 +146,10 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
   ShaderLibrary* shaders = ctx.shaders;
   auto draw = ctx.drawFullscreen;
   auto bindTechnique = ctx.bindTechnique;
-  static const char* names[] = {"prefilter.blur", "prefilter.mips", "prefilter.sat"};
-  const std::string name = config_.method == FilterMethod::Blur && !config_.blurs()
-                               ? "prefilter.moments"
-                               : names[static_cast<int>(config_.method)];
+  const std::string name = summed_                                  ? "prefilter.sat"
+                           : config_.method == FilterMethod::Mipmap ? "prefilter.mips"
+                           : config_.blurs()                        ? "prefilter.blur"
+                                                                    : "prefilter.moments";
   // The blur's first direction lands in scratch targets the frame graph lends for the pass (one
   // per moments target, of its format and size); mip-maps and tables need none.
   std::vector<std::string> writes = {out};
@@ -135,6 +162,7 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
   // The light space is read when the pass runs: a layout pass may have replaced it since. The
   // texels the blur skips keep an earlier frame's moments unless a view shows them.
   const LightSpace* lightSpace = ctx.lightSpace;
+  const Light light = ctx.shadowedLight();
   bool shown = false;
   for (const std::string& v : views()) {
     const auto it = ctx.viewTargets.find(v);
@@ -143,15 +171,23 @@ std::string MomentMapState::addPasses(FrameGraph& graph, const PartContext& ctx)
   graph.add({name + ctx.viewportTag,
              {ctx.shadowMap},
              writes,
-             [this, shaders, draw, bindTechnique, &graph, scratch, lightSpace, shown] {
+             [this, shaders, draw, bindTechnique, &graph, scratch, lightSpace, light, shown] {
                std::vector<Texture2D*> targets;
                for (const std::string& s : scratch) targets.push_back(&transientTexture(graph, s));
                std::vector<std::vector<glm::vec2>> hulls;
                // A hull per layer; views sharing a layer: every texel may be read.
+               viewReach_.clear();
                if (lightSpace && !lightSpace->sharesLayers())
-                 for (const LightView& v : lightSpace->views) hulls.push_back(v.receiverHull);
+                 for (const LightView& v : lightSpace->views) {
+                   hulls.push_back(v.receiverHull);
+                   if (spec_.soft()) viewReach_.push_back(softReachTexels(v, light, lightScale_, satReach_));
+                 }
                const double share = filter(*shaders, draw, targets, bindTechnique, hulls, shown);
-               if (share < 1.0) status_ += (status_.empty() ? "" : "; ") + filteredNote(config_.method, share);
+               if (share < 1.0)
+                 status_ += (status_.empty() ? "" : "; ") + filteredNote(summed_           ? "summed-area table"
+                                                                         : config_.blurs() ? "blur"
+                                                                                           : "moments",
+                                                                         share);
              }});
   addMomentViewPasses(graph, ctx, out, views());
   return out;
@@ -170,21 +206,21 @@ void MomentMapState::bind(const Program& p, TextureUnits& units) const {
   if (glGetUniformLocation(p.id(), "u_moments0") < 0) return;
   for (int t = 0; t < config_.targets(); ++t) {
     units.bind(p, "u_moments" + std::to_string(t), moments_[static_cast<size_t>(t)].id(), sampler_);
-    if (config_.method == FilterMethod::Sat)
+    if (summed_)
       p.set("u_satOffset" + std::to_string(t),
             t < static_cast<int>(satOffset_.size()) ? satOffset_[static_cast<size_t>(t)] : glm::vec4(0.0f));
   }
   // Where the tables' corners may be read, in the lookup's units (texel (i, j) holds the sum up
   // to (i + 1, j + 1)): from the first texel the spans reach to the last. A table has no zero
   // line before its first texel: a box touching it shrinks by up to a texel, as at the map's edge.
-  if (config_.method == FilterMethod::Sat) p.set("u_satBounds", glm::vec4(satRect_) + 1.0f);
+  if (summed_) p.set("u_satBounds", glm::vec4(satRect_) + 1.0f);
 }
 
 std::string MomentMapState::defines() const {
   std::string d = "#define SL_MOMENT_TARGETS " + std::to_string(config_.targets()) + "\n";
   d += "#define SL_MOMENT_FLOAT_BITS " + std::to_string(config_.bits) + "\n";
   if (config_.method == FilterMethod::Mipmap) d += "#define SL_MOMENT_MIPMAP\n";
-  if (config_.method == FilterMethod::Sat) d += "#define SL_MOMENT_SAT\n";
+  if (summed_) d += "#define SL_MOMENT_SAT\n";
   if (spec_.logFilter) d += "#define SL_MOMENT_LOG_FILTER\n";
   return d + defines_;
 }

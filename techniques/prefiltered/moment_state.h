@@ -42,6 +42,7 @@ class MomentMapState : public RepresentationState {
   // module: the representation's GLSL module (representationMoments), for the depth-to-moments pass.
   MomentMapState(const MomentSpec& spec, std::string module) : spec_(spec), module_(std::move(module)) {}
   ~MomentMapState() override;
+  void setScene(const Scene& scene, const Light& light) override;
   void configure(const ParamSet& params) override;
   void prepare(int size, int layers, int views) override;
   void beginShadowLayer(int layer) override;
@@ -70,9 +71,14 @@ class MomentMapState : public RepresentationState {
   double filter(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                 const std::vector<Texture2D*>& scratch, const TechniqueBinder& bindTechnique,
                 const std::vector<std::vector<glm::vec2>>& hulls = {}, bool clearUnread = true);
-  // The blur skips texels no visible receiver reads (filter.skip_unread with a blur; skipUnread_
-  // is false for the soft ones, which declare no such parameter).
-  bool skipsUnread() const { return skipUnread_ && config_.blurs(); }
+  // The blur (or the moments pass of a box of 1) skips texels no visible receiver reads
+  // (filter.skip_unread; the summed-area tables skip by spans of their own, moment_sat.cpp).
+  bool skipsUnread() const { return skipUnread_ && config_.method != FilterMethod::Mipmap; }
+  // Whether this frame's filter sums tables: the summed-area method, except for the soft ones
+  // under a point of light (setScene), whose only box is the minimum kernel's, two texels wide:
+  // four bilinear reads of the moments themselves give it (soft_moments.glsl), and no table is
+  // made (SL_MOMENT_SAT is then not defined).
+  bool sums() const { return summed_; }
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
@@ -91,10 +97,14 @@ class MomentMapState : public RepresentationState {
     std::vector<glm::ivec2> columns;  // per column: the rows [y0, y1] whose span holds it
     glm::ivec4 rect{0};               // (x0, y0, x1, y1): the columns and rows any span reaches
   };
-  SatCover satCover(const std::vector<glm::vec2>* hull) const;
+  SatCover satCover(const std::vector<glm::vec2>* hull, int layer) const;
   static void upload(GLuint buffer, const std::vector<glm::ivec2>& data);
   void satOffsets(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique, const std::vector<SatCover>& covers);
   void buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
+  double writeMoments(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
+                      const TechniqueBinder& bindTechnique, int layer, const std::vector<glm::vec2>* hull,
+                      bool clearUnread);
+  static constexpr size_t kMaxPolygonCorners = 64;  // passes/map_polygon.vert
   void runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
                    const std::vector<const Texture2D*>& src, const std::vector<const Texture2D*>& dst, int layer,
                    bool vertical, std::optional<glm::ivec2> groups);
@@ -110,8 +120,12 @@ class MomentMapState : public RepresentationState {
   std::string status_;
   float logExponent_ = 0.0f;
   GLuint sampler_ = 0;
-  GLuint groups_ = 0;  // storage block SlBlurGroups (passes/moment_blur.comp)
+  GLuint groups_ = 0;
+  GLuint polygonVao_ = 0;  // the empty vertex array the receiver polygon's fan is drawn with  // storage block
+                           // SlBlurGroups (passes/moment_blur.comp)
   bool skipUnread_ = true;
+  bool summed_ = false;
+  bool areaLight_ = true;  // setScene: the shadowed light has a radius (without a scene: tables)
   Texture2D depth_;
   std::vector<Texture2D> moments_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: the depth
@@ -119,7 +133,9 @@ class MomentMapState : public RepresentationState {
   glm::ivec4 satRect_{0};                // the columns and rows the tables' spans reach
   GLuint spans_ = 0;                     // storage block SatSpans (passes/moment_sat_*.comp)
   GLuint columns_ = 0;                   // storage block SatColumns
-  int satReach_ = 0;                     // texels: half the widest box a lookup reads
+  float satReach_ = 0.0f;                // texels: half the widest box a lookup reads
+  std::vector<float> viewReach_;         // per layer, where this frame's light view bounds it
+  float lightScale_ = 0.0f;              // pcss.light_scale (the soft ones)
 };
 
 }  // namespace sl

@@ -13,7 +13,7 @@
 //   float representationSoftVisibility(vec4 m[SL_MOMENT_TARGETS], float receiverDepth, float gap)
 //         gap: receiver-to-blocker distance along the light (world units)
 // Without an area light (SL_AREA_LIGHT undefined) the lookup is the hard reconstruction over a
-// box of the minimum kernel.
+// box of the minimum kernel, read from the moments themselves (no table is made then).
 #define SL_MOMENT_SOFT
 #include "representations/prefiltered/moment_maps.glsl"
 #include "representations/soft/penumbra.glsl"
@@ -86,7 +86,13 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   float gap = pcssLinear(receiverDepth, view) - pcssLinear(p.y, view);
   float v = representationSoftVisibility(m, receiverDepth, gap);
 #else
+  // kPcssMinRadius = 1: a box two texels wide, from the moments themselves where the filter
+  // pass made no table (under a point of light: MomentMapState::sums).
+#ifdef SL_MOMENT_SAT
   momentsInBox(uvLayer, 2.0 * kPcssMinRadius, m);
+#else
+  momentsInTwoTexelBox(uvLayer, m);
+#endif
   float v = representationFromMoments(m, receiverDepth);
 #endif
   return isnan(v) ? 1.0 : clamp(v, 0.0, 1.0);

@@ -1,11 +1,13 @@
 // filter.skip_unread: the blur filters only the texels a visible receiver can read (the focused
-// fit's receiver hull, blur_spans.h). The picture must not change: each case renders a preset
+// fit's receiver hull, blur_spans.h); so does the moments pass of the soft ones under a point of
+// light (basic). The picture must not change: each case renders a preset
 // with the skip on and off and compares the visibility bit for bit, and checks that the skip
 // left part of the map unfiltered (the status line's share), so a hull that covered every
 // texel would fail here rather than pass as a saving.
 #include "tests/gl_test_util.h"
 
 #include <cstdio>
+#include <cstring>
 
 namespace sl {
 namespace {
@@ -16,11 +18,14 @@ struct SkipCase {
 };
 void PrintTo(const SkipCase& c, std::ostream* os) { *os << c.scene << " " << c.preset; }
 
-// The percentage in "blur over N % of the map", or -1 where the status has none.
+// The percentage in "blur over N % of the map" (or "moments over", the pass of a box of 1 and
+// of the soft ones under a point of light), or -1 where the status has none.
 double filteredPct(const std::string& status) {
-  const size_t at = status.find("blur over ");
   double pct = -1.0;
-  if (at != std::string::npos) std::sscanf(status.c_str() + at, "blur over %lf", &pct);
+  for (const char* what : {"blur over ", "moments over "}) {
+    const size_t at = status.find(what);
+    if (at != std::string::npos) std::sscanf(status.c_str() + at + std::strlen(what), "%lf", &pct);
+  }
   return pct;
 }
 
@@ -59,11 +64,79 @@ INSTANTIATE_TEST_SUITE_P(Cases, PrefilteredSkipUnread,
                          ::testing::Values(SkipCase{"basic", "vsm", 80}, SkipCase{"basic", "esm", 80},
                                            SkipCase{"basic", "msm", 80}, SkipCase{"basic", "lvsm", 80},
                                            SkipCase{"basic", "convolution", 80}, SkipCase{"spotlight", "vsm", 100.5},
-                                           SkipCase{"terrain", "evsm4", 80}),
+                                           SkipCase{"terrain", "evsm4", 80}, SkipCase{"basic", "vssm", 80},
+                                           SkipCase{"basic", "convolution-soft", 80}),
                          [](const auto& info) {
                            std::string name = info.param.scene + "_" + info.param.preset;
                            for (char& c : name)
                              if (c == '-') c = '_';
+                           return name;
+                         });
+
+// The soft ones under an area light sum tables over the receiver hull dilated by the widest box
+// their lookups read (the search and penumbra radii bounded from the light view; moment_sat.cpp).
+// A table over part of the map sums from other origins than the whole map's, so its rounding
+// differs: the visibility must agree to within that, and the share be below the map. VSSM's
+// estimates are the most sensitive to it: 0.4-0.8 % of its pixels move by more than 0.02 (at
+// 320x180), CSM-Z's 0.01-0.02 %. A reach too small (the penumbra bounded from a near plane
+// clamped to zero under a sun whose box starts behind the light, as a first version did) moved
+// 2.2 % and 0.15 % on sponza-sun-disk, up to 1.0.
+struct TableSkipCase {
+  std::string scene, preset;
+  double maxApartPct;  // pixels whose visibility may move by more than 0.02 with the rounding
+};
+void PrintTo(const TableSkipCase& c, std::ostream* os) { *os << c.scene << " " << c.preset; }
+
+class PrefilteredSkipUnreadTables : public ::testing::TestWithParam<TableSkipCase> {};
+
+TEST_P(PrefilteredSkipUnreadTables, VisibilityWithinRoundingFromPartOfTheMap) {
+  const TableSkipCase& c = GetParam();
+  Scene scene;
+  try {
+    scene = loadScene(c.scene, defaultAssetsDir());
+  } catch (const std::exception& e) {
+    if (std::string(e.what()).find("scenes-real") == std::string::npos) throw;
+    GTEST_SKIP() << c.scene << ": shared/scenes-real not found (" << e.what() << ")";
+  }
+  test::GlHarness h;
+  h.renderer.setScene(scene);
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = 320;
+  in.height = 180;
+  std::vector<float> seen[2];
+  for (int skip : {0, 1}) {
+    Viewport vp(makeTechnique(c.preset, {"filter.skip_unread=" + std::to_string(skip)}));
+    h.renderer.render(in, {&vp});
+    seen[skip] = test::readFrame(h.renderer, vp, in.width, in.height).visibilityChannel();
+    double pct = -1.0;
+    const size_t at = vp.status().find("summed-area table over ");
+    if (at != std::string::npos) std::sscanf(vp.status().c_str() + at, "summed-area table over %lf", &pct);
+    if (skip) EXPECT_TRUE(pct > 1.0 && pct < 100.0) << vp.status();
+  }
+  ASSERT_EQ(seen[0].size(), seen[1].size());
+  long long apart = 0;
+  double worst = 0.0;
+  for (size_t i = 0; i < seen[0].size(); ++i) {
+    const double d = std::abs(seen[0][i] - seen[1][i]);
+    apart += d > 0.02;
+    worst = std::max(worst, d);
+  }
+  std::printf("%s %s: %lld pixels apart by more than 0.02, largest %.3f\n", c.scene.c_str(), c.preset.c_str(), apart,
+              worst);
+  EXPECT_LE(100.0 * static_cast<double>(apart) / static_cast<double>(seen[0].size()), c.maxApartPct)
+      << "pixels whose visibility moved by more than 0.02";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, PrefilteredSkipUnreadTables,
+                         ::testing::Values(TableSkipCase{"soft", "vssm", 1.0},
+                                           TableSkipCase{"soft", "convolution-soft", 0.2},
+                                           TableSkipCase{"sponza-sun-disk", "vssm", 1.0},
+                                           TableSkipCase{"sponza-sun-disk", "convolution-soft", 0.2}),
+                         [](const auto& info) {
+                           std::string name = info.param.scene + "_" + info.param.preset;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
                            return name;
                          });
 
