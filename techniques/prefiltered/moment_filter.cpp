@@ -115,10 +115,13 @@ double MomentMapState::writeMoments(ShaderLibrary& shaders, const std::function<
   const int n = depth_.width();
   const std::vector<glm::vec2> polygon = hull ? dilatedHull(*hull, n, kLookupReach + 1.0f) : std::vector<glm::vec2>{};
   const bool whole = polygon.size() < 3 || polygon.size() > kMaxPolygonCorners;
+  // Under a point of light a soft one's shading reads only its first targets; a view, all.
+  const int written = spec_.soft() && !summed_ && !clearUnread ? pointLightTargets_ : config_.targets();
   Program& p = shaders.get({"moments from depth",
                             {{GL_VERTEX_SHADER, whole ? "passes/fullscreen.vert" : "passes/map_polygon.vert"},
                              {GL_FRAGMENT_SHADER, "passes/moment_from_depth.frag"}},
-                            defines() + "#include \"" + module_ + "\"\n"});
+                            defines() + "#include \"" + module_ + "\"\n#define SL_MOMENT_WRITTEN_TARGETS " +
+                                std::to_string(written) + "\n"});
   if (!p.valid()) return 1.0;
   if (!whole && clearUnread) clearLayer(layer);
   p.use();
@@ -127,7 +130,9 @@ double MomentMapState::writeMoments(ShaderLibrary& shaders, const std::function<
   units.bind(p, "u_depth", depth_.id());
   p.set("u_layer", layer);
   Framebuffer fbo("moments from depth");
-  fbo.attachLayer(pointers(moments_), nullptr, layer);
+  std::vector<const Texture2D*> targets = pointers(moments_);
+  targets.resize(static_cast<size_t>(written));
+  fbo.attachLayer(targets, nullptr, layer);
   fbo.bind();
   glViewport(0, 0, n, n);
   if (whole) {

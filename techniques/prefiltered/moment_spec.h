@@ -32,6 +32,9 @@ struct MomentSpec {
   // with no filter.method / filter.width of its own.
   std::string softName;
   bool soft() const { return !softName.empty(); }
+  // The soft ones: how many of the first channels the reconstruction under a point of light
+  // reads (CSM-Z: the basis, not the basis times depth its blocker estimate needs); empty: all.
+  std::function<int(const ParamSet&)> pointLightChannels;
 };
 
 // Parameters every pre-filtered representation has (storage format, filter method and width).

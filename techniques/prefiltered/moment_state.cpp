@@ -90,6 +90,7 @@ void MomentMapState::configure(const ParamSet& params) {
   logExponent_ = spec_.logFilter ? params.f(spec_.logExponentKey) : 0.0f;
   skipUnread_ = params.b("filter.skip_unread");
   summed_ = c.method == FilterMethod::Sat && !(soft && !areaLight_);
+  pointLightTargets_ = spec_.pointLightChannels ? (spec_.pointLightChannels(params) + 3) / 4 : c.targets();
   // The widest box a lookup reads: the soft ones' search and penumbra boxes are at most
   // pcss.max_radius texels either side; the others' is filter.width.
   satReach_ = soft ? params.f("pcss.max_radius") : 0.5f * static_cast<float>(c.width);
@@ -221,6 +222,7 @@ std::string MomentMapState::defines() const {
   d += "#define SL_MOMENT_FLOAT_BITS " + std::to_string(config_.bits) + "\n";
   if (config_.method == FilterMethod::Mipmap) d += "#define SL_MOMENT_MIPMAP\n";
   if (summed_) d += "#define SL_MOMENT_SAT\n";
+  if (spec_.soft() && !summed_) d += "#define SL_MOMENT_READ_TARGETS " + std::to_string(pointLightTargets_) + "\n";
   if (spec_.logFilter) d += "#define SL_MOMENT_LOG_FILTER\n";
   return d + defines_;
 }

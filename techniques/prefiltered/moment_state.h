@@ -125,7 +125,9 @@ class MomentMapState : public RepresentationState {
                            // SlBlurGroups (passes/moment_blur.comp)
   bool skipUnread_ = true;
   bool summed_ = false;
-  bool areaLight_ = true;  // setScene: the shadowed light has a radius (without a scene: tables)
+  bool areaLight_ = true;
+  int pointLightTargets_ = 1;  // the targets a soft one reads under a point of light (MomentSpec)  // setScene: the
+                               // shadowed light has a radius (without a scene: tables)
   Texture2D depth_;
   std::vector<Texture2D> moments_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: the depth

@@ -280,6 +280,7 @@ MomentSpec convolutionSoftSpec() {
   };
   s.fourier = true;
   s.softName = "convolution-soft";
+  s.pointLightChannels = [](const ParamSet& p) { return 2 * p.i("csmz.terms"); };
   return s;
 }
 

@@ -125,7 +125,11 @@ void momentsInBox(vec3 uvLayer, float width, out vec4 m[SL_MOMENT_TARGETS]) {
 // The mean over a box two texels wide from the moments themselves (no table): over the
 // nearest-texel map, a window one texel wide integrates to the bilinear read at its centre, so
 // the box is the mean of four bilinear reads half a texel either side of uv, what a table's four
-// corner reads give. The soft ones' only box under a point of light (MomentMapState::sums).
+// corner reads give. The soft ones' only box under a point of light (MomentMapState::sums), of
+// the first SL_MOMENT_READ_TARGETS targets, what their reconstruction then reads (the others 0).
+#ifndef SL_MOMENT_READ_TARGETS
+#define SL_MOMENT_READ_TARGETS SL_MOMENT_TARGETS
+#endif
 void momentsInTwoTexelBox(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) {
   vec2 halfTexel = 0.5 / vec2(textureSize(u_moments0, 0).xy);
   for (int t = 0; t < SL_MOMENT_TARGETS; ++t) m[t] = vec4(0.0);
@@ -133,25 +137,25 @@ void momentsInTwoTexelBox(vec3 uvLayer, out vec4 m[SL_MOMENT_TARGETS]) {
     vec2 side = vec2((k & 1) == 0 ? -1.0 : 1.0, (k & 2) == 0 ? -1.0 : 1.0);
     vec3 at = vec3(uvLayer.xy + side * halfTexel, uvLayer.z);
     m[0] += 0.25 * textureLod(u_moments0, at, 0.0);
-#if SL_MOMENT_TARGETS > 1
+#if SL_MOMENT_READ_TARGETS > 1
     m[1] += 0.25 * textureLod(u_moments1, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 2
+#if SL_MOMENT_READ_TARGETS > 2
     m[2] += 0.25 * textureLod(u_moments2, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 3
+#if SL_MOMENT_READ_TARGETS > 3
     m[3] += 0.25 * textureLod(u_moments3, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 4
+#if SL_MOMENT_READ_TARGETS > 4
     m[4] += 0.25 * textureLod(u_moments4, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 5
+#if SL_MOMENT_READ_TARGETS > 5
     m[5] += 0.25 * textureLod(u_moments5, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 6
+#if SL_MOMENT_READ_TARGETS > 6
     m[6] += 0.25 * textureLod(u_moments6, at, 0.0);
 #endif
-#if SL_MOMENT_TARGETS > 7
+#if SL_MOMENT_READ_TARGETS > 7
     m[7] += 0.25 * textureLod(u_moments7, at, 0.0);
 #endif
   }
