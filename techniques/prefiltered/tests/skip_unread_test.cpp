@@ -78,9 +78,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, PrefilteredSkipUnread,
 // A table over part of the map sums from other origins than the whole map's, so its rounding
 // differs: the visibility must agree to within that, and the share be below the map. VSSM's
 // estimates are the most sensitive to it: 0.4-0.8 % of its pixels move by more than 0.02 (at
-// 320x180), CSM-Z's 0.01-0.02 %. A reach too small (the penumbra bounded from a near plane
+// 320x180), CSM-Z's 0.04-0.05 %. A reach too small (the penumbra bounded from a near plane
 // clamped to zero under a sun whose box starts behind the light, as a first version did) moved
-// 2.2 % and 0.15 % on sponza-sun-disk, up to 1.0.
+// 2.2 % and 0.46 % on sponza-sun-disk, up to 1.0.
 struct TableSkipCase {
   std::string scene, preset;
   double maxApartPct;  // pixels whose visibility may move by more than 0.02 with the rounding
