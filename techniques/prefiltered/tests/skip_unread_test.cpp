@@ -29,28 +29,41 @@ double filteredPct(const std::string& status) {
   return pct;
 }
 
+// One frame of `preset` from the scene's first camera with filter.skip_unread off (0) or on (1):
+// its visibility and the representation's status.
+struct SkipRun {
+  std::vector<float> visibility;
+  std::string status;
+};
+SkipRun renderSkip(test::GlHarness& h, const Scene& scene, const std::string& preset, std::vector<std::string> sets,
+                   int skip, int width, int height) {
+  FrameInput in;
+  in.camera = scene.cameras.front();
+  in.width = width;
+  in.height = height;
+  sets.push_back("filter.skip_unread=" + std::to_string(skip));
+  Viewport vp(makeTechnique(preset, sets));
+  h.renderer.render(in, {&vp});
+  return {test::readFrame(h.renderer, vp, width, height).visibilityChannel(), vp.status()};
+}
+
 class PrefilteredSkipUnread : public ::testing::TestWithParam<SkipCase> {};
 
 TEST_P(PrefilteredSkipUnread, TheSameVisibilityFromPartOfTheMap) {
   test::GlHarness h;
   const Scene scene = loadScene(GetParam().scene, defaultAssetsDir());
   h.renderer.setScene(scene);
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 160;
-  in.height = 90;
   std::vector<float> seen[2];
   for (int skip : {0, 1}) {
-    Viewport vp(makeTechnique(GetParam().preset, {"shadowmap.size=512", "filter.skip_unread=" + std::to_string(skip)}));
-    h.renderer.render(in, {&vp});
-    seen[skip] = test::readFrame(h.renderer, vp, in.width, in.height).visibilityChannel();
-    const double pct = filteredPct(vp.status());
+    const SkipRun r = renderSkip(h, scene, GetParam().preset, {"shadowmap.size=512"}, skip, 160, 90);
+    seen[skip] = r.visibility;
+    const double pct = filteredPct(r.status);
     if (skip) {
-      std::printf("%s %s: %s\n", GetParam().scene.c_str(), GetParam().preset.c_str(), vp.status().c_str());
-      EXPECT_GT(pct, 5.0) << vp.status();
-      EXPECT_LT(pct, GetParam().maxPct) << vp.status();
+      std::printf("%s %s: %s\n", GetParam().scene.c_str(), GetParam().preset.c_str(), r.status.c_str());
+      EXPECT_GT(pct, 5.0) << r.status;
+      EXPECT_LT(pct, GetParam().maxPct) << r.status;
     } else {
-      EXPECT_EQ(pct, -1.0) << vp.status();
+      EXPECT_EQ(pct, -1.0) << r.status;
     }
   }
   EXPECT_TRUE(h.shaders.errors().empty());
@@ -100,19 +113,14 @@ TEST_P(PrefilteredSkipUnreadTables, VisibilityWithinRoundingFromPartOfTheMap) {
   }
   test::GlHarness h;
   h.renderer.setScene(scene);
-  FrameInput in;
-  in.camera = scene.cameras.front();
-  in.width = 320;
-  in.height = 180;
   std::vector<float> seen[2];
   for (int skip : {0, 1}) {
-    Viewport vp(makeTechnique(c.preset, {"filter.skip_unread=" + std::to_string(skip)}));
-    h.renderer.render(in, {&vp});
-    seen[skip] = test::readFrame(h.renderer, vp, in.width, in.height).visibilityChannel();
+    const SkipRun r = renderSkip(h, scene, c.preset, {}, skip, 320, 180);
+    seen[skip] = r.visibility;
     double pct = -1.0;
-    const size_t at = vp.status().find("summed-area table over ");
-    if (at != std::string::npos) std::sscanf(vp.status().c_str() + at, "summed-area table over %lf", &pct);
-    if (skip) EXPECT_TRUE(pct > 1.0 && pct < 100.0) << vp.status();
+    const size_t at = r.status.find("summed-area table over ");
+    if (at != std::string::npos) std::sscanf(r.status.c_str() + at, "summed-area table over %lf", &pct);
+    if (skip) EXPECT_TRUE(pct > 1.0 && pct < 100.0) << r.status;
   }
   ASSERT_EQ(seen[0].size(), seen[1].size());
   long long apart = 0;
