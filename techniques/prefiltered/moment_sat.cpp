@@ -57,10 +57,7 @@ glm::ivec4 boundsOf(const std::vector<glm::ivec2>& spans) {
 MomentMapState::SatCover MomentMapState::satCover(const std::vector<glm::vec2>* hull, int layer) const {
   const int n = depth_.width();
   SatCover c;
-  if (hull && hull->empty()) {  // no visible receiver: a table of one texel
-    c.rows.assign(static_cast<size_t>(n), glm::ivec2(1, 0));
-    c.rows[0] = glm::ivec2(0);
-  } else if (hull) {
+  if (hull && !hull->empty()) {  // an empty hull is an unknown one (LightView::receiverHull)
     // A box of up to `reach` texels either side of a receiver, read bilinearly at its corners
     // (a corner at P reads the texels whose centres lie within one texel of P - 1).
     const float reach =
@@ -69,7 +66,7 @@ MomentMapState::SatCover MomentMapState::satCover(const std::vector<glm::vec2>* 
   }
   std::optional<std::vector<glm::ivec2>> columns;
   if (!c.rows.empty()) columns = columnIntervals(c.rows, n);
-  if (!columns) {  // every texel (or, were the spans no convex region's, every texel of their rows)
+  if (!columns) {  // every texel (or, were the spans no convex region's, every texel of their rectangle)
     const glm::ivec4 r = c.rows.empty() ? glm::ivec4(0, 0, n - 1, n - 1) : boundsOf(c.rows);
     c.rows.assign(static_cast<size_t>(n), glm::ivec2(1, 0));
     for (int y = r.y; y <= r.w; ++y) c.rows[static_cast<size_t>(y)] = {r.x, r.z};
