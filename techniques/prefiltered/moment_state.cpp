@@ -39,9 +39,11 @@ float softReachTexels(const LightView& view, const Light& light, float lightScal
   const float size = light.radius * lightScale;
   const float nearD = view.nearPlane, farD = view.farPlane;
   float texels = maxRadius;
-  if (light.positional() && nearD > 0.0f && farD > nearD)
-    // search size (dR - near) / dR / texel(near); penumbra size (1 / dB - 1 / dR) / z, dB >= near
-    texels = size * (farD - nearD) / farD / (view.texelWorldSize * (view.perspective ? nearD : 1.0f));
+  if (light.positional() && view.perspective && nearD > 0.0f && farD > nearD)
+    // search size (dR - near) / dR / (z near); penumbra size (1 / dB - 1 / dR) / z, dB >= near
+    texels = size * (farD - nearD) / farD / (view.texelWorldSize * nearD);
+  else if (light.positional() && nearD > 0.0f && farD > nearD)  // penumbra size (dR - dB) / dB / z
+    texels = size * (farD - nearD) / nearD / view.texelWorldSize;
   else if (!light.positional() && !view.perspective)  // size (dR - dB) / texel, dB >= near
     texels = size * (farD - std::min(nearD, 1e-4f)) / view.texelWorldSize;
   else if (!light.positional() && nearD > 0.0f && farD > nearD)  // size (dR - dB) / (z dR)
