@@ -36,9 +36,13 @@ std::vector<glm::vec2> dilatedHull(const std::vector<glm::vec2>& hullUv, int siz
 }
 
 std::vector<glm::ivec2> blurSpans(const std::vector<glm::vec2>& hullUv, int size, int band, float dilation) {
+  if (hullUv.empty())
+    return std::vector<glm::ivec2>(static_cast<size_t>((size + band - 1) / band), glm::ivec2(0, size - 1));
+  return polygonSpans(dilatedHull(hullUv, size, dilation), size, band);
+}
+
+std::vector<glm::ivec2> polygonSpans(const std::vector<glm::vec2>& poly, int size, int band) {
   const int bands = (size + band - 1) / band;
-  if (hullUv.empty()) return std::vector<glm::ivec2>(static_cast<size_t>(bands), glm::ivec2(0, size - 1));
-  const std::vector<glm::vec2> poly = dilatedHull(hullUv, size, dilation);
   std::vector<glm::ivec2> spans(static_cast<size_t>(bands), glm::ivec2(1, 0));
   for (int b = 0; b < bands; ++b) {
     const std::vector<glm::vec2> slab =

@@ -23,6 +23,10 @@ inline constexpr float kLookupReach = 2.0f;
 // dilated by `dilation` texels along both axes (the Minkowski sum with a square).
 std::vector<glm::vec2> dilatedHull(const std::vector<glm::vec2>& hullUv, int size, float dilation);
 
+// Per band of `band` rows of a size² map, the columns [x, y] that the convex polygon `texels`
+// (texel units, as dilatedHull gives it) covers in any row of the band; {1, 0} where it misses.
+std::vector<glm::ivec2> polygonSpans(const std::vector<glm::vec2>& texels, int size, int band);
+
 // Per band of `band` rows of a size² map, the columns [x, y] that the convex polygon `hullUv`
 // (map uv) dilated by `dilation` texels covers in any row of the band; {1, 0} where it misses
 // the band. An empty hull covers every texel.

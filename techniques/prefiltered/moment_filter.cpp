@@ -150,7 +150,7 @@ double MomentMapState::writeMoments(ShaderLibrary& shaders, const std::function<
   glBindVertexArray(0);
   if (culling) glEnable(GL_CULL_FACE);
   long long covered = 0;
-  for (const glm::ivec2 s : blurSpans(*hull, n, 1, kLookupReach + 1.0f)) covered += std::max(0, s.y - s.x + 1);
+  for (const glm::ivec2 s : polygonSpans(polygon, n, 1)) covered += std::max(0, s.y - s.x + 1);
   return static_cast<double>(covered) / (static_cast<double>(n) * n);
 }
 

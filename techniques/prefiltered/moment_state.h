@@ -74,11 +74,6 @@ class MomentMapState : public RepresentationState {
   // The blur (or the moments pass of a box of 1) skips texels no visible receiver reads
   // (filter.skip_unread; the summed-area tables skip by spans of their own, moment_sat.cpp).
   bool skipsUnread() const { return skipUnread_ && config_.method != FilterMethod::Mipmap; }
-  // Whether this frame's filter sums tables: the summed-area method, except for the soft ones
-  // under a point of light (setScene), whose only box is the minimum kernel's, two texels wide:
-  // four bilinear reads of the moments themselves give it (soft_moments.glsl), and no table is
-  // made (SL_MOMENT_SAT is then not defined).
-  bool sums() const { return summed_; }
   const MomentConfig& config() const { return config_; }
   Texture2D& moments(int target) { return moments_.at(static_cast<size_t>(target)); }
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
@@ -124,6 +119,10 @@ class MomentMapState : public RepresentationState {
   GLuint polygonVao_ = 0;  // the empty vertex array the receiver polygon's fan is drawn with  // storage block
                            // SlBlurGroups (passes/moment_blur.comp)
   bool skipUnread_ = true;
+  // Whether this frame's filter sums tables: the summed-area method, except for the soft ones
+  // under a point of light (setScene), whose only box is the minimum kernel's, two texels wide:
+  // four bilinear reads of the moments themselves give it (soft_moments.glsl), and no table is
+  // made (SL_MOMENT_SAT is then not defined).
   bool summed_ = false;
   bool areaLight_ = true;
   int pointLightTargets_ = 1;  // the targets a soft one reads under a point of light (MomentSpec)  // setScene: the

@@ -125,7 +125,7 @@ void momentsInBox(vec3 uvLayer, float width, out vec4 m[SL_MOMENT_TARGETS]) {
 // The mean over a box two texels wide from the moments themselves (no table): over the
 // nearest-texel map, a window one texel wide integrates to the bilinear read at its centre, so
 // the box is the mean of four bilinear reads half a texel either side of uv, what a table's four
-// corner reads give. The soft ones' only box under a point of light (MomentMapState::sums), of
+// corner reads give. The soft ones' only box under a point of light (MomentMapState::summed_), of
 // the first SL_MOMENT_READ_TARGETS targets, what their reconstruction then reads (the others 0).
 #ifndef SL_MOMENT_READ_TARGETS
 #define SL_MOMENT_READ_TARGETS SL_MOMENT_TARGETS

@@ -87,7 +87,7 @@ float representationVisibility(vec3 uvLayer, float receiverDepth) {
   float v = representationSoftVisibility(m, receiverDepth, gap);
 #else
   // kPcssMinRadius = 1: a box two texels wide, from the moments themselves where the filter
-  // pass made no table (under a point of light: MomentMapState::sums).
+  // pass made no table (under a point of light: MomentMapState::summed_).
 #ifdef SL_MOMENT_SAT
   momentsInBox(uvLayer, 2.0 * kPcssMinRadius, m);
 #else

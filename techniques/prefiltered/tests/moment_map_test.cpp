@@ -51,22 +51,13 @@ std::vector<float> vsmMoments(const std::vector<float>& depth) {
 
 void runFilter(GlHarness& h, const Map& m, const std::vector<std::vector<glm::vec2>>& hulls = {}) {
   MomentMapState& s = *m.state;
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
   TransientTextures pool;  // the frame graph's lender, here without a graph
   std::vector<Texture2D*> scratch;
   for (const TextureDesc& d : s.scratchTargets())
     scratch.push_back(static_cast<Texture2D*>(pool.acquire(d, "test scratch")));
   s.filter(
-      h.shaders,
-      [vao] {
-        glBindVertexArray(vao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindVertexArray(0);
-      },
-      scratch, [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); },
-      hulls);
-  glDeleteVertexArrays(1, &vao);
+      h.shaders, test::drawFullscreenTriangle, scratch,
+      [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); }, hulls);
 }
 
 // The box of width w (odd: w taps; even: w+1 taps with half-weight ends), clamped to the edge.
@@ -189,12 +180,7 @@ std::vector<float> probeLookups(GlHarness& h, const Map& m, int n) {
   {
     TextureUnits units;
     m.state->bind(p, units);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDeleteVertexArrays(1, &vao);
+    test::drawFullscreenTriangle();
   }
   return target.readFloats(4);
 }

@@ -14,6 +14,17 @@
 
 namespace sl::test {
 
+// One triangle of three vertices from an empty vertex array: the fullscreen passes' draw
+// (passes/fullscreen.vert makes the positions).
+inline void drawFullscreenTriangle() {
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vao);
+}
+
 struct MomentCase {
   float z1 = 0, z2 = 1, fraction = 1, receiver = 0;
 };
@@ -63,7 +74,7 @@ class MomentProbe {
     {
       TextureUnits units;
       units.bind(p, "u_cases", input.id());
-      drawPoint();
+      drawFullscreenTriangle();
     }
     return target.readFloats(4);
   }
@@ -88,7 +99,7 @@ class MomentProbe {
     p.use();
     setTechniqueUniforms(p, t, LightSpace{}, Light{});
     p.set("u_depth", z);
-    drawPoint();
+    drawFullscreenTriangle();
     std::vector<float> out = target.readFloats(4);
     out.resize(4 * static_cast<size_t>(dynamic_cast<MomentMapState&>(*state).config().targets()));
     return out;
@@ -144,14 +155,6 @@ void main() {
   }
 
  private:
-  void drawPoint() {
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDeleteVertexArrays(1, &vao);
-  }
   GlHarness& h_;
 };
 
