@@ -11,12 +11,6 @@ struct Material {
   uvec4 texture;  // alpha byte offset, width, height, masked
   vec4 alpha;     // cutoff, base colour alpha
 };
-struct Sample {
-  vec4 origin;     // ray start on the sample's own triangle plane; w: tnear (height tolerance)
-  vec4 direction;  // toward the light's centre; w: tfar
-  uint triangle;   // its own triangle (global index), never its occluder
-  uint pad0, pad1, pad2;
-};
 
 layout(std430) readonly buffer IzbTriangles { Triangle triangles[]; };
 layout(std430) readonly buffer IzbInstanceBase { uint instanceBase[]; };
@@ -25,8 +19,15 @@ layout(std430) readonly buffer IzbAlpha { uint alphaBytes[]; };
 layout(std430) buffer IzbCounts { uint counts[]; };       // samples per cell
 layout(std430) buffer IzbOffsets { uint offsets[]; };     // exclusive prefix sum, cells + 1
 layout(std430) buffer IzbBlockSums { uint blockSums[]; }; // per 1024 cells
-layout(std430) buffer IzbPixelCell { uint pixelCell[]; }; // cell of each pixel's sample
-layout(std430) buffer IzbSamples { Sample samples[]; };   // by pixel
+// Each pixel's sample: x its cell, y its own triangle (global index), never its occluder.
+layout(std430) buffer IzbPixelCell { uvec2 pixelCell[]; };
+// Each pixel's ray (kSampleVec4s a pixel): its start on its own triangle's plane, w: tnear (the
+// height tolerance); under a light with a position then its direction to the light's centre,
+// w: tfar. A sun's rays all go along -u_lightDirection, to infinity: 16 bytes a sample, not 48.
+layout(std430) buffer IzbSamples { vec4 samples[]; };
+#ifdef IZB_POSITIONAL  // defined (0 or 1) by the passes that write or read the rays
+const uint kSampleVec4s = IZB_POSITIONAL != 0 ? 2u : 1u;
+#endif
 layout(std430) buffer IzbList { uint list[]; };           // pixel indices, by cell
 // Four words per cell (kCellWords): [0] the farthest of its samples from the light (orderedBits
 // of izbAwayKey, 0 when empty), [1] how many of its samples a triangle has occluded (when all,

@@ -8,6 +8,9 @@
 // the light stays inside a view that holds its start, so that view's casters are all its
 // occluders) and its fallback bit, set for every pixel before the first view, is cleared once a
 // view lists it or it is decided here; a sample in no window keeps the shadow-map test.
+// IZB_POSITIONAL (a light with a position) and IZB_SEVERAL_VIEWS are defines, not uniforms:
+// llvmpipe runs both sides of a branch whatever the lanes take, so code for the other kind of
+// light cost every pixel (docs/performance.md, "Branches llvmpipe runs anyway").
 #extension GL_ARB_gpu_shader_fp64 : enable
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "passes/izb_common.glsl"
@@ -18,16 +21,14 @@ uniform usampler2D u_gSurface;
 uniform vec3 u_lightDirection;
 uniform vec3 u_lightPosition;
 uniform float u_spotCosHalfAngle;
-uniform int u_izbSpot;
 uniform int u_izbInstances;
 uniform int u_izbTriangles;
-uniform int u_izbViews;  // light views listed one after another; 1: a point off the grid is listed at its border
 
 double maxAbs(dvec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
 
 // Under several views: this pixel needs no shadow-map test (decided here, or listed).
 void decided(uint pixel) {
-  if (u_izbViews > 1) atomicAnd(fallbackBits[pixel >> 5], ~(1u << (pixel & 31u)));
+  if (IZB_SEVERAL_VIEWS != 0) atomicAnd(fallbackBits[pixel >> 5], ~(1u << (pixel & 31u)));
 }
 
 void setBit(uint pixel) {
@@ -41,7 +42,7 @@ float listSample() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(px, ivec2(u_izbSize)))) return 0.0;
   uint pixel = uint(px.y * int(u_izbSize.x) + px.x);
-  pixelCell[pixel] = kNoCell;
+  pixelCell[pixel].x = kNoCell;
   vec4 P = texelFetch(u_gPosition, px, 0);
   if (!(P.w > 0.5)) {
     decided(pixel);
@@ -53,7 +54,8 @@ float listSample() {
   // Direction and distance to the light's centre, as the reference computes them (float).
   vec3 toLight = -u_lightDirection;
   float tfar = 1.0 / 0.0;
-  if (u_izbSpot != 0) {
+#if IZB_POSITIONAL
+  {
     vec3 d = u_lightPosition - P.xyz;
     float dist = length(d);
     if (!(dist > 0.0)) { setBit(pixel); return 0.0; }
@@ -61,6 +63,7 @@ float listSample() {
     if (!(dot(-toLight, u_lightDirection) >= u_spotCosHalfAngle)) { setBit(pixel); return 0.0; }
     tfar = dist * (1.0 - 1e-4);
   }
+#endif
   float nl = length(n);
   bool hasNormal = nl > 1e-12 && !isinf(nl);
   n = hasNormal ? n / nl : vec3(0.0);
@@ -93,11 +96,16 @@ float listSample() {
     decided(pixel);
     return 0.0;
   }
-  samples[pixel] = Sample(vec4(vec3(origin), float(tnear)), vec4(toLight, tfar), own, 0u, 0u, 0u);
+  samples[kSampleVec4s * pixel] = vec4(vec3(origin), float(tnear));
+#if IZB_POSITIONAL
+  samples[kSampleVec4s * pixel + 1u] = vec4(toLight, tfar);
+#endif
   vec2 g;
   float w;
   bool onGrid = izbGridPos(P.xyz, g, w);
-  if (u_izbViews > 1) {
+  // Light views listed one after another (several), or one: a point off its grid is listed at
+  // its border.
+  if (IZB_SEVERAL_VIEWS != 0) {
     // Outside this view's window: another view lists it, or none and it keeps its fallback bit.
     if (!onGrid || any(lessThan(g, vec2(0.0))) || any(greaterThanEqual(g, vec2(float(u_izbGrid))))) return 0.0;
     decided(pixel);
@@ -108,7 +116,7 @@ float listSample() {
   }
   ivec2 cell = izbCell(g);
   uint index = uint(cell.y * u_izbGrid + cell.x);
-  pixelCell[pixel] = index;
+  pixelCell[pixel] = uvec2(index, own);
   atomicAdd(counts[index], 1u);
   // The cell's farthest sample, for the triangles pass to skip casters beyond it. Read first: a
   // cell's samples are neighbours on screen and mostly agree, and a read costs less than an atomic.
@@ -126,13 +134,11 @@ float listSample() {
   return w;  // > 0: izbGridPos held
 }
 
-// The group's listed samples and their w range, added to the frame's counters once per group:
-// one global atomic per sample and counter on a single address cost llvmpipe 17 ms a frame at
-// 1280x720 (basic) in contention.
+// The listed samples' w range. How many were listed is the prefix sum's total
+// (izb_scan.comp): an atomic per sample on that one address cost llvmpipe 6 ms at 1280x720.
 void main() {
   float w = listSample();
   if (!(w > 0.0)) return;
-  atomicAdd(counters[1], 1u);
   // Tested before the atomic: the range settles within the first groups, and a plain read
   // costs llvmpipe far less than an atomic maximum on one address (a stale read only adds one).
   uint low = ~floatBitsToUint(w), high = floatBitsToUint(w);

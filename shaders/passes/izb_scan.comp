@@ -55,7 +55,10 @@ void main() {
     blockSums[i * per + k] = running;
     running += v;
   }
-  if (i == 0u) offsets[u_izbCells] = total;
+  if (i == 0u) {
+    offsets[u_izbCells] = total;
+    counters[1] += total;  // samples listed (this view's, added to the views' before)
+  }
 #else
   uint cell = gl_GlobalInvocationID.x;
   if (cell < uint(u_izbCells)) offsets[cell] += blockSums[cell / 1024u];

@@ -8,7 +8,7 @@ void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(px, ivec2(u_izbSize)))) return;
   uint pixel = uint(px.y * int(u_izbSize.x) + px.x);
-  uint cell = pixelCell[pixel];
+  uint cell = pixelCell[pixel].x;
   if (cell == kNoCell) return;
   uint slot = offsets[cell] + atomicAdd(counts[cell], 0xffffffffu) - 1u;
   if (slot < uint(u_izbCapacity)) {

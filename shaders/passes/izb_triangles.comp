@@ -10,12 +10,15 @@
 // one item per row that lists samples (a large triangle would otherwise keep one invocation busy for the whole
 // frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one invocation
 // per queued row.
+// IZB_POSITIONAL (a light with a position) and IZB_MASKED (the scene has alpha-masked
+// materials) are defines: llvmpipe runs a branch's code whatever the lanes take, so the alpha
+// lookup cost every hit test in scenes with no mask (docs/performance.md).
 layout(local_size_x = 64) in;
 #include "passes/izb_common.glsl"
 #include "common/ordered_bits.glsl"
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
-uniform int u_izbRaysKeepW;  // 1: a directional light (its rays keep their clip w)
+uniform vec3 u_lightDirection;  // a sun's rays go along its negation (izb_count.comp)
 layout(std430) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
 layout(std430) buffer IzbDispatch { uint dispatchArgs[3]; };
 const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
@@ -35,6 +38,22 @@ float alphaAt(Material m, Triangle t, float u, float v) {
   uint byteIndex = m.texture.x + uint(y * w + x);
   uint word = alphaBytes[byteIndex >> 2];
   return alpha * float((word >> (8u * (byteIndex & 3u))) & 255u) / 255.0;
+}
+
+struct Sample {
+  vec4 origin;     // ray start; w: tnear
+  vec4 direction;  // toward the light's centre; w: tfar
+};
+
+Sample sampleOf(uint pixel) {
+  Sample s;
+  s.origin = samples[kSampleVec4s * pixel];
+#if IZB_POSITIONAL
+  s.direction = samples[kSampleVec4s * pixel + 1u];
+#else
+  s.direction = vec4(-u_lightDirection, 1.0 / 0.0);
+#endif
+  return s;
 }
 
 // Ray from the sample toward the light against the triangle: hit strictly between tnear and
@@ -124,7 +143,8 @@ bool setup(uint id, out Caster c) {
   vec4 v[3] = vec4[3](u_izbViewProj * vec4(c.t.a.xyz, 1.0), u_izbViewProj * vec4(c.t.b.xyz, 1.0),
                       u_izbViewProj * vec4(c.t.c.xyz, 1.0));
   vec3 w = vec3(v[0].w, v[1].w, v[2].w);
-  if (u_izbRaysKeepW != 0) {
+#if !IZB_POSITIONAL
+  {
     // A directional light's views send a sample's ray to one point of the grid
     // (izb_state.cpp, raysProjectToPoints): clip w stays the sample's along it, so only a
     // triangle's part within the listed samples' w range can hit one (an orthographic view's w
@@ -137,13 +157,16 @@ bool setup(uint id, out Caster c) {
       clippedBounds(c, v, lo, hi);
       return true;
     }
-  } else {
+  }
+#else
+  {
     // Wholly behind a perspective light's plane (w <= 0): no point of it lies between a listed
     // sample (w > 0) and the light (w = 0), where w falls linearly to 0.
     if (all(lessThanEqual(w, vec3(0.0)))) return false;
     // Partly behind it the projection wraps around: walk the whole grid.
     if (any(lessThanEqual(w, vec3(1e-6)))) return true;
   }
+#endif
   spanEdges(c, v);
   // Wholly in front of the view: its key over it lies between its corners'. The margin (a
   // twenty-thousandth of the depth range, more for keys far outside it) keeps the rounding of
@@ -187,11 +210,13 @@ void testCell(Caster c, ivec2 cellPos) {
     uint pixel = list[k];
     uint bit = 1u << (pixel & 31u);
     if ((shadowBits[pixel >> 5] & bit) != 0u) continue;  // already occluded
-    Sample s = samples[pixel];
-    if (s.triangle == c.id) continue;  // its own triangle never shadows it
+    if (pixelCell[pixel].y == c.id) continue;  // its own triangle never shadows it
+    Sample s = sampleOf(pixel);
     float u, v;
     if (!hits(s, a, e1, e2, u, v)) continue;
+#if IZB_MASKED
     if (c.masked && alphaAt(c.m, c.t, u, v) < c.m.alpha.x) continue;
+#endif
     if ((atomicOr(shadowBits[pixel >> 5], bit) & bit) == 0u) atomicAdd(cellState[state + 1u], 1u);
   }
 }

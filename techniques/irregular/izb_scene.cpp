@@ -62,9 +62,11 @@ void IzbSceneBuffers::update(const Scene& scene, double time) {
   // Alpha of every masked material's texture, 4 texels per uint (one byte each).
   std::vector<GpuMaterial> mats(std::max<size_t>(scene.materials.size(), 1), GpuMaterial{0, 0, 0, 0, 0.5f, 1.0f, 0, 0});
   std::vector<uint8_t> alphaBytes;
+  anyMasked = false;
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const Material& mat = scene.materials[m];
     mats[m].masked = mat.alphaMask ? 1u : 0u;
+    anyMasked = anyMasked || mat.alphaMask;
     mats[m].cutoff = mat.alphaCutoff;
     mats[m].baseAlpha = mat.baseColor.a;
     if (!mat.alphaMask || mat.baseColorTexture < 0 ||

@@ -14,7 +14,9 @@ namespace {
 
 constexpr long long kQueueCapacity = 1 << 20;  // rows of large triangles
 
-constexpr long long kSampleBytes = 48;  // Sample in izb_common.glsl
+// A sample's bytes at most (izb_common.glsl): its ray (two vec4 under a light with a position)
+// and its cell and triangle.
+constexpr long long kSampleBytes = 32, kPixelCellBytes = 8;
 
 void resize(GLuint& buffer, long long bytes, const char* name) {
   if (buffer) glDeleteBuffers(1, &buffer);
@@ -29,6 +31,12 @@ void clearBuffer(GLuint buffer) {
 }
 
 GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1) / size); }
+
+// Conditions the passes' shaders compile in rather than test: llvmpipe runs the code of both
+// sides of a branch whatever its lanes take (docs/performance.md).
+std::string define(const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); }
+
+std::string lightDefines(const PartContext& ctx) { return define("IZB_POSITIONAL", ctx.shadowedLight().positional()); }
 
 }  // namespace
 
@@ -71,7 +79,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
   if (width != width_ || height != height_) {
     width_ = width;
     height_ = height;
-    resize(pixelCell_, pixels * 4, "izb pixel cell");
+    resize(pixelCell_, pixels * kPixelCellBytes, "izb pixel cell");
     resize(samples_, pixels * kSampleBytes, "izb samples");
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
@@ -212,7 +220,9 @@ void IzbState::listView(const PartContext& ctx, int view) {
   // So are the listed samples' w range (counters 3 and 4).
   const uint32_t zero = 0;
   glClearNamedBufferSubData(counters_, GL_R32UI, 8, 12, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  ProgramSpec count{"izb count", {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}}, ""};
+  ProgramSpec count{"izb count",
+                    {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}},
+                    lightDefines(ctx) + define("IZB_SEVERAL_VIEWS", views_ > 1)};
   Program& pc = ctx.shaders->get(count);
   if (!pc.valid()) return;
   pc.use();
@@ -220,8 +230,6 @@ void IzbState::listView(const PartContext& ctx, int view) {
   ctx.bindGBuffer(pc, units);
   setLightUniforms(pc, ctx.shadowedLight());
   setCommon(pc, ctx);
-  pc.set("u_izbSpot", ctx.shadowedLight().positional() ? 1 : 0);
-  pc.set("u_izbViews", views_);
   pc.set("u_izbInstances", static_cast<int>(ctx.scene->instances.size()));
   pc.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
   glDispatchCompute(groups(ctx.width, 8), groups(ctx.height, 8), 1);
@@ -254,14 +262,15 @@ void IzbState::runTriangles(const PartContext& ctx) {
     for (int step = 1; step <= 3; ++step) {
       ProgramSpec spec{"izb triangles " + std::to_string(step),
                        {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}},
-                       "#define IZB_STEP " + std::to_string(step) + "\n"};
+                       "#define IZB_STEP " + std::to_string(step) + "\n" + lightDefines(ctx) +
+                           define("IZB_MASKED", scene_.anyMasked)};
       Program& p = ctx.shaders->get(spec);
       if (!p.valid()) return;
       p.use();
       setCommon(p, ctx);
       p.set("u_izbTriangles", static_cast<int>(scene_.triangleCount));
       p.set("u_izbQueueCapacity", static_cast<int>(kQueueCapacity));
-      p.set("u_izbRaysKeepW", ctx.shadowedLight().positional() ? 0 : 1);
+      setLightUniforms(p, ctx.shadowedLight());
       if (step == 1) glDispatchCompute(groups(scene_.triangleCount, 64), 1, 1);
       if (step == 2) glDispatchCompute(1, 1, 1);
       if (step == 3) {
@@ -321,8 +330,8 @@ std::string IzbState::status() const {
 long long IzbState::texels() const {
   const long long pixels = static_cast<long long>(width_) * height_;
   const long long cells = static_cast<long long>(grid_) * grid_;
-  const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * (1 + kSampleBytes / 4) + capacity_ +
-                          2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
+  const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * ((kPixelCellBytes + kSampleBytes) / 4) +
+                          capacity_ + 2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
   return DepthMapState::texels() + words;
 }
 

@@ -19,6 +19,7 @@ struct IzbSceneBuffers {
   GLuint triangles = 0, instanceBase = 0, materials = 0, alpha = 0;
   uint32_t triangleCount = 0;
   long long bytes = 0;
+  bool anyMasked = false;  // a material is alpha-masked: the triangles pass looks its alpha up
 
  private:
   const Scene* scene_ = nullptr;
