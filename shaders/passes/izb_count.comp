@@ -15,6 +15,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "passes/izb_common.glsl"
 #include "common/ordered_bits.glsl"
+// Each listed sample's place among its cell's (the count before it): the scatter pass needs no
+// atomic of its own. Declared here and there alone: the triangles pass has no block to spare.
+layout(std430) writeonly buffer IzbRank { uint pixelRank[]; };
 uniform sampler2D u_gPosition;
 uniform sampler2D u_gNormal;
 uniform usampler2D u_gSurface;
@@ -117,7 +120,7 @@ float listSample() {
   ivec2 cell = izbCell(g);
   uint index = uint(cell.y * u_izbGrid + cell.x);
   pixelCell[pixel] = uvec2(index, own);
-  atomicAdd(counts[index], 1u);
+  pixelRank[pixel] = atomicAdd(counts[index], 1u);
   // The cell's farthest sample, for the triangles pass to skip casters beyond it. Read first: a
   // cell's samples are neighbours on screen and mostly agree, and a read costs less than an atomic.
   uint away = orderedBits(izbAwayKey(u_izbViewProj * vec4(vec3(origin), 1.0)));

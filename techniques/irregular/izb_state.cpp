@@ -63,8 +63,8 @@ bool sunGridMatrix(const glm::mat4& viewProj, const glm::vec3& toLight, glm::mat
 IzbState::IzbState() : DepthMapState(false) {}
 
 IzbState::~IzbState() {
-  for (GLuint b : {counts_, offsets_, blockSums_, pixelCell_, samples_, list_, bits_, fallback_, counters_, queue_,
-                   dispatch_, cellState_})
+  for (GLuint b : {counts_, offsets_, blockSums_, pixelCell_, rank_, samples_, list_, bits_, fallback_, counters_,
+                   queue_, dispatch_, cellState_})
     if (b) glDeleteBuffers(1, &b);
 }
 
@@ -80,6 +80,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     width_ = width;
     height_ = height;
     resize(pixelCell_, pixels * kPixelCellBytes, "izb pixel cell");
+    resize(rank_, pixels * 4, "izb sample rank");
     resize(samples_, pixels * kSampleBytes, "izb samples");
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
@@ -183,6 +184,7 @@ void IzbState::setCommon(const Program& p, const PartContext& ctx) const {
                                {"IzbOffsets", offsets_},
                                {"IzbBlockSums", blockSums_},
                                {"IzbPixelCell", pixelCell_},
+                               {"IzbRank", rank_},
                                {"IzbSamples", samples_},
                                {"IzbList", list_},
                                {"IzbBits", bits_},
@@ -330,7 +332,7 @@ std::string IzbState::status() const {
 long long IzbState::texels() const {
   const long long pixels = static_cast<long long>(width_) * height_;
   const long long cells = static_cast<long long>(grid_) * grid_;
-  const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * ((kPixelCellBytes + kSampleBytes) / 4) +
+  const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * ((kPixelCellBytes + 4 + kSampleBytes) / 4) +
                           capacity_ + 2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
   return DepthMapState::texels() + words;
 }

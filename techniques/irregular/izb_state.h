@@ -58,12 +58,12 @@ class IzbState : public DepthMapState {
   uint32_t counter(int index) const;  // 0 overflowed, 1 listed, 2 queued chunks (a readback)
 
   IzbSceneBuffers scene_;
-  // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], samples[pixels],
+  // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], rank[pixels], samples[pixels],
   // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters (overflowed,
   // listed, queued chunks, the listed samples' clip w range), the queue of large triangles'
   // chunks and its indirect dispatch
-  GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, samples_ = 0, list_ = 0, bits_ = 0, fallback_ = 0,
-         counters_ = 0, queue_ = 0, dispatch_ = 0, cellState_ = 0;
+  GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, rank_ = 0, samples_ = 0, list_ = 0, bits_ = 0,
+         fallback_ = 0, counters_ = 0, queue_ = 0, dispatch_ = 0, cellState_ = 0;
   int width_ = 0, height_ = 0, grid_ = 0;
   int views_ = 1;  // light views of this frame, listed and tested one after another
   long long capacity_ = 0;
