@@ -6,10 +6,12 @@
 // tolerance and the light (Moller-Trumbore, as a ray tracer would), and an alpha-masked triangle
 // only where its texture at the hit is opaque (nearest texel, repeat: the reference's filter).
 // A hit sets the sample's bit (atomicOr).
-// IZB_STEP 1: one invocation per triangle; bounds of more than kLargeCells cells are queued,
-// one item per row that lists samples (a large triangle would otherwise keep one invocation busy for the whole
-// frame). IZB_STEP 2: writes the indirect dispatch of the queue. IZB_STEP 3: one invocation
-// per queued row.
+// IZB_STEP 1: one invocation per triangle queues each row of its bounds whose span lists
+// samples, one item per row. Walked here, a triangle kept the other lanes of its group waiting
+// (a large one for the whole frame), and on llvmpipe lanes with nothing to test cost as much as
+// busy ones: a group runs in step until its longest walk ends (Sponza: 190 + 100 ms with only
+// triangles of more than 64 cells queued, 29 + 207 ms with all). IZB_STEP 2: writes the indirect
+// dispatch of the queue. IZB_STEP 3: one invocation per queued row.
 // IZB_POSITIONAL (a light with a position) and IZB_MASKED (the scene has alpha-masked
 // materials) are defines: llvmpipe runs a branch's code whatever the lanes take, so the alpha
 // lookup cost every hit test in scenes with no mask (docs/performance.md).
@@ -21,7 +23,6 @@ uniform int u_izbQueueCapacity;
 uniform vec3 u_lightDirection;  // a sun's rays go along its negation (izb_count.comp)
 layout(std430) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
 layout(std430) buffer IzbDispatch { uint dispatchArgs[3]; };
-const uint kLargeCells = 64u;  // bounds of more cells are queued, one row per item
 
 // floor(t * size) modulo size, in [0, size): GLSL's % is undefined for negative operands.
 int wrapTexel(float t, int size) {
@@ -257,19 +258,16 @@ void main() {
   if (id >= uint(u_izbTriangles)) return;
   Caster c;
   if (!setup(id, c)) return;
-  uint rows = uint(c.hi.y - c.lo.y + 1);
-  if (rows > 1u && rows * uint(c.hi.x - c.lo.x + 1) > kLargeCells) {
-    // Only rows whose span lists samples are queued (two loads per row to know).
-    uint busy = 0u;
-    for (int y = c.lo.y; y <= c.hi.y; ++y) busy += rowHasSamples(c, y) ? 1u : 0u;
-    if (busy == 0u) return;
-    uint slot = atomicAdd(counters[2], busy);
-    // A full queue is not an error: the triangle then walks its rows here, only slower.
-    if (slot + busy <= uint(u_izbQueueCapacity)) {
-      for (int y = c.lo.y; y <= c.hi.y; ++y)
-        if (rowHasSamples(c, y)) queue[slot++] = uvec2(id, uint(y - c.lo.y));
-      return;
-    }
+  // Only rows whose span lists samples are queued (two loads per row to know).
+  uint busy = 0u;
+  for (int y = c.lo.y; y <= c.hi.y; ++y) busy += rowHasSamples(c, y) ? 1u : 0u;
+  if (busy == 0u) return;
+  uint slot = atomicAdd(counters[2], busy);
+  // A full queue is not an error: the triangle then walks its rows here, only slower.
+  if (slot + busy <= uint(u_izbQueueCapacity)) {
+    for (int y = c.lo.y; y <= c.hi.y; ++y)
+      if (rowHasSamples(c, y)) queue[slot++] = uvec2(id, uint(y - c.lo.y));
+    return;
   }
   for (int y = c.lo.y; y <= c.hi.y; ++y) testRow(c, y);
 #endif

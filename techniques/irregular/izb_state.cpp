@@ -12,7 +12,7 @@ namespace sl {
 
 namespace {
 
-constexpr long long kQueueCapacity = 1 << 20;  // rows of large triangles
+constexpr long long kQueueCapacity = 1 << 20;  // rows of triangles that list samples
 
 // A sample's bytes at most (izb_common.glsl): its ray (two vec4 under a light with a position)
 // and its cell and triangle.
@@ -85,7 +85,7 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
     if (!counters_) resize(counters_, 32, "izb counters");  // izb_common.glsl: IzbCounters
-    if (!queue_) resize(queue_, kQueueCapacity * 8, "izb large-triangle queue");
+    if (!queue_) resize(queue_, kQueueCapacity * 8, "izb triangle-row queue");
     if (!dispatch_) resize(dispatch_, 16, "izb queue dispatch");
   }
   if (capacity != capacity_) {
@@ -218,7 +218,7 @@ void IzbState::listView(const PartContext& ctx, int view) {
   const long long cells = static_cast<long long>(grid_) * grid_;
   clearBuffer(counts_);
   clearBuffer(cellState_);
-  // The large-triangle queue is per view: its rows are cells of this view's grid.
+  // The queue of triangle rows is per view: its rows are cells of this view's grid.
   // So are the listed samples' w range (counters 3 and 4).
   const uint32_t zero = 0;
   glClearNamedBufferSubData(counters_, GL_R32UI, 8, 12, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -320,7 +320,7 @@ std::string IzbState::status() const {
   const bool several = views_ > 1;
   std::string s = std::to_string(listedCount()) +
                   (several ? " listings of samples in " + std::to_string(views_) + " views of " : " samples in ") +
-                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) + " rows of large triangles queued" +
+                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) + " rows of triangles queued" +
                   (several ? " in the last" : "");
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +

@@ -60,7 +60,7 @@ class IzbState : public DepthMapState {
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], rank[pixels], samples[pixels],
   // list[capacity], bits[pixels / 32] (shadowed), fallback[pixels / 32], counters (overflowed,
-  // listed, queued chunks, the listed samples' clip w range), the queue of large triangles'
+  // listed, queued chunks, the listed samples' clip w range), the queue of triangles'
   // chunks and its indirect dispatch
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, rank_ = 0, samples_ = 0, list_ = 0, bits_ = 0,
          fallback_ = 0, counters_ = 0, queue_ = 0, dispatch_ = 0, cellState_ = 0;
