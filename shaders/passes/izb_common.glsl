@@ -39,8 +39,9 @@ const uint kCellWords = 4u;
 const uint kMixedOwners = 0xffffffffu;
 layout(std430) buffer IzbBits { uint shadowBits[]; };    // 1 = occluded
 layout(std430) buffer IzbFallback { uint fallbackBits[]; };  // 1 = not listed: map test
-// 0: overflowed, 1: listed, 2: large-triangle rows queued, 3: ~bits of the least listed clip w,
-// 4: bits of the greatest (w > 0: a positive float's bits order as it does)
+// 0: overflowed, 1: listed, 2: rows of triangles without an alpha mask queued, 3: ~bits of the
+// least listed clip w, 4: bits of the greatest (w > 0: a positive float's bits order as it
+// does), 5: rows of alpha-masked triangles queued
 layout(std430) buffer IzbCounters { uint counters[]; };
 
 uniform int u_izbGrid;      // cells per side

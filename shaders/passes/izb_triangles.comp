@@ -11,7 +11,9 @@
 // (a large one for the whole frame), and on llvmpipe lanes with nothing to test cost as much as
 // busy ones: a group runs in step until its longest walk ends (Sponza: 190 + 100 ms with only
 // triangles of more than 64 cells queued, 29 + 207 ms with all). IZB_STEP 2: writes the indirect
-// dispatch of the queue. IZB_STEP 3: one invocation per queued row.
+// dispatches of the queues. IZB_STEP 3: one invocation per queued row, run once per queue
+// (IZB_QUEUE): alpha-masked triangles' rows have a queue of their own, the only one whose
+// program has the alpha lookup.
 // IZB_POSITIONAL (a light with a position) and IZB_MASKED (the scene has alpha-masked
 // materials) are defines: llvmpipe runs a branch's code whatever the lanes take, so the alpha
 // lookup cost every hit test in scenes with no mask (docs/performance.md).
@@ -21,8 +23,12 @@ layout(local_size_x = 64) in;
 uniform int u_izbTriangles;
 uniform int u_izbQueueCapacity;
 uniform vec3 u_lightDirection;  // a sun's rays go along its negation (izb_count.comp)
-layout(std430) buffer IzbQueue { uvec2 queue[]; };  // triangle, row in its bounds
-layout(std430) buffer IzbDispatch { uint dispatchArgs[3]; };
+// Two queues of u_izbQueueCapacity items (triangle, row in its bounds), one after the other:
+// the rows of triangles without an alpha mask, then those of masked ones. Their lengths are
+// counters 2 and 5, their dispatches three words each.
+layout(std430) buffer IzbQueue { uvec2 queue[]; };
+layout(std430) buffer IzbDispatch { uint dispatchArgs[6]; };
+uint queueLength(uint q) { return min(counters[q == 0u ? 2u : 5u], uint(u_izbQueueCapacity)); }
 
 // floor(t * size) modulo size, in [0, size): GLSL's % is undefined for negative operands.
 int wrapTexel(float t, int size) {
@@ -240,12 +246,14 @@ void testRow(Caster c, int y) {
 
 void main() {
 #if IZB_STEP == 2
-  dispatchArgs[0] = (min(counters[2], uint(u_izbQueueCapacity)) + 63u) / 64u;
-  dispatchArgs[1] = 1u;
-  dispatchArgs[2] = 1u;
+  for (uint q = 0u; q < 2u; ++q) {
+    dispatchArgs[3u * q] = (queueLength(q) + 63u) / 64u;
+    dispatchArgs[3u * q + 1u] = 1u;
+    dispatchArgs[3u * q + 2u] = 1u;
+  }
 #elif IZB_STEP == 3
-  uint item = gl_GlobalInvocationID.x;
-  if (item >= min(counters[2], uint(u_izbQueueCapacity))) return;
+  if (gl_GlobalInvocationID.x >= queueLength(uint(IZB_QUEUE))) return;
+  uint item = uint(IZB_QUEUE) * uint(u_izbQueueCapacity) + gl_GlobalInvocationID.x;
   // Slots a triangle reserved past a full queue hold older entries: testing them again is
   // harmless (the test is exact and only sets bits), reading past the triangles is not.
   if (queue[item].x >= uint(u_izbTriangles)) return;
@@ -262,11 +270,13 @@ void main() {
   uint busy = 0u;
   for (int y = c.lo.y; y <= c.hi.y; ++y) busy += rowHasSamples(c, y) ? 1u : 0u;
   if (busy == 0u) return;
-  uint slot = atomicAdd(counters[2], busy);
+  uint q = c.masked ? 1u : 0u;
+  uint slot = atomicAdd(counters[q == 0u ? 2u : 5u], busy);
   // A full queue is not an error: the triangle then walks its rows here, only slower.
   if (slot + busy <= uint(u_izbQueueCapacity)) {
+    uint item = q * uint(u_izbQueueCapacity) + slot;
     for (int y = c.lo.y; y <= c.hi.y; ++y)
-      if (rowHasSamples(c, y)) queue[slot++] = uvec2(id, uint(y - c.lo.y));
+      if (rowHasSamples(c, y)) queue[item++] = uvec2(id, uint(y - c.lo.y));
     return;
   }
   for (int y = c.lo.y; y <= c.hi.y; ++y) testRow(c, y);

@@ -85,8 +85,9 @@ void IzbState::ensureBuffers(int width, int height, int grid) {
     resize(bits_, (pixels + 31) / 32 * 4, "izb shadow bits");
     resize(fallback_, (pixels + 31) / 32 * 4, "izb fallback bits");
     if (!counters_) resize(counters_, 32, "izb counters");  // izb_common.glsl: IzbCounters
-    if (!queue_) resize(queue_, kQueueCapacity * 8, "izb triangle-row queue");
-    if (!dispatch_) resize(dispatch_, 16, "izb queue dispatch");
+    // Two queues (izb_triangles.comp): rows of unmasked triangles, then of alpha-masked ones.
+    if (!queue_) resize(queue_, 2 * kQueueCapacity * 8, "izb triangle-row queues");
+    if (!dispatch_) resize(dispatch_, 24, "izb queue dispatches");
   }
   if (capacity != capacity_) {
     capacity_ = capacity;
@@ -219,9 +220,9 @@ void IzbState::listView(const PartContext& ctx, int view) {
   clearBuffer(counts_);
   clearBuffer(cellState_);
   // The queue of triangle rows is per view: its rows are cells of this view's grid.
-  // So are the listed samples' w range (counters 3 and 4).
+  // So are the listed samples' w range (counters 3 and 4) and the masked rows' queue (5).
   const uint32_t zero = 0;
-  glClearNamedBufferSubData(counters_, GL_R32UI, 8, 12, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(counters_, GL_R32UI, 8, 16, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   ProgramSpec count{"izb count",
                     {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}},
                     lightDefines(ctx) + define("IZB_SEVERAL_VIEWS", views_ > 1)};
@@ -261,11 +262,15 @@ void IzbState::listView(const PartContext& ctx, int view) {
 // technique's module reads while shading.
 void IzbState::runTriangles(const PartContext& ctx) {
   if (error_.empty() && scene_.triangleCount > 0) {
-    for (int step = 1; step <= 3; ++step) {
+    // Step 3 once per queue: the rows of unmasked triangles with a program without the alpha
+    // lookup, then, in a scene with masks, those of masked ones.
+    for (int run = 1; run <= (scene_.anyMasked ? 4 : 3); ++run) {
+      const int step = std::min(run, 3), queue = run - 3;
+      const bool masked = step == 3 ? queue == 1 : scene_.anyMasked;
       ProgramSpec spec{"izb triangles " + std::to_string(step),
                        {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}},
                        "#define IZB_STEP " + std::to_string(step) + "\n" + lightDefines(ctx) +
-                           define("IZB_MASKED", scene_.anyMasked)};
+                           define("IZB_MASKED", masked) + define("IZB_QUEUE", queue == 1)};
       Program& p = ctx.shaders->get(spec);
       if (!p.valid()) return;
       p.use();
@@ -277,7 +282,7 @@ void IzbState::runTriangles(const PartContext& ctx) {
       if (step == 2) glDispatchCompute(1, 1, 1);
       if (step == 3) {
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_);
-        glDispatchComputeIndirect(0);
+        glDispatchComputeIndirect(static_cast<GLintptr>(queue * 3 * sizeof(uint32_t)));
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
       }
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -308,7 +313,7 @@ void IzbState::bind(const Program& p, TextureUnits& units) const {
 }
 
 uint32_t IzbState::counter(int index) const {
-  uint32_t c[3] = {0, 0, 0};
+  uint32_t c[6] = {0, 0, 0, 0, 0, 0};
   if (counters_) glGetNamedBufferSubData(counters_, 0, sizeof c, c);
   return c[index];
 }
@@ -320,7 +325,8 @@ std::string IzbState::status() const {
   const bool several = views_ > 1;
   std::string s = std::to_string(listedCount()) +
                   (several ? " listings of samples in " + std::to_string(views_) + " views of " : " samples in ") +
-                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2)) + " rows of triangles queued" +
+                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2) + counter(5)) +
+                  " rows of triangles queued (" + std::to_string(counter(5)) + " alpha-masked)" +
                   (several ? " in the last" : "");
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +
@@ -333,7 +339,7 @@ long long IzbState::texels() const {
   const long long pixels = static_cast<long long>(width_) * height_;
   const long long cells = static_cast<long long>(grid_) * grid_;
   const long long words = cells * 2 + 1 + (cells + 1023) / 1024 + pixels * ((kPixelCellBytes + 4 + kSampleBytes) / 4) +
-                          capacity_ + 2 * ((pixels + 31) / 32) + kQueueCapacity * 2 + scene_.bytes / 4;
+                          capacity_ + 2 * ((pixels + 31) / 32) + kQueueCapacity * 4 + scene_.bytes / 4;
   return DepthMapState::texels() + words;
 }
 

@@ -55,7 +55,7 @@ class IzbState : public DepthMapState {
   void runTriangles(const PartContext& ctx);
   void drawListView(const PartContext& ctx, Texture2D* target);
   void setCommon(const Program& p, const PartContext& ctx) const;
-  uint32_t counter(int index) const;  // 0 overflowed, 1 listed, 2 queued chunks (a readback)
+  uint32_t counter(int index) const;  // izb_common.glsl: IzbCounters (a readback)
 
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], rank[pixels], samples[pixels],
