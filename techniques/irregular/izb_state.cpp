@@ -246,7 +246,8 @@ void IzbState::listView(const PartContext& ctx, int view) {
     ps.use();
     setCommon(ps, ctx);
     ps.set("u_izbCells", static_cast<int>(cells));
-    glDispatchCompute(step == 1 ? groups(cells, 1024) : step == 2 ? 1 : groups(cells, 256), 1, 1);
+    // One invocation per chunk of 1024 cells (izb_scan.comp), one for the chunks' totals.
+    glDispatchCompute(step == 2 ? 1 : groups(groups(cells, 1024), 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   ProgramSpec scatter{"izb scatter", {{GL_COMPUTE_SHADER, "passes/izb_scatter.comp"}}, ""};
