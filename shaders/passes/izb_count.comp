@@ -141,10 +141,12 @@ float listSample() {
 // (izb_scan.comp): an atomic per sample on that one address cost llvmpipe 6 ms at 1280x720.
 void main() {
   float w = listSample();
+#if IZB_W_RANGE  // the grid's w varies (a warp under a sun): the triangles pass culls by it
   if (!(w > 0.0)) return;
   // Tested before the atomic: the range settles within the first groups, and a plain read
   // costs llvmpipe far less than an atomic maximum on one address (a stale read only adds one).
   uint low = ~floatBitsToUint(w), high = floatBitsToUint(w);
   if (low > counters[3]) atomicMax(counters[3], low);
   if (high > counters[4]) atomicMax(counters[4], high);
+#endif
 }

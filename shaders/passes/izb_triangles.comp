@@ -156,6 +156,9 @@ bool setup(uint id, out Caster c) {
     // (izb_state.cpp, raysProjectToPoints): clip w stays the sample's along it, so only a
     // triangle's part within the listed samples' w range can hit one (an orthographic view's w
     // is 1 throughout). The range is widened against the rounding of w between the passes.
+    // IZB_W_RANGE: the grid's w varies (a warp); an orthographic grid's w is 1 everywhere,
+    // where none of this can cull (izb_state.cpp).
+#if IZB_W_RANGE
     float lo = max(uintBitsToFloat(~counters[3]) * (1.0 - 1e-5), 1e-6);
     float hi = uintBitsToFloat(counters[4]) * (1.0 + 1e-5);
     if (all(lessThan(w, vec3(lo))) || all(greaterThan(w, vec3(hi)))) return false;
@@ -164,6 +167,7 @@ bool setup(uint id, out Caster c) {
       clippedBounds(c, v, lo, hi);
       return true;
     }
+#endif
   }
 #else
   {

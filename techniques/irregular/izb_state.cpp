@@ -36,7 +36,14 @@ GLuint groups(long long n, int size) { return static_cast<GLuint>((n + size - 1)
 // sides of a branch whatever its lanes take (docs/performance.md).
 std::string define(const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); }
 
-std::string lightDefines(const PartContext& ctx) { return define("IZB_POSITIONAL", ctx.shadowedLight().positional()); }
+// IZB_W_RANGE: the listed samples' clip w range is kept and culls casters under a sun whose grid
+// is a warp; an orthographic grid's w row is (0, 0, 0, 1) (sunGridMatrix keeps it), so w is 1
+// at every point and the range culls nothing.
+std::string gridDefines(const PartContext& ctx, const glm::mat4& grid) {
+  const bool positional = ctx.shadowedLight().positional();
+  const bool constantW = grid[0][3] == 0.0f && grid[1][3] == 0.0f && grid[2][3] == 0.0f && grid[3][3] == 1.0f;
+  return define("IZB_POSITIONAL", positional) + define("IZB_W_RANGE", !positional && !constantW);
+}
 
 }  // namespace
 
@@ -225,7 +232,7 @@ void IzbState::listView(const PartContext& ctx, int view) {
   glClearNamedBufferSubData(counters_, GL_R32UI, 8, 16, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   ProgramSpec count{"izb count",
                     {{GL_COMPUTE_SHADER, "passes/izb_count.comp"}},
-                    lightDefines(ctx) + define("IZB_SEVERAL_VIEWS", views_ > 1)};
+                    gridDefines(ctx, gridViewProj_) + define("IZB_SEVERAL_VIEWS", views_ > 1)};
   Program& pc = ctx.shaders->get(count);
   if (!pc.valid()) return;
   pc.use();
@@ -270,7 +277,7 @@ void IzbState::runTriangles(const PartContext& ctx) {
       const bool masked = step == 3 ? queue == 1 : scene_.anyMasked;
       ProgramSpec spec{"izb triangles " + std::to_string(step),
                        {{GL_COMPUTE_SHADER, "passes/izb_triangles.comp"}},
-                       "#define IZB_STEP " + std::to_string(step) + "\n" + lightDefines(ctx) +
+                       "#define IZB_STEP " + std::to_string(step) + "\n" + gridDefines(ctx, gridViewProj_) +
                            define("IZB_MASKED", masked) + define("IZB_QUEUE", queue == 1)};
       Program& p = ctx.shaders->get(spec);
       if (!p.valid()) return;
