@@ -67,6 +67,15 @@ void keepGlDriverLoaded() {
 #endif
 }
 
+void drawFullscreenTriangle() {
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vao);
+}
+
 bool isSoftwareRenderer() {
   std::string r = glRendererName();
   return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||

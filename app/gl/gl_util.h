@@ -21,6 +21,11 @@ std::string glRendererName();
 // what LeakSanitizer still reports is real and names the driver.
 void keepGlDriverLoaded();
 bool isSoftwareRenderer();  // llvmpipe/softpipe: timer queries there do not measure the work
+// One triangle of three vertices with no attributes (passes/fullscreen.vert makes the
+// positions from gl_VertexID). A core profile still wants a vertex array bound: a throwaway one
+// keeps the caller free of per-context GL state (tests open several contexts). The renderer's
+// own fullscreen draw keeps a vertex array of its context instead.
+void drawFullscreenTriangle();
 
 // Named scope in a captured frame (RenderDoc, apitrace).
 class GlDebugGroup {

@@ -2,6 +2,7 @@
 // Halton jitter and the accumulation / debug-view passes. See techniques/accumulation/README.md.
 #include "accumulation/pixel_correct.h"
 
+#include "gl/gl_util.h"
 #include "gl/texture_units.h"
 
 #include "part/frame_graph.h"
@@ -117,17 +118,6 @@ void bindInputs(const AccumulationContext& ctx, const Program& p, TextureUnits& 
   units.bind(p, "u_raw", ctx.rawVisibilityTex->id());
 }
 
-// The fullscreen triangle has no attributes; a core profile still wants a vertex array bound.
-// A throwaway one keeps this file free of per-context GL state (tests open several contexts).
-void drawTriangle() {
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glDeleteVertexArrays(1, &vao);
-}
-
 // The accumulation's debug views (confidence, history, disocclusion) shown this frame: fullscreen
 // passes over the G-buffer, the raw test and last frame's history.
 void addPixelCorrectViews(FrameGraph& graph, const AccumulationContext& c, const std::vector<std::string>& views,
@@ -154,7 +144,7 @@ void addPixelCorrectViews(FrameGraph& graph, const AccumulationContext& c, const
                  TextureUnits units;
                  bindInputs(c, p, units, prevTex, true);
                  setAccumulationUniforms(p, c.view, c.prevProj, hasHistory, m);
-                 drawTriangle();
+                 drawFullscreenTriangle();
                }});
     graph.requestSink(res);
   }

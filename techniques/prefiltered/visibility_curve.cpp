@@ -1,5 +1,6 @@
 #include "prefiltered/visibility_curve.h"
 
+#include "gl/gl_util.h"
 #include "gl/texture_units.h"
 #include "part/uniforms.h"
 
@@ -32,16 +33,11 @@ std::vector<float> reconstructedCurve(ShaderLibrary& shaders, const Technique& t
   setTechniqueUniforms(p, t, LightSpace{}, Light{});
   p.set("u_uvLayer", uvLayer);
   p.set("u_samples", static_cast<float>(samples));
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
   {
     TextureUnits units;
     state.bind(p, units);
-    glBindVertexArray(vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
+    drawFullscreenTriangle();
   }
-  glDeleteVertexArrays(1, &vao);
   std::vector<float> rgba = target.readFloats(4), out;
   for (size_t i = 0; i < rgba.size(); i += 4) out.push_back(rgba[i]);
   return out;

@@ -56,7 +56,7 @@ void runFilter(GlHarness& h, const Map& m, const std::vector<std::vector<glm::ve
   for (const TextureDesc& d : s.scratchTargets())
     scratch.push_back(static_cast<Texture2D*>(pool.acquire(d, "test scratch")));
   s.filter(
-      h.shaders, test::drawFullscreenTriangle, scratch,
+      h.shaders, drawFullscreenTriangle, scratch,
       [&m](const Program& p, TextureUnits&) { setTechniqueUniforms(p, m.technique, LightSpace{}, Light{}); }, hulls);
 }
 
@@ -180,7 +180,7 @@ std::vector<float> probeLookups(GlHarness& h, const Map& m, int n) {
   {
     TextureUnits units;
     m.state->bind(p, units);
-    test::drawFullscreenTriangle();
+    drawFullscreenTriangle();
   }
   return target.readFloats(4);
 }

@@ -7,23 +7,13 @@
 #pragma once
 
 #include "prefiltered/moment_state.h"
+#include "gl/gl_util.h"
 #include "tests/gl_test_util.h"
 #include "technique.h"
 
 #include <fstream>
 
 namespace sl::test {
-
-// One triangle of three vertices from an empty vertex array: the fullscreen passes' draw
-// (passes/fullscreen.vert makes the positions).
-inline void drawFullscreenTriangle() {
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glDeleteVertexArrays(1, &vao);
-}
 
 struct MomentCase {
   float z1 = 0, z2 = 1, fraction = 1, receiver = 0;
