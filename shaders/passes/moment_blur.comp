@@ -9,12 +9,16 @@
 // A box of width N texels: odd N has N equal taps; even N has N+1 taps with half weights at the
 // ends, the exact area of a width-N box over nearest-neighbour texels (so every width keeps the
 // texel centred). Edges clamp, as the texture's clamp-to-edge would.
+// The taps are finite, so they are summed without moment_taps.glsl's checks (which cost a tenth
+// to a fifth of the pass on llvmpipe, as did a check once per fetched texel): the first
+// direction takes a representation's moments of a sanitized depth, finite at every parameter
+// (MomentMap.EveryRepresentationsMomentsStayFiniteAtItsExtremes), the second only the first's
+// averages of those. ESM's log-space sum keeps its own path.
 #include "passes/moment_taps.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 uniform int u_layer;
 uniform int u_vertical;
-uniform float u_width;
 
 const int kApron = SL_BLUR_HALF;
 const int kWindow = SL_BLUR_RUN + 2 * kApron;
@@ -87,7 +91,8 @@ vec4 g_window[SL_MOMENT_TARGETS * kWindow];
 
 ivec3 texelAt(int along, int line) { return u_vertical == 1 ? ivec3(line, along, u_layer) : ivec3(along, line, u_layer); }
 
-float tapWeight(int i) { return clamp(0.5 * u_width + 0.5 - abs(float(i)), 0.0, 1.0); }
+// SL_BLUR_WIDTH is a define, so that the weights fold into the unrolled sums.
+float tapWeight(int i) { return clamp(0.5 * float(SL_BLUR_WIDTH) + 0.5 - abs(float(i)), 0.0, 1.0); }
 
 // Fetches the run starting at `start` of `line` and its aprons (texels past the map clamp).
 void fetchWindow(int start, int line, int last) {
@@ -127,12 +132,17 @@ void fetchWindow(int start, int line, int last) {
 // Target t's box average around the run's texel o.
 vec4 filtered(int t, int o) {
   int centre = t * kWindow + o + kApron;
-  TapSum s = tapSumBegin();
 #ifdef SL_MOMENT_LOG_FILTER
+  TapSum s = tapSumBegin();
   for (int i = -kApron; i <= kApron; ++i) s.big = tapMax(s.big, g_window[centre + i]);
-#endif
   for (int i = -kApron; i <= kApron; ++i) tapAdd(s, g_window[centre + i], tapWeight(i));
   return tapSumEnd(s);
+#else
+  // Every tap finite, every tap present (edges clamp): the weights sum to the width.
+  vec4 sum = vec4(0.0);
+  for (int i = -kApron; i <= kApron; ++i) sum += g_window[centre + i] * tapWeight(i);
+  return sum / float(SL_BLUR_WIDTH);
+#endif
 }
 
 // Target t's run, filtered, into `dst` (both loops have constant bounds, so that the compiler

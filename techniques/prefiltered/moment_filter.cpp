@@ -200,7 +200,7 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
   std::string prelude = fromDepth ? defines() + "#include \"" + module_ + "\"\n#define SL_BLUR_FROM_DEPTH\n"
                                   : filterDefines(config_, spec_.logFilter);
   prelude += "#define SL_BLUR_RUN " + std::to_string(kBlurRun) + "\n#define SL_BLUR_HALF " +
-             std::to_string(config_.width / 2) + "\n";
+             std::to_string(config_.width / 2) + "\n#define SL_BLUR_WIDTH " + std::to_string(config_.width) + "\n";
   if (groups) prelude += "#define SL_BLUR_GROUPS\n";
   for (size_t t = 0; t < dst.size(); ++t)
     prelude += "#define SL_BLUR_FORMAT" + std::to_string(t) + " " + imageFormatName(dst[t]->format()) + "\n";
@@ -217,7 +217,6 @@ void MomentMapState::runBlurPass(ShaderLibrary& shaders, const TechniqueBinder& 
     bindSources(p, units, src);
   }
   if (spec_.logFilter) p.set("u_logExponent", logExponent_);
-  p.set("u_width", static_cast<float>(config_.width));
   p.set("u_layer", layer);
   p.set("u_vertical", vertical ? 1 : 0);
   if (groups) p.set("u_groupOffset", groups->x);
