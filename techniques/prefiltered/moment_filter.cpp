@@ -1,8 +1,8 @@
 // The passes that make the moment maps from the shadow pass's depth: the representation's
 // moments of each texel, blurred on the way by a separable box (two compute passes per layer,
 // through a scratch target), or then mip-mapped by 2x2 box downsampling, or summed into a table
-// (moment_sat.cpp). Filters work in log space for ESM (SL_MOMENT_LOG_FILTER) and drop
-// non-finite taps, so one broken texel cannot spread into a lit or black square.
+// (moment_sat.cpp). Filters work in log space for ESM (SL_MOMENT_LOG_FILTER); the mips and
+// tables drop non-finite taps, the blur's taps are finite by construction (moment_blur.comp).
 #include "gl/storage_blocks.h"
 #include "gl/texture_units.h"
 #include "prefiltered/blur_spans.h"
