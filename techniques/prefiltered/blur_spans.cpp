@@ -84,6 +84,11 @@ std::optional<std::vector<glm::ivec2>> columnIntervals(const std::vector<glm::iv
   return out;
 }
 
+// The cells below are kBlurRun texels square and a group kBlurGroupSide cells by one, which is
+// the shader's footprint (kBlurGroupSide runs of kBlurRun by kBlurGroupSide lines) only while
+// the two are equal: runs of 16 or 32 alone would blur fewer texels than the lookups read.
+static_assert(kBlurRun == kBlurGroupSide, "blurGroups assumes a run as long as a group's side");
+
 BlurGroups blurGroups(const std::vector<glm::ivec2>& spans, int size, int apron) {
   // Cells of kBlurRun² texels: a second-direction group is one column of cells kBlurGroupSide
   // long (its lines are the cell's columns), a first-direction group one row of cells.
