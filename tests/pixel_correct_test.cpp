@@ -415,6 +415,33 @@ TEST(PixelCorrect, DebugViewsRunOnlyWhenShown) {
   EXPECT_EQ(glDebugErrorCount(), 0);
 }
 
+// The G-buffer draws each pixel's previous-frame position only for a pass that reads it (the
+// views); then a still camera finds its history at every covered pixel (grey in the
+// disocclusion view; a motion target left unwritten would read as off-screen, blue).
+TEST(PixelCorrect, MotionIsDrawnForTheViewsThatReadIt) {
+  GlHarness h;
+  Scene scene = loadScene("basic", defaultAssetsDir());
+  h.renderer.setScene(scene);
+  Viewport plain(makeTechnique("alias-free-pixel-correct", {}));
+  Viewport viewed(makeTechnique("alias-free-pixel-correct", {}));
+  viewed.shownViews = {"disocclusion"};
+  FrameInput in = frameInput(scene.cameras.front(), 96, 54);
+  for (int f = 0; f < 3; ++f) h.renderer.render(in, {&plain});
+  for (int f = 0; f < 3; ++f) h.renderer.render(in, {&viewed});
+  EXPECT_EQ(plain.visibilityTexture()->readFloats(2), viewed.visibilityTexture()->readFloats(2));
+  auto px = viewed.viewTexture("disocclusion")->readRgba8();
+  int covered = 0, historyUsed = 0;
+  for (size_t i = 0; i < px.size(); i += 4) {
+    if (px[i] + px[i + 1] + px[i + 2] == 0) continue;  // no geometry
+    ++covered;
+    historyUsed += px[i] == px[i + 2] && std::abs(px[i] - 89) <= 2;  // grey 0.35
+  }
+  ASSERT_GT(covered, 96 * 54 / 2);
+  EXPECT_GT(historyUsed, covered * 95 / 100) << historyUsed << " of " << covered;
+  EXPECT_TRUE(h.shaders.errors().empty());
+  EXPECT_EQ(glDebugErrorCount(), 0);
+}
+
 namespace fs = std::filesystem;
 using test::lineOf;
 using test::rewriteFile;

@@ -199,8 +199,6 @@ class Accumulation {
   virtual std::string help() const = 0;
   virtual std::vector<ParamDecl> params() const { return {}; }
   virtual std::unique_ptr<AccumulationState> createState() const = 0;
-  // True when its passes read the G-buffer's per-pixel motion (reprojection).
-  virtual bool readsMotion() const { return false; }
 };
 
 // A named combination with parameter overrides, as a family declares it.

@@ -171,11 +171,7 @@ void Renderer::setScene(const Scene& scene) {
   sceneGeneration_ = ++generations;
 }
 
-void Renderer::ensureTargets(int w, int h, bool withMotion) {
-  // Per-pixel motion costs a fourth target; only accumulations read it. Which framebuffer is
-  // drawn follows each call, without touching history: the bench renders a technique with and
-  // one without motion in turn.
-  gHasMotion_ = withMotion;
+void Renderer::ensureTargets(int w, int h) {
   if (w == width_ && h == height_ && gPosition_) return;
   width_ = w;
   height_ = h;
@@ -188,7 +184,7 @@ void Renderer::ensureTargets(int w, int h, bool withMotion) {
   gDepth_ = std::make_unique<Texture2D>(GL_DEPTH_COMPONENT32F, w, h, "gbuffer.depth");
   gFbo_ = Framebuffer("gbuffer");
   gFbo_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get()}, gDepth_.get());
-  // Per-pixel motion costs a fifth target; only accumulations read it.
+  // Per-pixel motion costs a fifth target; only the pixel-correct debug views read it.
   gFboMotion_ = Framebuffer("gbuffer + motion");
   gFboMotion_.attach({gPosition_.get(), gNormal_.get(), gAlbedo_.get(), gSurface_.get(), gMotion_.get()},
                      gDepth_.get());
@@ -237,9 +233,11 @@ std::string Renderer::techniquePrelude(const Viewport& vp) const {
          t.representation->glslModule() + "\"\n#endif\n";
 }
 
-void Renderer::drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev, bool positionsOnly) {
-  const Framebuffer& fbo = gHasMotion_ ? gFboMotion_ : gFbo_;
-  const GLsizei targets = gHasMotion_ ? 5 : 4;
+void Renderer::drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev, bool positionsOnly,
+                           bool withMotion) {
+  withMotion = withMotion && !positionsOnly;
+  const Framebuffer& fbo = withMotion ? gFboMotion_ : gFbo_;
+  const GLsizei targets = withMotion ? 5 : 4;
   fbo.bind();
   // Positions alone: the other draw buffers off (llvmpipe writes every enabled target of every
   // fragment: 17 -> 6.5 ms at 1280x720 on basic), restored after the draw.
@@ -251,12 +249,12 @@ void Renderer::drawGBuffer(const glm::mat4& viewProj, double time, const Previou
   if (!positionsOnly) {
     for (int i = 1; i < 3; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 3, none);  // surface ids: an integer target
-    if (gHasMotion_) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 4, zero);
+    if (withMotion) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 4, zero);
   }
   glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   std::string defines = positionsOnly ? "#define SL_GBUFFER_POSITION_ONLY\n"
-                        : gHasMotion_ ? "#define SL_WRITE_MOTION\n"
+                        : withMotion  ? "#define SL_WRITE_MOTION\n"
                                       : "";
   PassPrograms programs(
       shaders_,
@@ -367,9 +365,7 @@ void Renderer::executeTimed(const FrameGraph& graph) {
 
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {
   if (!scene_) throw std::runtime_error("renderer: no scene loaded");
-  bool needMotion = false;
-  for (Viewport* vp : viewports) needMotion |= vp->technique.accumulation->readsMotion();
-  ensureTargets(in.width, in.height, needMotion);
+  ensureTargets(in.width, in.height);
   view_ = cameraView(in.camera);
   proj_ = cameraProjection(in.camera, static_cast<float>(in.width) / static_cast<float>(in.height));
   // A cut, a new scene or size, or a viewport's first frame: motion is relative to this frame.
@@ -391,13 +387,15 @@ void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewpo
     vp->layout->reset();  // e.g. SDSM bounds of frames before the cut
   }
   FrameGraph graph;
-  // One pass makes "gbuffer" (every target) and "gbuffer.position" (world positions and
-  // coverage, what the virtual maps' page marking reads): when nothing that runs reads the rest,
-  // it draws the positions alone.
+  // One pass makes "gbuffer" (every target but motion), "gbuffer.position" (world positions and
+  // coverage, what the virtual maps' page marking reads) and "gbuffer.motion" (each pixel's
+  // previous-frame position, what the pixel-correct views read): when nothing that runs reads
+  // the rest, it draws the positions alone, and motion only for a pass that reads it (a fifth
+  // 32-bit target costs llvmpipe about 4 ms at 1280x720).
   gbufferFresh_ = false;
-  graph.add({"gbuffer", {}, {"gbuffer", "gbuffer.position"}, [this, &in, &graph] {
+  graph.add({"gbuffer", {}, {"gbuffer", "gbuffer.position", "gbuffer.motion"}, [this, &in, &graph] {
                gbufferFresh_ = graph.neededLive("gbuffer");
-               drawGBuffer(proj_ * view_, in.time, prev_, !gbufferFresh_);
+               drawGBuffer(proj_ * view_, in.time, prev_, !gbufferFresh_, graph.neededLive("gbuffer.motion"));
              }});
   if (keepGBuffer) graph.requestSink("gbuffer");
   for (size_t i = 0; i < viewports.size(); ++i) {

@@ -188,7 +188,7 @@ class Renderer {
                                                  const std::vector<std::vector<float>>& others = {});
 
  private:
-  void ensureTargets(int w, int h, bool withMotion);
+  void ensureTargets(int w, int h);
   void ensureViewportTargets(Viewport& vp, int w, int h);
   void addViewportPasses(FrameGraph& g, Viewport& vp, size_t index, const FrameInput& in);
   // One light's passes of a viewport (layout, shadow, representation, accumulation); the name of
@@ -248,7 +248,9 @@ class Renderer {
   void drawFullscreen();
   // positionsOnly: only the world-position target (and depth) is written, the others keep what
   // they held; for frames whose passes read positions alone (resource "gbuffer.position").
-  void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev, bool positionsOnly = false);
+  // withMotion: the fifth target, each pixel's previous-frame position ("gbuffer.motion").
+  void drawGBuffer(const glm::mat4& viewProj, double time, const PreviousFrame& prev, bool positionsOnly = false,
+                   bool withMotion = false);
   std::string shadePrelude() const;  // defines of the deferred shade pass
   // u_gPosition, u_gNormal, u_gAlbedo, u_gSurface; and with a visibility (u_visibility).
   void bindGBuffer(const Program& p, TextureUnits& units) const;
@@ -262,7 +264,6 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<Texture2D> gPosition_, gNormal_, gAlbedo_, gSurface_, gMotion_, gDepth_;
   Framebuffer gFbo_, gFboMotion_;  // without and with the motion target
-  bool gHasMotion_ = false;        // this frame's G-buffer writes motion
   bool gbufferFresh_ = false;      // this frame's G-buffer pass wrote every target
   int width_ = 0, height_ = 0;
   GLuint emptyVao_ = 0, linesVao_ = 0, linesVbo_ = 0;

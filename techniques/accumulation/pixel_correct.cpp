@@ -130,7 +130,10 @@ void addPixelCorrectViews(FrameGraph& graph, const AccumulationContext& c, const
     Texture2D* target = it->second;
     const std::string res = std::string("view.") + name + tag;
     const std::string file = std::string("accumulation/views_") + name + ".frag";
-    graph.add({res, {"gbuffer", c.rawVisibility, prevRes}, {res}, [c, prevTex, target, file, hasHistory, m, prelude] {
+    graph.add({res,
+               {"gbuffer", "gbuffer.motion", c.rawVisibility, prevRes},
+               {res},
+               [c, prevTex, target, file, hasHistory, m, prelude] {
                  ProgramSpec spec{"view " + file,
                                   {{GL_VERTEX_SHADER, "passes/fullscreen.vert"}, {GL_FRAGMENT_SHADER, file}},
                                   prelude};
@@ -394,7 +397,6 @@ std::vector<ParamDecl> historyParams() {
 class PixelCorrectAccumulation : public Accumulation {
  public:
   std::string id() const override { return "pixel-correct"; }
-  bool readsMotion() const override { return true; }
   std::string help() const override {
     return "screen-space history with confidence-weighted updates and jittered shadow maps (Scherzer, Jeschke, "
            "Wimmer 2007): shadow edges converge to pixel-correct over ~10-60 still frames";
