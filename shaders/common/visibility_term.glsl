@@ -24,7 +24,13 @@ vec2 shadowTestIn(vec3 P, vec3 N, vec3 F, float cosTheta, int view, out vec4 coo
   float visibility = representationVisibility(vec3(coord.xy, coord.w), coord.z);
   vec2 texelPos = sc.uv * u_shadowMapSize;
   vec2 fromCenter = abs(texelPos - (floor(texelPos) + 0.5));
-  return vec2(visibility, 1.0 - 2.0 * max(fromCenter.x, fromCenter.y));
+  float confidence = 1.0 - 2.0 * max(fromCenter.x, fromCenter.y);
+#ifdef SL_REPRESENTATION_CONFIDENCE
+  // A representation whose answer does not come from the map's texels (an exact test) says how
+  // sure its last lookup is; the texel-centre distance is what it falls back on.
+  confidence = representationConfidence(confidence);
+#endif
+  return vec2(visibility, confidence);
 }
 
 // x: visibility (1 = lit), y: confidence. N: shading normal, F: the triangle's own normal (same

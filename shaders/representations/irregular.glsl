@@ -43,4 +43,11 @@ bool representationSameBeside(float f, float tolerance) {
   return !sl_izbFellBack || same;
 }
 
+// The confidence of Scherzer et al. (eq. 5) measures how far a map lookup sat from its texel's
+// centre. A listed sample's bit is the exact answer at the pixel (the reference's ray), so its
+// confidence is 1: an accumulation's confidence view shows where the map decided instead (the
+// fallen-back samples, with the map's own confidence). Beyond the papers.
+#define SL_REPRESENTATION_CONFIDENCE
+float representationConfidence(float mapConfidence) { return sl_izbFellBack ? mapConfidence : 1.0; }
+
 float representationFilterRadius(vec3 p, int view) { return 0.0; }

@@ -233,6 +233,30 @@ TEST(Irregular, ComposesWithPixelCorrectAccumulation) {
   EXPECT_GT(r.shadowed, 50);
 }
 
+// The accumulation's confidence (Scherzer et al., eq. 5) is the representation's: 1 where a
+// listed sample's bit answered (exact at the pixel), the map's texel-centre distance only where
+// a sample fell back to the map (here every sample past a capacity of one).
+TEST(Irregular, ConfidenceIsOneWhereTheBitsAnswerAndTheMapsWhereItFellBack) {
+  test::GlHarness h;
+  const Scene scene = loadScene("basic", defaultAssetsDir());
+  for (const char* capacity : {"izb.capacity=100", "izb.capacity=0.01"}) {
+    Viewport vp(makeTechnique("alias-free-pixel-correct", {capacity}));
+    const test::Frame f = renderWith(h, scene, vp, scene.cameras.front());
+    const std::vector<float> raw = vp.rawVisibilityTexture()->readFloats(2);
+    long long covered = 0, sure = 0;
+    for (size_t i = 0; i < raw.size() / 2; ++i) {
+      if (!(f.position[4 * i + 3] > 0.5f)) continue;
+      ++covered;
+      sure += raw[2 * i + 1] == 1.0f;
+    }
+    ASSERT_GT(covered, kIrregularW * kIrregularH / 2) << capacity;
+    if (std::string(capacity) == "izb.capacity=100")
+      EXPECT_EQ(sure, covered) << capacity;
+    else
+      EXPECT_LT(sure, covered * 9 / 10) << capacity;  // the map's confidence: 1 only on a centre
+  }
+}
+
 // Several views are listed one after another, a sample in every view whose window holds it: the
 // cascades under the sun and a point light's cube and tetrahedron faces are exact as one view is.
 Result severalViews(test::GlHarness& h, const std::string& sceneId, const std::string& layout) {
