@@ -82,7 +82,9 @@ struct AccumulationContext {
   Texture2D* finalVisibilityTex = nullptr;
   const Texture2D* gPosition = nullptr;  // RGBA32F world position, w = 1 where covered
   const Texture2D* gNormal = nullptr;    // RGBA32F world normal
-  const Texture2D* gMotion = nullptr;    // RGBA32F: previous frame NDC xyz (per-object motion), w valid
+  // RGBA32F: previous frame NDC xyz (per-object motion), w valid. Drawn only in frames where a
+  // live pass declares resource "gbuffer.motion".
+  const Texture2D* gMotion = nullptr;
   ShaderLibrary* shaders = nullptr;
   const ParamSet* params = nullptr;
   glm::mat4 view{1.0f}, proj{1.0f}, prevView{1.0f}, prevProj{1.0f};
