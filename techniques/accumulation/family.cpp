@@ -48,7 +48,7 @@ void addPixelCorrectPresets(std::vector<Preset>& v) {
 // The pixel-correct state's views (confidence, history, disocclusion).
 void addPixelCorrectViewKeys(std::map<std::string, ColourKey>& keys) {
   // shaders/accumulation/views_confidence.frag.
-  keys["confidence"] = {"shadow-test confidence (1 at a texel centre)",
+  keys["confidence"] = {"shadow-test confidence (1 at a texel centre, or where the test is exact)",
                         "",
                         {{0.0f, {0.0f, 0.0f, 0.0f}, "0"}, {1.0f, {0.7f, 0.7f, 0.7f}, "1"}},
                         {{{1.0f, 0.55f, 0.0f}, "orange: update weight conf^m"}, kBlackNoGeometry},

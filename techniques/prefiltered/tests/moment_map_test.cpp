@@ -320,6 +320,8 @@ TEST(MomentMap, EveryRepresentationsMomentsStayFiniteAtItsExtremes) {
     for (const std::string format : {"float16", "float32"}) {
       std::vector<std::string> sets = extremes;
       sets.push_back("filter.format=" + format);
+      std::string named;  // every setting, for the failure message
+      for (const std::string& set : sets) named += " " + set;
       Map m = momentMap(preset, sets, n);
       fillDepth(m, z);
       runFilter(h, m);
@@ -327,7 +329,7 @@ TEST(MomentMap, EveryRepresentationsMomentsStayFiniteAtItsExtremes) {
         const std::vector<float> got = m.state->moments(t).readFloats(4);
         size_t bad = 0;
         for (float v : got) bad += std::isfinite(v) ? 0 : 1;
-        EXPECT_EQ(bad, 0u) << preset << " " << extremes.front() << " " << format << ", target " << t;
+        EXPECT_EQ(bad, 0u) << preset << named << ", target " << t;
       }
     }
   EXPECT_EQ(glDebugErrorCount(), 0);
