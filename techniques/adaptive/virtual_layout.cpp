@@ -6,6 +6,7 @@
 #include "adaptive/page_allocator.h"
 #include "adaptive/quadtree_fit.h"
 #include "gl/gl_util.h"
+#include "gl/readback_ring.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "part/light_frame.h"
@@ -14,7 +15,9 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstring>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace sl {
@@ -176,9 +179,10 @@ class VirtualState : public LayoutState {
     glTextureSubImage2D(table_, 0, 0, 0, n, n, GL_RED_INTEGER, GL_UNSIGNED_INT, pages_.finestTable().data());
   }
 
-  // Marks the pages the G-buffer's pixels need on the GPU, reads them back at once (synchronous:
-  // the allocation serves this frame; on llvmpipe the wait is the compute itself), allocates
-  // tiles and uploads the page table.
+  // Marks the pages the G-buffer's pixels need on the GPU, reads them back (at once by default:
+  // the allocation serves this frame, and on llvmpipe the wait is the compute itself; with
+  // virtual.async_marks the newest copy that has arrived), allocates tiles and uploads the page
+  // table.
   // The edges criterion reads last frame's visibility (a texture of this frame's size); the
   // marking pass and the views ask through the same function (layouts/virtual_request.glsl).
   // The distance criterion reads the bend of the light's depth in the pages last frame drew
@@ -221,8 +225,7 @@ class VirtualState : public LayoutState {
     bindStorage("FitGrid", grid_);
     glDispatchCompute((ctx.width + 15) / 16, (ctx.height + 15) / 16, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> values(fitted_ ? fitGridValues() : static_cast<size_t>(pages_.flatSize()));
-    glGetNamedBufferSubData(out, 0, static_cast<GLsizeiptr>(values.size() * sizeof(uint32_t)), values.data());
+    std::vector<uint32_t> values = readMarks(out, ctx.params->b("virtual.async_marks"));
     if (fitted_) {  // the CPU half of fitted virtual shadow maps; timed for the status line
       const auto start = std::chrono::steady_clock::now();
       fit_ = fitQuadtree(pages_, values);
@@ -232,6 +235,27 @@ class VirtualState : public LayoutState {
     frame_ = pages_.update(values);
     draw_ = frame_.draw;
     uploadTable();
+  }
+
+  // This frame's marks (waiting for the marking pass), or with `async` the newest marks the GPU
+  // has finished copying, a frame or more old: no stall, and pages newly in view are served by a
+  // coarser resident page until their marks arrive (zeros before the first: the coarsest page).
+  std::vector<uint32_t> readMarks(GLuint out, bool async) {
+    std::vector<uint32_t> values(fitted_ ? fitGridValues() : static_cast<size_t>(pages_.flatSize()));
+    const size_t bytes = values.size() * sizeof(uint32_t);
+    if (!async) {
+      markCopies_.reset();
+      glGetNamedBufferSubData(out, 0, static_cast<GLsizeiptr>(bytes), values.data());
+      return values;
+    }
+    if (!markCopies_ || markCopies_->latest().size() != bytes || markCopiesFitted_ != fitted_) {
+      markCopies_ = std::make_unique<ReadbackRing>(bytes);  // another criterion or size: old marks mean nothing
+      markCopiesFitted_ = fitted_;
+    }
+    markCopies_->copyFrom(out);
+    markCopies_->poll();
+    std::memcpy(values.data(), markCopies_->latest().data(), bytes);
+    return values;
   }
 
   void addViewPass(FrameGraph& graph, const PartContext& ctx, int view, const std::string& pagesRes) {
@@ -308,6 +332,8 @@ class VirtualState : public LayoutState {
   VirtualDepthBend bend_;
   GLuint bendTexture_ = 0;  // what the marking and the views read this frame (0: none)
   GLuint marks_ = 0, grid_ = 0, table_ = 0;
+  std::unique_ptr<ReadbackRing> markCopies_;  // virtual.async_marks: the marks of earlier frames
+  bool markCopiesFitted_ = false;             // which buffer the copies are of
   int tableSide_ = 0;
   glm::mat4 drawnViewProj_{0.0f};
   const Scene* drawnScene_ = nullptr;
@@ -391,7 +417,14 @@ class VirtualLayout : public Layout {
         {.key = "virtual.cache",
          .type = ParamType::Bool,
          .defaultValue = 1,
-         .help = "keep drawn pages between frames while the light, the scene and the map settings stay the same"}};
+         .help = "keep drawn pages between frames while the light, the scene and the map settings stay the same"},
+        {.key = "virtual.async_marks",
+         .type = ParamType::Bool,
+         .defaultValue = 1,
+         .help = "allocate pages from the newest page marks the GPU has finished (a frame or more old on a GPU) "
+                 "instead of waiting for this frame's: no CPU stall in the frame; pages newly in view are served "
+                 "by a coarser resident page until their marks arrive (beyond Lefohn et al., who read back in "
+                 "the frame)"}};
   }
   // The whole scene in one light view: it does not follow the camera or moving objects, so pages
   // stay valid.

@@ -59,7 +59,7 @@ void DeepState::prepare(int size, int layers, int views) {
     glCreateBuffers(1, &fragments_);
     glNamedBufferStorage(fragments_, static_cast<GLsizeiptr>(fragments * 2 * sizeof(float)), nullptr, 0);
     glCreateBuffers(1, &overflowBuffer_);
-    glNamedBufferStorage(overflowBuffer_, sizeof(overflow_), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(overflowBuffer_, kOverflowBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     label(GL_BUFFER, fragmentCounts_, "deep fragment counts");
     label(GL_BUFFER, fragments_, "deep fragment lists");
     label(GL_BUFFER, overflowBuffer_, "deep overflow counters");
@@ -108,12 +108,15 @@ std::vector<std::string> DeepState::views() const { return {"deep-nodes"}; }
 
 std::string DeepState::status() const {
   if (!active_) return "deep: no semi-transparent casters, depth map only";
-  std::string s = "deep: " + std::to_string(deepSize_) + "² texels × " + std::to_string(samples()) + " samples, " +
+  // The newest counters that have arrived, without waiting for this frame's.
+  const unsigned dropped = overflow(0, false), relaxed = overflow(1, false);
+  const int samples = std::max(static_cast<int>(overflow(2, false)), 1);
+  std::string s = "deep: " + std::to_string(deepSize_) + "² texels × " + std::to_string(samples) + " samples, " +
                   std::to_string(nodeCount_) + " nodes";
-  if (overflow_[0])
-    s += "; OVERFLOW: " + std::to_string(overflow_[0]) +
+  if (dropped)
+    s += "; OVERFLOW: " + std::to_string(dropped) +
          " fragments beyond deep.fragments=" + std::to_string(maxFragments_) + " dropped (raise it)";
-  if (overflow_[1]) s += "; " + std::to_string(overflow_[1]) + " texels needed a larger tolerance to fit the nodes";
+  if (relaxed) s += "; " + std::to_string(relaxed) + " texels needed a larger tolerance to fit the nodes";
   return s;
 }
 
@@ -183,9 +186,13 @@ void DeepState::compressPass(const PartContext& ctx) {
   const GLuint groups = static_cast<GLuint>((deepSize_ + 7) / 8);
   glDispatchCompute(groups, groups, static_cast<GLuint>(views_));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  // Two counters read back for the status line (free on a software rasterizer, which is
-  // synchronous; a stall of one frame's work on a GPU).
-  glGetNamedBufferSubData(overflowBuffer_, 0, sizeof(overflow_), overflow_);
+  // The counters of the status line, copied for a later frame to read (no stall on a GPU).
+  if (!overflowCopies_) overflowCopies_ = std::make_unique<ReadbackRing>(kOverflowBytes);
+  overflowCopies_->copyFrom(overflowBuffer_);
+}
+
+unsigned DeepState::overflow(int index, bool wait) const {
+  return overflowCopies_ ? overflowCopies_->read<unsigned>(static_cast<size_t>(index), wait) : 0u;
 }
 
 std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {

@@ -8,10 +8,12 @@
 #include "deep/deep_fit.h"
 #include "part/depth_map_state.h"
 #include "gl/gl_util.h"
+#include "gl/readback_ring.h"
 #include "part/part.h"
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,12 +38,12 @@ class DeepState : public RepresentationState {
   VisibilityCurve visibilityCurve(const CurveQuery& query) const override;
 
   bool active() const { return active_; }
-  // Of the last frame: fragments that did not fit their texel's list, texels whose function
-  // needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
-  unsigned overflowFragments() const { return overflow_[0]; }
-  unsigned relaxedTexels() const { return overflow_[1]; }
+  // Of the last frame (waiting for its counters): fragments that did not fit their texel's list,
+  // texels whose function needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
+  unsigned overflowFragments() const { return overflow(0, true); }
+  unsigned relaxedTexels() const { return overflow(1, true); }
   // Light-image samples per deep texel, as the last frame's fragment pass rasterized them.
-  int samples() const { return std::max(static_cast<int>(overflow_[2]), 1); }
+  int samples() const { return std::max(static_cast<int>(overflow(2, true)), 1); }
   const Texture2D& nodes() const { return nodes_; }    // RG32F array: layer view*N + k = (depth, T)
   const Texture2D& counts() const { return counts_; }  // R32F array: nodes used per texel
   // The part of light view `layer` the deep map covers this frame (deep_fit.h).
@@ -53,6 +55,9 @@ class DeepState : public RepresentationState {
   void fragmentsPass(const PartContext& ctx);
   void compressPass(const PartContext& ctx);
   void fitWindows(const PartContext& ctx);
+  // DeepOverflow (dropped fragments, relaxed texels, samples) of the newest frame whose copy has
+  // finished, or, with `wait`, of the last frame.
+  unsigned overflow(int index, bool wait) const;
 
   DepthMapState opaque_;
   bool active_ = false;
@@ -63,7 +68,10 @@ class DeepState : public RepresentationState {
   std::array<DeepWindow, kMaxLightViews> windows_{};
   GLuint fragmentCounts_ = 0, fragments_ = 0, overflowBuffer_ = 0, emptyFbo_ = 0;
   size_t bufferTexels_ = 0, bufferFragments_ = 0;
-  unsigned overflow_[3] = {0, 0, 0};  // DeepOverflow: dropped fragments, relaxed texels, samples
+  static constexpr size_t kOverflowBytes = 3 * sizeof(unsigned);  // DeepOverflow
+  // The counters copied each frame and read when they have arrived: the status line makes the
+  // CPU wait for no frame (mutable: reading an arrived copy changes nothing the state shows).
+  mutable std::unique_ptr<ReadbackRing> overflowCopies_;
 };
 
 }  // namespace sl

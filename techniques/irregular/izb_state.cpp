@@ -17,6 +17,7 @@ constexpr long long kQueueCapacity = 1 << 20;  // rows of triangles that list sa
 // A sample's bytes at most (izb_common.glsl): its ray (two vec4 under a light with a position)
 // and its cell and triangle.
 constexpr long long kSampleBytes = 32, kPixelCellBytes = 8;
+constexpr size_t kCounterBytes = 6 * sizeof(uint32_t);  // what status reads of IzbCounters (32 bytes)
 
 void resize(GLuint& buffer, long long bytes, const char* name) {
   if (buffer) glDeleteBuffers(1, &buffer);
@@ -165,6 +166,8 @@ std::string IzbState::addPasses(FrameGraph& graph, const PartContext& ctx) {
                  listView(ctx, view);
                  runTriangles(ctx);
                }
+               if (!counterCopies_) counterCopies_ = std::make_unique<ReadbackRing>(kCounterBytes);
+               counterCopies_->copyFrom(counters_);  // for the status line, read when it arrives
              }});
   auto it = ctx.viewTargets.find("izb-lists");
   if (it != ctx.viewTargets.end() && it->second) {
@@ -320,21 +323,21 @@ void IzbState::bind(const Program& p, TextureUnits& units) const {
   bindStorage("IzbFallback", fallback_);
 }
 
-uint32_t IzbState::counter(int index) const {
-  uint32_t c[6] = {0, 0, 0, 0, 0, 0};
-  if (counters_) glGetNamedBufferSubData(counters_, 0, sizeof c, c);
-  return c[index];
+uint32_t IzbState::counter(int index, bool wait) const {
+  return counterCopies_ ? counterCopies_->read<uint32_t>(static_cast<size_t>(index), wait) : 0u;
 }
 
 std::string IzbState::status() const {
   if (!error_.empty()) return error_;
-  if (!counters_) return "";
-  const uint32_t overflow = overflowCount();
+  if (!counterCopies_) return "";
+  // The newest counters that have arrived, without waiting for this frame's.
+  if (!counterCopies_->poll() && !counterCopies_->ready()) return "counters of the first frame not read back yet";
+  const uint32_t overflow = counter(0, false), masked = counter(5, false);
   const bool several = views_ > 1;
-  std::string s = std::to_string(listedCount()) +
+  std::string s = std::to_string(counter(1, false)) +
                   (several ? " listings of samples in " + std::to_string(views_) + " views of " : " samples in ") +
-                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2) + counter(5)) +
-                  " rows of triangles queued (" + std::to_string(counter(5)) + " alpha-masked)" +
+                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2, false) + masked) +
+                  " rows of triangles queued (" + std::to_string(masked) + " alpha-masked)" +
                   (several ? " in the last" : "");
   if (overflow > 0)
     s += "; list capacity " + std::to_string(capacity_) + " overflowed: " + std::to_string(overflow) +

@@ -4,9 +4,11 @@
 // It keeps the depth map of DepthMapState as the fallback for samples that did not fit.
 #pragma once
 
+#include "gl/readback_ring.h"
 #include "part/depth_map_state.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace sl {
@@ -44,9 +46,9 @@ class IzbState : public DepthMapState {
   std::vector<std::string> views() const override { return {"izb-lists"}; }
   std::string status() const override;
   long long texels() const override;
-  // Samples of the last frame that did not fit in the lists (read back from the GPU).
-  uint32_t overflowCount() const { return counter(0); }
-  uint32_t listedCount() const { return counter(1); }  // samples binned into the grid (fitting or not)
+  // Samples of the last frame that did not fit in the lists (waiting for its counters).
+  uint32_t overflowCount() const { return counter(0, true); }
+  uint32_t listedCount() const { return counter(1, true); }  // samples binned into the grid (fitting or not)
 
  private:
   void ensureBuffers(int width, int height, int grid);
@@ -55,7 +57,9 @@ class IzbState : public DepthMapState {
   void runTriangles(const PartContext& ctx);
   void drawListView(const PartContext& ctx, Texture2D* target);
   void setCommon(const Program& p, const PartContext& ctx) const;
-  uint32_t counter(int index) const;  // izb_common.glsl: IzbCounters (a readback)
+  // izb_common.glsl: IzbCounters of the newest frame whose copy has arrived, or, with `wait`, of
+  // the last frame.
+  uint32_t counter(int index, bool wait) const;
 
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], rank[pixels], samples[pixels],
@@ -64,6 +68,9 @@ class IzbState : public DepthMapState {
   // chunks and its indirect dispatch
   GLuint counts_ = 0, offsets_ = 0, blockSums_ = 0, pixelCell_ = 0, rank_ = 0, samples_ = 0, list_ = 0, bits_ = 0,
          fallback_ = 0, counters_ = 0, queue_ = 0, dispatch_ = 0, cellState_ = 0;
+  // The counters copied after each frame's tests and read when they have arrived: the status
+  // line makes the CPU wait for no frame (mutable: reading an arrived copy changes nothing shown).
+  mutable std::unique_ptr<ReadbackRing> counterCopies_;
   int width_ = 0, height_ = 0, grid_ = 0;
   int views_ = 1;  // light views of this frame, listed and tested one after another
   long long capacity_ = 0;
