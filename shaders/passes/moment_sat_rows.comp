@@ -1,6 +1,6 @@
 // The summed-area tables' first direction (Crow 1984; Hensley et al. 2005 for shadow maps): each
 // invocation walks the span of one row, takes the representation's moments of each depth texel
-// the shadow pass drew, subtracts the target's offset (the mean, moment_sat_mean.comp), drops
+// the shadow pass drew, subtracts the target's offset (the mean, moment_sat_offset.comp), drops
 // non-finite moments (they count as the offset) and stores the running sums of every target.
 // The shadow pass draws depth alone: no moments are written per caster fragment. The
 // representation's module comes first (prelude).
@@ -12,10 +12,14 @@ layout(std430) readonly buffer SatSpans {
   ivec2 span[];  // per row of the map
 };
 uniform sampler2DArray u_depth;
-uniform vec4 u_offset[SL_MOMENT_TARGETS];
+#ifndef SL_MOMENT_SAT  // else the module's lookups declared it (moment_maps.glsl)
+layout(std430) readonly buffer SatOffsets {
+  vec4 satOffset[];  // per target (moment_sat_offset.comp)
+};
+#endif
 
 #define SL_SAT_ADD(t, table)                                                     \
-  kahanAdd(sum[t], carry[t], mix(vec4(0.0), m[t] - u_offset[t], finite4(m[t]))); \
+  kahanAdd(sum[t], carry[t], mix(vec4(0.0), m[t] - satOffset[t], finite4(m[t]))); \
   imageStore(table, ivec3(i, line, u_layer), sum[t]);
 
 void main() {

@@ -82,47 +82,70 @@ void MomentMapState::upload(GLuint buffer, const std::vector<glm::ivec2>& data) 
 }
 
 // The mean of the finite moments of every target over the spans (every kMeanStride-th row, every
-// layer): the offset each table subtracts. Read back (a stall on a GPU; free on a software
-// rasterizer, where every pass is synchronous).
+// layer): the offset each table subtracts, summed and divided on the GPU into the SatOffsets
+// buffer that the rows pass and the lookups read (nothing read back: until 2026-12-07 the row
+// sums were, a stall of the frame on a GPU).
 void MomentMapState::satOffsets(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
                                 const std::vector<SatCover>& covers) {
   const size_t targets = static_cast<size_t>(config_.targets());
-  satOffset_.assign(targets, glm::vec4(0.0f));
+  ensureSatBuffers(targets, covers.size());
+  const glm::vec4 zero(0.0f);  // what the lookups add when a program below does not build
+  glClearNamedBufferData(satBuffers_.offsets, GL_RGBA32F, GL_RGBA, GL_FLOAT, &zero);
   Program& p = shaders.get({"moment table mean",
                             {{GL_COMPUTE_SHADER, "passes/moment_sat_mean.comp"}},
                             defines() + "#include \"" + module_ + "\"\n"});
-  if (!p.valid()) return;
+  Program& offsets = shaders.get({"moment table offsets",
+                                  {{GL_COMPUTE_SHADER, "passes/moment_sat_offset.comp"}},
+                                  "#define SL_MOMENT_TARGETS " + std::to_string(targets) + "\n"});
+  if (!p.valid() || !offsets.valid()) return;
   p.use();
   TextureUnits units;
   bindTechnique(p, units);  // what representationMoments reads
   units.bind(p, "u_depth", depth_.id());
   p.set("u_meanStride", kMeanStride);
-  const size_t values = static_cast<size_t>(depth_.width() / kMeanStride + 1) * targets;
-  const GLsizeiptr bytes = static_cast<GLsizeiptr>(values * sizeof(glm::vec4));
-  GLuint buffers[2];
-  glCreateBuffers(2, buffers);
-  for (GLuint b : buffers) glNamedBufferData(b, bytes, nullptr, GL_STREAM_READ);
-  bindStorage("RowSums", buffers[0]);
-  bindStorage("RowCounts", buffers[1]);
-  std::vector<glm::dvec4> sum(targets), count(targets);
-  std::vector<glm::vec4> sums(values), counts(values);
+  bindStorage("RowSums", satBuffers_.rowSums);
+  bindStorage("RowCounts", satBuffers_.rowCounts);
+  int rows = 0;
   for (size_t l = 0; l < covers.size(); ++l) {
     const int sampled = (covers[l].rect.w - covers[l].rect.y) / kMeanStride + 1;
     upload(spans_, covers[l].rows);
     p.set("u_rect", covers[l].rect);
     p.set("u_layer", static_cast<int>(l));
+    p.set("u_rowBase", rows);
     glDispatchCompute(groupsOf(sampled), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const GLsizeiptr used = static_cast<GLsizeiptr>(static_cast<size_t>(sampled) * targets * sizeof(glm::vec4));
-    glGetNamedBufferSubData(buffers[0], 0, used, sums.data());
-    glGetNamedBufferSubData(buffers[1], 0, used, counts.data());
-    for (size_t i = 0; i < static_cast<size_t>(sampled) * targets; ++i) {
-      sum[i % targets] += glm::dvec4(sums[i]);
-      count[i % targets] += glm::dvec4(counts[i]);
-    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    rows += sampled;
   }
-  glDeleteBuffers(2, buffers);
-  for (size_t t = 0; t < targets; ++t) satOffset_[t] = glm::vec4(sum[t] / glm::max(count[t], glm::dvec4(1.0)));
+  offsets.use();
+  offsets.set("u_rows", rows);
+  bindStorage("SatOffsets", satBuffers_.offsets);
+  glDispatchCompute(static_cast<GLuint>(targets), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// Row sums for every sampled row of every layer (at most n / kMeanStride + 1 each), and the
+// offsets; kept between frames.
+void MomentMapState::ensureSatBuffers(size_t targets, size_t layers) {
+  const size_t rows = static_cast<size_t>(depth_.width() / kMeanStride + 1) * std::max<size_t>(layers, 1);
+  const GLsizeiptr rowBytes = static_cast<GLsizeiptr>(rows * targets * sizeof(glm::vec4));
+  if (satBuffers_.rowSums && satBuffers_.rowBytes == rowBytes && satBuffers_.targets == targets) return;
+  satBuffers_.release();
+  for (GLuint* b : {&satBuffers_.rowSums, &satBuffers_.rowCounts, &satBuffers_.offsets}) glCreateBuffers(1, b);
+  glNamedBufferStorage(satBuffers_.rowSums, rowBytes, nullptr, 0);
+  glNamedBufferStorage(satBuffers_.rowCounts, rowBytes, nullptr, 0);
+  glNamedBufferStorage(satBuffers_.offsets, static_cast<GLsizeiptr>(targets * sizeof(glm::vec4)), nullptr, 0);
+  label(GL_BUFFER, satBuffers_.rowSums, "moment table row sums");
+  label(GL_BUFFER, satBuffers_.rowCounts, "moment table row counts");
+  label(GL_BUFFER, satBuffers_.offsets, "moment table offsets");
+  satBuffers_.rowBytes = rowBytes;
+  satBuffers_.targets = targets;
+}
+
+glm::vec4 MomentMapState::satOffsetOf(int t) const {
+  glm::vec4 v(0.0f);
+  if (satBuffers_.offsets && t >= 0 && static_cast<size_t>(t) < satBuffers_.targets)
+    glGetNamedBufferSubData(satBuffers_.offsets, static_cast<GLintptr>(t * sizeof(glm::vec4)), sizeof v, &v);
+  return v;
 }
 
 double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique,
@@ -164,7 +187,7 @@ double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& b
     units.bind(rows, "u_depth", depth_.id());
     rows.set("u_rect", cover.rect);
     rows.set("u_layer", l);
-    for (size_t t = 0; t < satOffset_.size(); ++t) rows.set("u_offset[" + std::to_string(t) + "]", satOffset_[t]);
+    bindStorage("SatOffsets", satBuffers_.offsets);
     bindTargets(rows, moments_, GL_WRITE_ONLY);
     glDispatchCompute(groupsOf(cover.rect.w - cover.rect.y + 1), 1, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -209,14 +209,12 @@ void MomentMapState::bind(const Program& p, TextureUnits& units) const {
   if (glGetUniformLocation(p.id(), "u_moments0") < 0) return;
   for (int t = 0; t < config_.targets(); ++t) {
     units.bind(p, "u_moments" + std::to_string(t), moments_[static_cast<size_t>(t)].id(), sampler_);
-    if (summed_)
-      p.set("u_satOffset" + std::to_string(t),
-            t < static_cast<int>(satOffset_.size()) ? satOffset_[static_cast<size_t>(t)] : glm::vec4(0.0f));
   }
   // Where the tables' corners may be read, in the lookup's units (texel (i, j) holds the sum up
   // to (i + 1, j + 1)): from the first texel the spans reach to the last. A table has no zero
   // line before its first texel: a box touching it shrinks by up to a texel, as at the map's edge.
   if (summed_) p.set("u_satBounds", glm::vec4(satRect_) + 1.0f);
+  if (summed_) bindStorage("SatOffsets", satBuffers_.offsets);
 }
 
 std::string MomentMapState::defines() const {

@@ -79,6 +79,9 @@ class MomentMapState : public RepresentationState {
   const Texture2D& moments(int target) const { return moments_.at(static_cast<size_t>(target)); }
   const std::vector<float>& clearValue() const { return clear_; }
 
+  // Target `t`'s summed-area table offset as the GPU computed it: a readback that waits (tests).
+  glm::vec4 satOffsetOf(int t) const;
+
  private:
   void allocate(int size, int layers);
   std::string statusIn(const SceneEffects& fx, const ParamSet& params) const;
@@ -95,6 +98,7 @@ class MomentMapState : public RepresentationState {
   SatCover satCover(const std::vector<glm::vec2>* hull, int layer) const;
   static void upload(GLuint buffer, const std::vector<glm::ivec2>& data);
   void satOffsets(ShaderLibrary& shaders, const TechniqueBinder& bindTechnique, const std::vector<SatCover>& covers);
+  void ensureSatBuffers(size_t targets, size_t layers);
   void buildMips(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen);
   double writeMoments(ShaderLibrary& shaders, const std::function<void()>& drawFullscreen,
                       const TechniqueBinder& bindTechnique, int layer, const std::vector<glm::vec2>* hull,
@@ -130,13 +134,24 @@ class MomentMapState : public RepresentationState {
   Texture2D depth_;
   std::vector<Texture2D> moments_;
   std::vector<Framebuffer> shadowFbos_;  // per layer: the depth
-  std::vector<glm::vec4> satOffset_;     // per target: what its summed-area table subtracted
-  glm::ivec4 satRect_{0};                // the columns and rows the tables' spans reach
-  GLuint spans_ = 0;                     // storage block SatSpans (passes/moment_sat_*.comp)
-  GLuint columns_ = 0;                   // storage block SatColumns
-  float satReach_ = 0.0f;                // texels: half the widest box a lookup reads
-  std::vector<float> viewReach_;         // per layer, where this frame's light view bounds it
-  float lightScale_ = 0.0f;              // pcss.light_scale (the soft ones)
+  // The tables' offsets, computed and kept on the GPU (moment_sat.cpp: satOffsets).
+  struct SatBuffers {
+    GLuint rowSums = 0, rowCounts = 0, offsets = 0;
+    GLsizeiptr rowBytes = 0;
+    size_t targets = 0;
+    void release() {
+      for (GLuint b : {rowSums, rowCounts, offsets})
+        if (b) glDeleteBuffers(1, &b);
+      rowSums = rowCounts = offsets = 0;
+    }
+    ~SatBuffers() { release(); }
+  } satBuffers_;
+  glm::ivec4 satRect_{0};         // the columns and rows the tables' spans reach
+  GLuint spans_ = 0;              // storage block SatSpans (passes/moment_sat_*.comp)
+  GLuint columns_ = 0;            // storage block SatColumns
+  float satReach_ = 0.0f;         // texels: half the widest box a lookup reads
+  std::vector<float> viewReach_;  // per layer, where this frame's light view bounds it
+  float lightScale_ = 0.0f;       // pcss.light_scale (the soft ones)
 };
 
 }  // namespace sl

@@ -33,28 +33,11 @@ uniform sampler2DArray u_moments7;
 #endif
 
 #ifdef SL_MOMENT_SAT
-uniform vec4 u_satOffset0;
-#if SL_MOMENT_TARGETS > 1
-uniform vec4 u_satOffset1;
-#endif
-#if SL_MOMENT_TARGETS > 2
-uniform vec4 u_satOffset2;
-#endif
-#if SL_MOMENT_TARGETS > 3
-uniform vec4 u_satOffset3;
-#endif
-#if SL_MOMENT_TARGETS > 4
-uniform vec4 u_satOffset4;
-#endif
-#if SL_MOMENT_TARGETS > 5
-uniform vec4 u_satOffset5;
-#endif
-#if SL_MOMENT_TARGETS > 6
-uniform vec4 u_satOffset6;
-#endif
-#if SL_MOMENT_TARGETS > 7
-uniform vec4 u_satOffset7;
-#endif
+// Per target what its table subtracted before summing (the mean, passes/moment_sat_offset.comp),
+// added back after the box's mean: a buffer the GPU wrote, so the CPU never reads it.
+layout(std430) readonly buffer SatOffsets {
+  vec4 satOffset[];
+};
 
 // The table at continuous texel position P: the integral of the (offset) moments over [0,P].
 // The table read bilinearly is exactly that integral (piecewise bilinear per texel), with the
@@ -98,27 +81,27 @@ void momentsInBox(vec3 uvLayer, float width, out vec4 m[SL_MOMENT_TARGETS]) {
 #else
 #define SL_MOMENT_FETCH(table, offset) textureLod(table, uvLayer, lod)
 #endif
-  m[0] = SL_MOMENT_FETCH(u_moments0, u_satOffset0);
+  m[0] = SL_MOMENT_FETCH(u_moments0, satOffset[0]);
 #if SL_MOMENT_TARGETS > 1
-  m[1] = SL_MOMENT_FETCH(u_moments1, u_satOffset1);
+  m[1] = SL_MOMENT_FETCH(u_moments1, satOffset[1]);
 #endif
 #if SL_MOMENT_TARGETS > 2
-  m[2] = SL_MOMENT_FETCH(u_moments2, u_satOffset2);
+  m[2] = SL_MOMENT_FETCH(u_moments2, satOffset[2]);
 #endif
 #if SL_MOMENT_TARGETS > 3
-  m[3] = SL_MOMENT_FETCH(u_moments3, u_satOffset3);
+  m[3] = SL_MOMENT_FETCH(u_moments3, satOffset[3]);
 #endif
 #if SL_MOMENT_TARGETS > 4
-  m[4] = SL_MOMENT_FETCH(u_moments4, u_satOffset4);
+  m[4] = SL_MOMENT_FETCH(u_moments4, satOffset[4]);
 #endif
 #if SL_MOMENT_TARGETS > 5
-  m[5] = SL_MOMENT_FETCH(u_moments5, u_satOffset5);
+  m[5] = SL_MOMENT_FETCH(u_moments5, satOffset[5]);
 #endif
 #if SL_MOMENT_TARGETS > 6
-  m[6] = SL_MOMENT_FETCH(u_moments6, u_satOffset6);
+  m[6] = SL_MOMENT_FETCH(u_moments6, satOffset[6]);
 #endif
 #if SL_MOMENT_TARGETS > 7
-  m[7] = SL_MOMENT_FETCH(u_moments7, u_satOffset7);
+  m[7] = SL_MOMENT_FETCH(u_moments7, satOffset[7]);
 #endif
 }
 

@@ -213,6 +213,20 @@ TEST(MomentMap, SummedAreaTableAgreesWithTheDirectBox) {
     for (float& d : z) d = depth(rng);
     fillDepth(m, z);
     runFilter(h, m);
+    // The offset the table subtracts, computed on the GPU: the mean of (z, z²) over every fourth
+    // row (moment_sat.cpp: kMeanStride), here worked out on the CPU in double.
+    glm::dvec2 mean(0.0);
+    int texels = 0;
+    for (int y = 0; y < n; y += 4)
+      for (int x = 0; x < n; ++x, ++texels) {
+        const float d = z[static_cast<size_t>(y) * n + x];
+        mean += glm::dvec2(d, d * d);
+      }
+    mean /= static_cast<double>(texels);
+    const glm::vec4 offset = m.state->satOffsetOf(0);
+    EXPECT_NEAR(offset.x, mean.x, 1e-5) << "width " << width;
+    EXPECT_NEAR(offset.y, mean.y, 1e-5) << "width " << width;
+    EXPECT_GT(std::abs(offset.x - 0.5), 0.0) << "not a constant";
     const std::vector<double> want = boxBlur(vsmMoments(z), n, width, 2, false, 0);
     const int h0 = width / 2 + 1;
     const double worst = worstLookup(probeLookups(h, m, n), want, n,
