@@ -349,6 +349,7 @@ bool FrameLoop::saveFrameOutputs(double now, int fbWidth, int fbHeight, bool las
 int runFrames(GLFWwindow* window, ExplorerState& state, std::vector<Technique> techniques) {
   ShaderLibrary shaders(state.shaderDir);
   Renderer renderer(shaders);
+  renderer.waitForPassTimes = false;  // on a GPU: the newest pass times that have arrived, no stall
   renderer.setScene(*state.scene);
   // After the renderer, so it goes first: it joins its worker and frees its textures while the
   // context and the scene still exist.

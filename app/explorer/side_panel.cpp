@@ -306,7 +306,8 @@ void drawTimingPanel(Renderer& renderer) {
   ImGui::TextDisabled("timer: %s", stats.timer.empty() ? "-" : stats.timer.c_str());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "gpu-query: GL timer queries.\ncpu-fence: glFinish around each pass "
+        "gpu-query: GL timer queries, the newest frame's that have arrived (a frame or two old: "
+        "the CPU does not wait for the GPU).\ncpu-fence: glFinish around each pass "
         "(software GL, where queries measure nothing); slows the frame down.");
   double total = 0.0;
   for (const PassTiming& p : stats.passes) total += p.ms;

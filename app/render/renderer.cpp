@@ -314,10 +314,11 @@ void Renderer::drawFullscreen() {
 
 // Runs the culled passes, each in a KHR_debug group named after it, and times them (stats_).
 void Renderer::executeTimed(const FrameGraph& graph) {
-  auto useGpuTimer = timePasses && !isSoftwareRenderer();
+  const bool useGpuTimer = timePasses && (forceTimerQueries || !isSoftwareRenderer());
+  FrameStats last = std::move(stats_);
   stats_ = FrameStats{};
   stats_.timer = useGpuTimer ? "gpu-query" : "cpu-fence";
-  std::vector<std::pair<GLuint, GLuint>> queries;
+  if (useGpuTimer && !queryTimer_) queryTimer_ = std::make_unique<PassQueryTimer>();
   auto frameStart = std::chrono::steady_clock::now();
   transients_.beginFrame();
   graph.execute(
@@ -326,15 +327,10 @@ void Renderer::executeTimed(const FrameGraph& graph) {
         if (!timePasses) {
           run();
           stats_.passes.push_back({pass.name, 0.0});
-          return;
-        }
-        if (useGpuTimer) {
-          GLuint q[2];
-          glGenQueries(2, q);
-          glQueryCounter(q[0], GL_TIMESTAMP);
+        } else if (useGpuTimer) {
+          queryTimer_->beginPass();
           run();
-          glQueryCounter(q[1], GL_TIMESTAMP);
-          queries.emplace_back(q[0], q[1]);
+          queryTimer_->endPass(pass.name);
           stats_.passes.push_back({pass.name, 0.0});
         } else {
           // llvmpipe's timer queries do not measure the work; a fence with a steady clock does.
@@ -347,20 +343,22 @@ void Renderer::executeTimed(const FrameGraph& graph) {
         }
       },
       &transients_);
-  for (size_t k = 0; k < queries.size(); ++k) {
-    GLuint64 a = 0, b = 0;
-    glGetQueryObjectui64v(queries[k].first, GL_QUERY_RESULT, &a);
-    glGetQueryObjectui64v(queries[k].second, GL_QUERY_RESULT, &b);
-    stats_.passes[k].ms = static_cast<double>(b - a) * 1e-6;
-    GLuint q[2] = {queries[k].first, queries[k].second};
-    glDeleteQueries(2, q);
-  }
-  if (timePasses && !useGpuTimer) glFinish();
-  stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
   if (useGpuTimer) {
+    // The frame's own times (waiting for them), or the newest frame's that have arrived; until
+    // the first arrives the passes of this frame at 0 ms, after it the last arrived ones.
+    PassQueryTimer::Times times;
+    if (queryTimer_->endFrame(waitForPassTimes, times)) {
+      stats_.passes.clear();
+      for (auto& [name, ms] : times) stats_.passes.push_back({std::move(name), ms});
+    } else if (last.timer == stats_.timer && !last.passes.empty()) {
+      stats_.passes = std::move(last.passes);
+    }
     stats_.frameMs = 0;
     for (const auto& p : stats_.passes) stats_.frameMs += p.ms;
+    return;
   }
+  if (timePasses) glFinish();
+  stats_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
 }
 
 void Renderer::render(const FrameInput& in, const std::vector<Viewport*>& viewports) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/gl_util.h"
+#include "gl/pass_query_timer.h"
 #include "gl/shader_library.h"
 #include "gl/texture_units.h"
 #include "part/frame_graph.h"
@@ -154,6 +155,13 @@ class Renderer {
   // The frame graph's transient targets kept for later frames (blur scratch targets, ...).
   const TransientTextures& transientTextures() const { return transients_; }
   bool timePasses = true;  // bracket passes with a timer (cheap on GPU, glFinish on llvmpipe)
+  // On a GPU (timer queries): wait at the end of each frame for its own pass times (the bench,
+  // the command line, tests), or show the newest frame's that have arrived, a frame or two old,
+  // without making the CPU wait for the frame it queued (the explorer).
+  bool waitForPassTimes = true;
+  // Timer queries even on a software renderer, whose queries do not measure the work (tests of
+  // the query path).
+  bool forceTimerQueries = false;
   // Render the G-buffer even when no pass of the frame reads it, for readback (reference,
   // metrics, tests). Techniques shade forward, so the explorer turns this off while moving.
   bool keepGBuffer = true;
@@ -284,7 +292,8 @@ class Renderer {
   Framebuffer substOtherDirectFbo_;
   // Scene::volumes on the GPU, for the volumes pass and the parts (PartContext::bindVolumes).
   std::unique_ptr<VolumesBuffer> volumes_;
-  TransientTextures transients_;  // the frame graph's transient targets, kept between frames
+  TransientTextures transients_;                // the frame graph's transient targets, kept between frames
+  std::unique_ptr<PassQueryTimer> queryTimer_;  // the passes' timer queries (on a GPU)
   void bindVolumes();
   FrameStats stats_;
   glm::mat4 view_{1.0f}, proj_{1.0f};

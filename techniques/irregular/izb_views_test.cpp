@@ -1,6 +1,7 @@
 // Which light views the irregular z-buffer can list samples in under a sun (no GPU): a view
 // whose matrix sends a sample's whole ray to the sun onto one point of its grid. By hand on
 // small matrices, then on the views the layouts compute for cameras turned all around.
+#include "gl/shader_library.h"
 #include "irregular/izb_state.h"
 #include "technique.h"
 
