@@ -50,7 +50,11 @@ class VirtualState : public LayoutState {
     if (grid_) glDeleteBuffers(1, &grid_);
     if (table_) glDeleteTextures(1, &table_);
   }
-  void reset() override { pages_.invalidate(); }
+  // A cut or another scene: earlier frames' marks (virtual.async_marks) ask for pages of another view.
+  void reset() override {
+    pages_.invalidate();
+    markCopies_.reset();
+  }
 
   LightSpace compute(const LayoutInput& in) override {
     sizes_ = virtualSizes(*in.params);
