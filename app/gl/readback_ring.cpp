@@ -45,23 +45,21 @@ void ReadbackRing::take(Slot& s) {
   received_ = s.serial;
 }
 
-bool ReadbackRing::poll() {
-  const uint64_t before = received_;
+void ReadbackRing::collect(GLuint64 timeoutNs) {
   for (Slot& s : slots_) {
     if (!s.fence) continue;
-    // A zero timeout asks without waiting; the flush bit makes sure the fence reaches the GPU.
-    const GLenum r = glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+    // The flush bit makes sure the fence reaches the GPU, so a later poll sees it pass.
+    const GLenum r = glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, timeoutNs);
     if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) take(s);
   }
+}
+
+bool ReadbackRing::poll() {
+  const uint64_t before = received_;
+  collect(0);
   return received_ != before;
 }
 
-void ReadbackRing::finish() {
-  for (Slot& s : slots_) {
-    if (!s.fence) continue;
-    const GLenum r = glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, 10'000'000'000ull);  // 10 s
-    if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) take(s);
-  }
-}
+void ReadbackRing::finish() { collect(10'000'000'000ull); }  // 10 s
 
 }  // namespace sl

@@ -34,15 +34,6 @@ class ReadbackRing {
   const std::vector<uint8_t>& latest() const { return latest_; }
   bool ready() const { return received_ > 0; }
   int pending() const;
-  // Element `index` of the newest copy, after a poll (or, with `wait`, after finish()).
-  template <class T>
-  T read(size_t index, bool wait) {
-    if (wait)
-      finish();
-    else
-      poll();
-    return value<T>(index);
-  }
   template <class T>
   T value(size_t index) const {
     T v{};
@@ -57,6 +48,8 @@ class ReadbackRing {
     uint64_t serial = 0;  // the order of its copy, so an older copy never replaces a newer one
   };
   void take(Slot& slot);
+  // Takes every copy whose fence passes within `timeoutNs` (0: without waiting).
+  void collect(GLuint64 timeoutNs);
   std::vector<Slot> slots_;
   std::vector<uint8_t> latest_;
   size_t bytes_;

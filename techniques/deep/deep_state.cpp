@@ -109,8 +109,10 @@ std::vector<std::string> DeepState::views() const { return {"deep-nodes"}; }
 std::string DeepState::status() const {
   if (!active_) return "deep: no semi-transparent casters, depth map only";
   // The newest counters that have arrived, without waiting for this frame's.
-  const unsigned dropped = overflow(0, false), relaxed = overflow(1, false);
-  const int samples = std::max(static_cast<int>(overflow(2, false)), 1);
+  if (overflowCopies_) overflowCopies_->poll();
+  const auto arrived = [this](size_t index) { return overflowCopies_ ? overflowCopies_->value<unsigned>(index) : 0u; };
+  const unsigned dropped = arrived(0), relaxed = arrived(1);
+  const int samples = std::max(static_cast<int>(arrived(2)), 1);
   std::string s = "deep: " + std::to_string(deepSize_) + "² texels × " + std::to_string(samples) + " samples, " +
                   std::to_string(nodeCount_) + " nodes";
   if (dropped)
@@ -191,8 +193,10 @@ void DeepState::compressPass(const PartContext& ctx) {
   overflowCopies_->copyFrom(overflowBuffer_);
 }
 
-unsigned DeepState::overflow(int index, bool wait) const {
-  return overflowCopies_ ? overflowCopies_->read<unsigned>(static_cast<size_t>(index), wait) : 0u;
+unsigned DeepState::overflow(int index) const {
+  if (!overflowCopies_) return 0;
+  overflowCopies_->finish();
+  return overflowCopies_->value<unsigned>(static_cast<size_t>(index));
 }
 
 std::string DeepState::addPasses(FrameGraph& graph, const PartContext& ctx) {

@@ -40,10 +40,10 @@ class DeepState : public RepresentationState {
   bool active() const { return active_; }
   // Of the last frame (waiting for its counters): fragments that did not fit their texel's list,
   // texels whose function needed a larger tolerance than deep.tolerance to fit deep.nodes nodes.
-  unsigned overflowFragments() const { return overflow(0, true); }
-  unsigned relaxedTexels() const { return overflow(1, true); }
+  unsigned overflowFragments() const { return overflow(0); }
+  unsigned relaxedTexels() const { return overflow(1); }
   // Light-image samples per deep texel, as the last frame's fragment pass rasterized them.
-  int samples() const { return std::max(static_cast<int>(overflow(2, true)), 1); }
+  int samples() const { return std::max(static_cast<int>(overflow(2)), 1); }
   const Texture2D& nodes() const { return nodes_; }    // RG32F array: layer view*N + k = (depth, T)
   const Texture2D& counts() const { return counts_; }  // R32F array: nodes used per texel
   // The part of light view `layer` the deep map covers this frame (deep_fit.h).
@@ -55,9 +55,9 @@ class DeepState : public RepresentationState {
   void fragmentsPass(const PartContext& ctx);
   void compressPass(const PartContext& ctx);
   void fitWindows(const PartContext& ctx);
-  // DeepOverflow (dropped fragments, relaxed texels, samples) of the newest frame whose copy has
-  // finished, or, with `wait`, of the last frame.
-  unsigned overflow(int index, bool wait) const;
+  // DeepOverflow (dropped fragments, relaxed texels, samples) of the last frame (waiting for its
+  // copy).
+  unsigned overflow(int index) const;
 
   DepthMapState opaque_;
   bool active_ = false;

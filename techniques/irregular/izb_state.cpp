@@ -323,20 +323,24 @@ void IzbState::bind(const Program& p, TextureUnits& units) const {
   bindStorage("IzbFallback", fallback_);
 }
 
-uint32_t IzbState::counter(int index, bool wait) const {
-  return counterCopies_ ? counterCopies_->read<uint32_t>(static_cast<size_t>(index), wait) : 0u;
+uint32_t IzbState::counter(int index) const {
+  if (!counterCopies_) return 0;
+  counterCopies_->finish();
+  return counterCopies_->value<uint32_t>(static_cast<size_t>(index));
 }
 
 std::string IzbState::status() const {
   if (!error_.empty()) return error_;
   if (!counterCopies_) return "";
   // The newest counters that have arrived, without waiting for this frame's.
-  if (!counterCopies_->poll() && !counterCopies_->ready()) return "counters of the first frame not read back yet";
-  const uint32_t overflow = counter(0, false), masked = counter(5, false);
+  counterCopies_->poll();
+  if (!counterCopies_->ready()) return "counters of the first frame not read back yet";
+  const auto counter = [this](size_t index) { return counterCopies_->value<uint32_t>(index); };
+  const uint32_t overflow = counter(0), masked = counter(5);
   const bool several = views_ > 1;
-  std::string s = std::to_string(counter(1, false)) +
+  std::string s = std::to_string(counter(1)) +
                   (several ? " listings of samples in " + std::to_string(views_) + " views of " : " samples in ") +
-                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2, false) + masked) +
+                  std::to_string(grid_) + "² cells, " + std::to_string(counter(2) + masked) +
                   " rows of triangles queued (" + std::to_string(masked) + " alpha-masked)" +
                   (several ? " in the last" : "");
   if (overflow > 0)

@@ -47,8 +47,8 @@ class IzbState : public DepthMapState {
   std::string status() const override;
   long long texels() const override;
   // Samples of the last frame that did not fit in the lists (waiting for its counters).
-  uint32_t overflowCount() const { return counter(0, true); }
-  uint32_t listedCount() const { return counter(1, true); }  // samples binned into the grid (fitting or not)
+  uint32_t overflowCount() const { return counter(0); }
+  uint32_t listedCount() const { return counter(1); }  // samples binned into the grid (fitting or not)
 
  private:
   void ensureBuffers(int width, int height, int grid);
@@ -57,9 +57,8 @@ class IzbState : public DepthMapState {
   void runTriangles(const PartContext& ctx);
   void drawListView(const PartContext& ctx, Texture2D* target);
   void setCommon(const Program& p, const PartContext& ctx) const;
-  // izb_common.glsl: IzbCounters of the newest frame whose copy has arrived, or, with `wait`, of
-  // the last frame.
-  uint32_t counter(int index, bool wait) const;
+  // izb_common.glsl: IzbCounters of the last frame (waiting for its copy).
+  uint32_t counter(int index) const;
 
   IzbSceneBuffers scene_;
   // counts[cells], offsets[cells + 1], blockSums, pixelCell[pixels], rank[pixels], samples[pixels],

@@ -177,6 +177,7 @@ double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& b
                                   {{GL_COMPUTE_SHADER, "passes/moment_sat_columns.comp"}},
                                   "#define SL_MOMENT_TARGETS " + std::to_string(config_.targets()) + "\n" + formats});
   if (!rows.valid() || !columns.valid()) return 1.0;
+  bindStorage("SatOffsets", satBuffers_.offsets);  // what the rows pass subtracts (satOffsets)
   for (int l = 0; l < layers; ++l) {
     const SatCover& cover = covers[static_cast<size_t>(l)];
     upload(spans_, cover.rows);
@@ -187,7 +188,6 @@ double MomentMapState::buildSat(ShaderLibrary& shaders, const TechniqueBinder& b
     units.bind(rows, "u_depth", depth_.id());
     rows.set("u_rect", cover.rect);
     rows.set("u_layer", l);
-    bindStorage("SatOffsets", satBuffers_.offsets);
     bindTargets(rows, moments_, GL_WRITE_ONLY);
     glDispatchCompute(groupsOf(cover.rect.w - cover.rect.y + 1), 1, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
